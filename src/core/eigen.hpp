@@ -134,8 +134,7 @@ inline SymEigen<3> eigen(const SymMat3& m) {
   SymEigen<3> e{};
   double scale = 0.0;
   for (int k = 0; k < 6; ++k) scale = std::max(scale, std::abs(m.c[k]));
-  const double off = m.c[1] * m.c[1] + m.c[3] * m.c[3] + m.c[4] * m.c[4];
-  if (off == 0.0 || !(scale > 0.0) || !std::isfinite(scale)) {
+  if ((m.c[1] == 0.0 && m.c[3] == 0.0 && m.c[4] == 0.0) || !std::isfinite(scale)) {
     e.values = {{m.c[0], m.c[2], m.c[5]}};
     e.vectors = Mat3::identity();
     detail::sort_eigen(e);
@@ -151,7 +150,7 @@ inline SymEigen<3> eigen(const SymMat3& m) {
   // Shifted, normalised B = (A - qI)/p has eigenvalues 2cos(φ + 2kπ/3), det(B)/2 = cos(3φ).
   const double q = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
   const double b00 = a[0][0] - q, b11 = a[1][1] - q, b22 = a[2][2] - q;
-  const double offs = off * is * is;
+  const double offs = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
   const double p = std::sqrt((b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * offs) / 6.0);
   const double c00 = b11 * b22 - a[1][2] * a[1][2];
   const double c01 = a[0][1] * b22 - a[1][2] * a[0][2];
