@@ -1,0 +1,32 @@
+#include "apps/parse.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "core/error.hpp"
+
+namespace riemesh::cli {
+
+std::vector<double> parse_numbers(const std::string& text, const std::string& what) {
+  std::vector<double> values;
+  const char* p = text.c_str();
+  while (*p != '\0') {
+    while (*p == ',' || *p == ' ') ++p;
+    if (*p == '\0') break;
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(p, &end);
+    if (end == p) throw InputError(what + ": '" + text + "' is not a list of numbers");
+    if (errno == ERANGE || !std::isfinite(v))
+      throw InputError(what + ": '" + text + "' has a NaN, infinite or out-of-range number");
+    if (*end != '\0' && *end != ',' && *end != ' ')
+      throw InputError(what + ": '" + text + "' is not a list of numbers");
+    values.push_back(v);
+    p = end;
+  }
+  if (values.empty()) throw InputError(what + ": no numbers given");
+  return values;
+}
+
+}  // namespace riemesh::cli
