@@ -1,0 +1,68 @@
+// The metric implied by a mesh (BOOK.md §1 "Element metric and quality").
+#include "metric/element.hpp"
+
+#include <string>
+
+namespace riemesh {
+
+namespace {
+
+template <int D>
+void check_mesh_arrays(std::span<const double> coords, std::span<const int32_t> simplices) {
+  if (coords.size() % D != 0)
+    throw InputError("implied_metric: coordinate count is not a multiple of " + std::to_string(D));
+  if (simplices.size() % (D + 1) != 0)
+    throw InputError("implied_metric: simplex id count is not a multiple of " +
+                     std::to_string(D + 1));
+  const auto nv = static_cast<int64_t>(coords.size() / D);
+  for (std::size_t k = 0; k < simplices.size(); ++k)
+    if (simplices[k] < 0 || simplices[k] >= nv)
+      throw InputError("implied_metric: simplex " + std::to_string(k / (D + 1)) +
+                       " has vertex id " + std::to_string(simplices[k]) + " out of range");
+}
+
+}  // namespace
+
+template <int D>
+std::vector<SymMat<D>> implied_metric(std::span<const double> coords,
+                                      std::span<const int32_t> simplices) {
+  check_mesh_arrays<D>(coords, simplices);
+  const std::size_t nv = coords.size() / D;
+  // Scatter form of implied_vertex_metric: accumulating Σ|K| log M_K per vertex visits every
+  // element once (no vertex-to-element adjacency needed) and takes each log only once.
+  std::vector<SymMat<D>> log_sum(nv, SymMat<D>::zero());
+  std::vector<double> weight(nv, 0.0);
+  const std::size_t ns = simplices.size() / (D + 1);
+  for (std::size_t s = 0; s < ns; ++s) {
+    Vec<D> p[D + 1];
+    for (int i = 0; i < D + 1; ++i)
+      for (int k = 0; k < D; ++k) p[i][k] = coords[simplices[s * (D + 1) + i] * D + k];
+    SymMat<D> mk;
+    try {
+      mk = element_metric(p);
+    } catch (const InputError& e) {
+      throw InputError("implied_metric: simplex " + std::to_string(s) + ": " + e.what());
+    }
+    const double w = std::abs(simplex_measure(p));
+    const SymMat<D> wlog = w * log_spd(mk);
+    for (int i = 0; i < D + 1; ++i) {
+      const auto v = static_cast<std::size_t>(simplices[s * (D + 1) + i]);
+      log_sum[v] += wlog;
+      weight[v] += w;
+    }
+  }
+  std::vector<SymMat<D>> out(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!(weight[v] > 0.0))
+      throw InputError("implied_metric: vertex " + std::to_string(v) + " is in no simplex");
+    out[v] = exp_sym((1.0 / weight[v]) * log_sum[v]);
+  }
+  return out;
+}
+
+template std::vector<SymMat<2>> implied_metric<2>(std::span<const double>,
+                                                  std::span<const int32_t>);
+template std::vector<SymMat<3>> implied_metric<3>(std::span<const double>,
+                                                  std::span<const int32_t>);
+
+}  // namespace riemesh
