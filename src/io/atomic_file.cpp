@@ -1,0 +1,111 @@
+#include "io/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <random>
+
+#include "core/error.hpp"
+
+namespace riemesh {
+
+namespace {
+
+std::string errno_text() { return std::strerror(errno); }
+
+// Six random characters, different per call and per process.
+std::string random_suffix() {
+  static std::atomic<unsigned> counter{0};
+  static const char kAlphabet[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+  std::random_device device;
+  std::mt19937 gen(device() ^ (static_cast<unsigned>(::getpid()) << 8) ^ counter++);
+  std::string s(6, 'a');
+  for (char& c : s) c = kAlphabet[gen() % (sizeof(kAlphabet) - 1)];
+  return s;
+}
+
+}  // namespace
+
+std::string read_file_bytes(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw InputError(path + ": cannot open for reading: " + errno_text());
+  std::string bytes;
+  char buffer[1 << 16];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) bytes.append(buffer, n);
+  const bool failed = std::ferror(f) != 0;
+  std::fclose(f);
+  if (failed) throw InputError(path + ": read error");
+  return bytes;
+}
+
+AtomicFile::AtomicFile(std::string path, bool sync) : path_(std::move(path)), sync_(sync) {
+  // O_EXCL with a random name instead of mkstemp: mkstemp creates mode 0600, whereas open()
+  // with 0666 lets the umask decide, as for any ordinary output file.
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    temp_path_ = path_ + ".tmp-" + random_suffix();
+    const int fd = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+      if (errno == EEXIST) continue;
+      throw Error(path_ + ": cannot create temporary file " + temp_path_ + ": " + errno_text());
+    }
+    file_ = ::fdopen(fd, "wb");
+    if (!file_) {
+      ::close(fd);
+      ::unlink(temp_path_.c_str());
+      throw Error(path_ + ": cannot open temporary file: " + errno_text());
+    }
+    return;
+  }
+  throw Error(path_ + ": cannot find a free temporary file name");
+}
+
+AtomicFile::~AtomicFile() { discard(); }
+
+void AtomicFile::discard() noexcept {
+  if (file_) {
+    std::fclose(file_);
+    file_ = nullptr;
+    ::unlink(temp_path_.c_str());
+  }
+}
+
+void AtomicFile::fail(const char* what) {
+  const std::string message = path_ + ": " + what + ": " + errno_text();
+  discard();
+  throw Error(message);
+}
+
+void AtomicFile::write(const void* data, std::size_t size) {
+  if (!file_) throw Error(path_ + ": write after commit");
+  if (size > 0 && std::fwrite(data, 1, size, file_) != size) fail("write failed");
+}
+
+void AtomicFile::commit() {
+  if (!file_) throw Error(path_ + ": commit without an open file");
+  if (std::fflush(file_) != 0) fail("write failed");
+  if (sync_ && ::fsync(::fileno(file_)) != 0) fail("fsync failed");
+  std::FILE* f = file_;
+  file_ = nullptr;
+  if (std::fclose(f) != 0) {
+    ::unlink(temp_path_.c_str());
+    throw Error(path_ + ": close failed: " + errno_text());
+  }
+  if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
+    const std::string message = path_ + ": cannot rename temporary file into place: " + errno_text();
+    ::unlink(temp_path_.c_str());
+    throw Error(message);
+  }
+}
+
+void write_file_atomically(const std::string& path, std::string_view contents, bool sync) {
+  AtomicFile file(path, sync);
+  file.write(contents);
+  file.commit();
+}
+
+}  // namespace riemesh

@@ -1,0 +1,45 @@
+#pragma once
+// Whole-file reads and all-or-nothing writes. A write goes to "<path>.tmp-XXXXXX" in the target
+// folder and is renamed into place only when complete, so a failed or interrupted write never
+// leaves a half-written file under the target name (DESIGN.md "Conventions").
+#include <cstddef>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace riemesh {
+
+/// The bytes of a file. Throws InputError (naming the file) if it cannot be opened or read.
+std::string read_file_bytes(const std::string& path);
+
+/// A file being written atomically: write(), then commit() to rename it into place. Destroying
+/// it without commit() removes the temporary file. I/O failures throw riemesh::Error.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string path, bool sync = false);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  void write(const void* data, std::size_t size);
+  void write(std::string_view text) { write(text.data(), text.size()); }
+  /// Flushes, optionally fsyncs, closes and renames the temporary file to the target path.
+  void commit();
+
+  const std::string& path() const { return path_; }
+  const std::string& temp_path() const { return temp_path_; }
+
+ private:
+  void discard() noexcept;
+  [[noreturn]] void fail(const char* what);
+
+  std::string path_;
+  std::string temp_path_;
+  std::FILE* file_ = nullptr;
+  bool sync_ = false;
+};
+
+/// Writes `contents` to `path` atomically.
+void write_file_atomically(const std::string& path, std::string_view contents, bool sync = false);
+
+}  // namespace riemesh

@@ -1,0 +1,53 @@
+#pragma once
+// Tokenizer for the Medit ASCII formats (.mesh, .sol): whitespace-separated tokens, '#' comments
+// to the end of the line, "quoted strings" (FreeFem's Identifier/Geometry) as single tokens.
+// Keeps the line number of each token for error messages.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace riemesh::io_detail {
+
+class TextScanner {
+ public:
+  explicit TextScanner(std::string_view text) : text_(text) {}
+
+  /// Moves to the next token; false at the end of the text.
+  bool next(std::string_view& token);
+  /// The next token without consuming it (empty at the end).
+  std::string_view peek();
+  /// Line (1-based) of the last token returned by next().
+  std::size_t line() const { return token_line_; }
+  /// Bytes not yet scanned.
+  std::size_t remaining() const { return text_.size() - pos_; }
+
+  struct Mark {
+    std::size_t pos, line;
+  };
+  Mark mark() const { return {pos_, line_}; }
+  void reset(Mark m) { pos_ = m.pos, line_ = m.line, token_line_ = m.line; }
+
+ private:
+  void skip_blanks();
+
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 1;
+  std::size_t token_line_ = 1;
+};
+
+/// Whole-token parses; false if the token is not entirely a number of that kind.
+bool parse_int(std::string_view token, std::int64_t& value);
+bool parse_real(std::string_view token, double& value);
+
+/// True if the token can start a keyword (a letter).
+inline bool is_word(std::string_view token) {
+  if (token.empty()) return false;
+  const char c = token[0];
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+/// ASCII case-insensitive equality.
+bool iequals(std::string_view a, std::string_view b);
+
+}  // namespace riemesh::io_detail
