@@ -1,0 +1,64 @@
+#pragma once
+// Validity checks of a mesh: array sizes, ids, orientation, conformity, boundary closure and
+// manifoldness, consistency of the listed boundary entities with the elements. The result is a
+// report (no printing, no exceptions for an invalid mesh): one issue per category found, with a
+// count and the first example in id order.
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace riemesh {
+
+enum class CheckCategory {
+  kArraySize,        // an array's size does not match its entity count (refs missing, ...)
+  kIdOutOfRange,     // a vertex id outside [0, num_vertices)
+  kNonFiniteCoordinate,
+  kRepeatedVertex,   // an element, triangle or edge using the same vertex twice
+  kUnusedVertex,     // a vertex of no element
+  kInvertedElement,  // negative signed area (2D) or volume (3D) beyond the tolerance
+  kZeroMeasureElement,  // |measure| <= kMeasureTolerance · (longest edge)^d
+  kDuplicateElement,    // an element with the same vertex set as an earlier one
+  kNonManifoldFace,     // a face (edge in 2D / on surfaces) shared by more than two elements
+  kInconsistentOrientation,  // surface: two neighbours traverse their common edge the same way
+  kOpenBoundary,          // volume: a boundary edge on one boundary face only
+  kNonManifoldBoundary,   // volume: boundary edge on > 2 boundary faces; 2D: boundary vertex
+                          // on != 2 boundary edges
+  kMissingBoundary,       // a boundary face (edge in 2D) of the elements not listed
+  kOrphanEntity,          // a listed triangle (edge) that is no face (edge) of any element
+  kDuplicateBoundaryEntity,  // a triangle or edge listed twice
+};
+
+/// Relative tolerance of the measure test: an element is degenerate when its signed measure is
+/// at most this times its longest edge to the power d (a regular tet has 0.118 L³), i.e. about
+/// a thousand times the rounding error of the determinant.
+inline constexpr double kMeasureTolerance = 1e-12;
+
+enum class EntityKind { kNone, kVertex, kEdge, kTriangle, kTet };
+
+/// One category of problem: how many entities have it and the first of them.
+struct CheckIssue {
+  CheckCategory category{};
+  std::size_t count = 0;
+  EntityKind entity = EntityKind::kNone;  // what `example` numbers
+  Id example = kNoId;                     // kNoId when no single entity is to blame
+  int local_face = -1;  // when the issue is about face local_face of element `example`
+  std::array<double, 3> location{};  // centroid of the example (z = 0 in 2D)
+};
+
+struct CheckReport {
+  std::vector<CheckIssue> issues;  // in CheckCategory order, one per category present
+  bool valid() const { return issues.empty(); }
+  /// The number of entities with that problem (0 when absent).
+  std::size_t count(CheckCategory category) const;
+  const CheckIssue* find(CheckCategory category) const;
+};
+
+/// A short name of a category ("inverted element", ...).
+const char* to_string(CheckCategory category);
+
+/// Checks a planar, surface or volume mesh (see CheckCategory for what is checked).
+CheckReport check_mesh(const Mesh& mesh);
+
+}  // namespace riemesh

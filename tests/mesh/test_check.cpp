@@ -1,0 +1,263 @@
+// check_mesh: valid fixtures pass, and each single defect is reported as exactly that defect,
+// with the right count and first example.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "mesh/adjacency.hpp"
+#include "mesh/check.hpp"
+#include "mesh/fixtures.hpp"
+
+using namespace riemesh;
+
+namespace {
+
+using C = CheckCategory;
+
+std::string describe(const CheckReport& r) {
+  std::string s;
+  for (const CheckIssue& i : r.issues)
+    s += std::string(to_string(i.category)) + " x" + std::to_string(i.count) + " (first " +
+         std::to_string(i.example) + "); ";
+  return s.empty() ? "valid" : s;
+}
+
+/// The report holds exactly one issue: `category`, `count` times.
+void expect_only(const CheckReport& r, C category, std::size_t count) {
+  ASSERT_EQ(r.issues.size(), 1u) << describe(r);
+  EXPECT_EQ(r.issues[0].category, category) << describe(r);
+  EXPECT_EQ(r.issues[0].count, count) << describe(r);
+  EXPECT_FALSE(r.valid());
+}
+
+/// Id of the tet of unit_cube(n) that lies k-th in cell (i, j, l).
+Id cube_tet(int n, int i, int j, int l, int k) { return 6 * ((l * n + j) * n + i) + k; }
+
+void erase_tet(Mesh& m, Id t) {
+  m.tets.erase(m.tets.begin() + 4 * t, m.tets.begin() + 4 * t + 4);
+  m.tet_ref.erase(m.tet_ref.begin() + t);
+}
+
+void erase_triangle(Mesh& m, Id f) {
+  m.triangles.erase(m.triangles.begin() + 3 * f, m.triangles.begin() + 3 * f + 3);
+  m.tri_ref.erase(m.tri_ref.begin() + f);
+  m.tri_tag.erase(m.tri_tag.begin() + f);
+}
+
+/// Lists every boundary face of the tets as a Triangle (ref 1).
+void list_boundary(Mesh& m) {
+  const Adjacency adj = build_adjacency(m);
+  for (std::size_t t = 0; t < m.num_tets(); ++t)
+    for (int i = 0; i < 4; ++i)
+      if (adj.elem2elem[4 * t + i] == kNoId) {
+        for (int a = 0; a < 3; ++a) m.triangles.push_back(m.tets[4 * t + kTetFace[i][a]]);
+        m.tri_ref.push_back(1);
+      }
+}
+
+Mesh tets_from(std::vector<double> coords, std::vector<Id> tets) {
+  Mesh m;
+  m.dim = 3;
+  m.coords = std::move(coords);
+  m.vert_ref.assign(m.num_vertices(), 0);
+  m.tets = std::move(tets);
+  m.tet_ref.assign(m.num_tets(), 1);
+  list_boundary(m);
+  return m;
+}
+
+}  // namespace
+
+TEST(Check, FixturesAreValid) {
+  for (const Mesh& m : {unit_cube(1), unit_cube(3), unit_square(1, 1), unit_square(5, 3),
+                        sphere_surface(0), sphere_surface(2)}) {
+    const CheckReport r = check_mesh(m);
+    EXPECT_TRUE(r.valid()) << describe(r);
+  }
+  EXPECT_TRUE(check_mesh(Mesh{}).valid());  // empty
+}
+
+TEST(Check, InvertedTet) {
+  Mesh m = unit_cube(3);
+  const Id t = cube_tet(3, 1, 1, 1, 2);
+  std::swap(m.tets[4 * t + 2], m.tets[4 * t + 3]);
+  const CheckReport r = check_mesh(m);
+  expect_only(r, C::kInvertedElement, 1);
+  EXPECT_EQ(r.issues[0].entity, EntityKind::kTet);
+  EXPECT_EQ(r.issues[0].example, t);
+  // Located at its centroid, inside the middle cell [1/3, 2/3]³.
+  for (double x : r.issues[0].location) {
+    EXPECT_GT(x, 1.0 / 3);
+    EXPECT_LT(x, 2.0 / 3);
+  }
+}
+
+TEST(Check, ZeroVolumeTet) {
+  // A single flat tet (4 coplanar points): its volume is exactly 0.
+  const Mesh m = tets_from({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, {0, 1, 2, 3});
+  expect_only(check_mesh(m), C::kZeroMeasureElement, 1);
+  // Nearly flat but above the tolerance: valid. Height 1e-9 gives |V| / L³ ~ 1e-10.
+  const Mesh thin = tets_from({0, 0, 0, 1, 0, 0, 0, 1, 0, 0.3, 0.3, 1e-9}, {0, 1, 2, 3});
+  EXPECT_TRUE(check_mesh(thin).valid()) << describe(check_mesh(thin));
+}
+
+TEST(Check, DuplicatedTet) {
+  Mesh m = unit_cube(3);
+  const Id t = cube_tet(3, 1, 1, 1, 4);
+  m.tets.insert(m.tets.end(), m.tets.begin() + 4 * t, m.tets.begin() + 4 * t + 4);
+  m.tet_ref.push_back(1);
+  const CheckReport r = check_mesh(m);
+  expect_only(r, C::kDuplicateElement, 1);
+  EXPECT_EQ(r.issues[0].example, static_cast<Id>(m.num_tets() - 1));  // the later copy
+}
+
+TEST(Check, MissingBoundaryTriangle) {
+  Mesh m = unit_cube(3);
+  erase_triangle(m, 17);
+  const CheckReport r = check_mesh(m);
+  expect_only(r, C::kMissingBoundary, 1);
+  EXPECT_GE(r.issues[0].local_face, 0);  // the tet face that should have been listed
+}
+
+TEST(Check, HoleInAVolume) {
+  // Removing the middle cell's 6 tets opens a cubic cavity: 12 boundary faces nobody listed.
+  const int n = 3;
+  Mesh m = unit_cube(n);
+  for (int k = 5; k >= 0; --k) erase_tet(m, cube_tet(n, 1, 1, 1, k));
+  expect_only(check_mesh(m), C::kMissingBoundary, 12);
+  // Listing the cavity's faces makes it a valid mesh with an internal boundary.
+  Mesh listed = m;
+  listed.triangles.clear(), listed.tri_ref.clear(), listed.tri_tag.clear();
+  list_boundary(listed);
+  EXPECT_TRUE(check_mesh(listed).valid()) << describe(check_mesh(listed));
+}
+
+TEST(Check, OrphanAndDuplicateTriangles) {
+  Mesh m = unit_cube(2);
+  // Vertices 1, 3, 4 are (1/2,0,0), (0,1/2,0), (1/2,1/2,0): the bottom-left square's Kuhn
+  // diagonal is 0-4, so its faces are (0,1,4) and (0,4,3); (1,3,4) uses the other diagonal.
+  m.triangles.insert(m.triangles.end(), {1, 3, 4});
+  m.tri_ref.push_back(7);
+  m.tri_tag.push_back(0);
+  expect_only(check_mesh(m), C::kOrphanEntity, 1);
+  Mesh d = unit_cube(2);
+  d.triangles.insert(d.triangles.end(), {d.triangles[5], d.triangles[3], d.triangles[4]});
+  d.tri_ref.push_back(1);
+  d.tri_tag.push_back(0);
+  expect_only(check_mesh(d), C::kDuplicateBoundaryEntity, 1);
+}
+
+TEST(Check, InteriorTrianglesMayBeListed) {
+  // An internal interface (a face shared by two tets) listed as a Triangle is fine.
+  Mesh m = unit_cube(2);
+  const Adjacency adj = build_adjacency(m);
+  const auto it = std::find_if(adj.elem2elem.begin(), adj.elem2elem.end(),
+                               [](Id n) { return n != kNoId; });
+  const std::size_t f = it - adj.elem2elem.begin();
+  for (int a = 0; a < 3; ++a) m.triangles.push_back(m.tets[4 * (f / 4) + kTetFace[f % 4][a]]);
+  m.tri_ref.push_back(9);
+  m.tri_tag.push_back(0);
+  EXPECT_TRUE(check_mesh(m).valid()) << describe(check_mesh(m));
+}
+
+TEST(Check, NonManifoldBoundaryEdge) {
+  // Two tets sharing only the edge (0, 1): 4 boundary faces around that edge.
+  const Mesh m = tets_from({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1},
+                           {0, 1, 2, 3, 0, 1, 4, 5});
+  expect_only(check_mesh(m), C::kNonManifoldBoundary, 1);
+}
+
+TEST(Check, NonManifoldFace) {
+  // Three tets on the triangle (0, 1, 2): apexes 3 above, 4 below, 5 further above.
+  const Mesh m = tets_from({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0.2, 0.2, 2},
+                           {0, 1, 2, 3, 0, 2, 1, 4, 0, 1, 2, 5});
+  const CheckReport r = check_mesh(m);
+  EXPECT_EQ(r.count(C::kNonManifoldFace), 1u) << describe(r);
+  EXPECT_EQ(r.count(C::kInvertedElement), 0u);
+}
+
+TEST(Check, BadIdsAndSizes) {
+  Mesh m = unit_cube(2);
+  m.tets[5] = 1000;
+  expect_only(check_mesh(m), C::kIdOutOfRange, 1);
+  Mesh s = unit_cube(2);
+  s.tet_ref.pop_back();
+  expect_only(check_mesh(s), C::kArraySize, 1);
+  Mesh c = unit_cube(1);
+  c.coords.push_back(0.5);  // not a multiple of 3: nothing else can be checked
+  const CheckReport r = check_mesh(c);
+  EXPECT_FALSE(r.valid());
+  EXPECT_GE(r.count(C::kArraySize), 1u);
+}
+
+TEST(Check, UnusedAndRepeatedVertices) {
+  Mesh m = unit_cube(1);
+  m.coords.insert(m.coords.end(), {2.0, 2.0, 2.0});
+  m.vert_ref.push_back(0);
+  m.vert_tag.push_back(0);
+  const CheckReport r = check_mesh(m);
+  expect_only(r, C::kUnusedVertex, 1);
+  EXPECT_EQ(r.issues[0].example, 8);
+  EXPECT_EQ(r.issues[0].location, (std::array<double, 3>{2.0, 2.0, 2.0}));
+  Mesh e = unit_cube(1);
+  e.edges.insert(e.edges.end(), {3, 3});
+  e.edge_ref.push_back(0);
+  e.edge_tag.push_back(0);
+  expect_only(check_mesh(e), C::kRepeatedVertex, 1);
+}
+
+TEST(Check, PlanarDefects) {
+  // A hole: an interior triangle of unit_square(3, 3) removed leaves 3 unlisted boundary edges.
+  Mesh hole = unit_square(3, 3);
+  erase_triangle(hole, 8);  // cell (1, 1), first triangle
+  expect_only(check_mesh(hole), C::kMissingBoundary, 3);
+  // A missing boundary edge.
+  Mesh missing = unit_square(3, 2);
+  missing.edges.erase(missing.edges.begin(), missing.edges.begin() + 2);
+  missing.edge_ref.erase(missing.edge_ref.begin());
+  missing.edge_tag.erase(missing.edge_tag.begin());
+  expect_only(check_mesh(missing), C::kMissingBoundary, 1);
+  // An edge no triangle has: (1, 4) = (1/3, 0)-(0, 1/2), the anti-diagonal of cell (0, 0)
+  // (whose diagonal is 0-5).
+  Mesh orphan = unit_square(3, 2);
+  orphan.edges.insert(orphan.edges.end(), {1, 4});
+  orphan.edge_ref.push_back(5);
+  orphan.edge_tag.push_back(0);
+  expect_only(check_mesh(orphan), C::kOrphanEntity, 1);
+  // An inverted triangle (clockwise).
+  Mesh inverted = unit_square(2, 2);
+  std::swap(inverted.triangles[0], inverted.triangles[1]);
+  expect_only(check_mesh(inverted), C::kInvertedElement, 1);
+}
+
+TEST(Check, PlanarBowTieIsNonManifold) {
+  // Two triangles touching at vertex 2 only; all 6 boundary edges listed.
+  Mesh m;
+  m.dim = 2;
+  m.coords = {0, 0, 1, 0, 1, 1, 2, 1, 2, 2};
+  m.vert_ref.assign(5, 0);
+  m.triangles = {0, 1, 2, 2, 3, 4};
+  m.tri_ref = {1, 1};
+  m.edges = {0, 1, 1, 2, 2, 0, 2, 3, 3, 4, 4, 2};
+  m.edge_ref.assign(6, 1);
+  const CheckReport r = check_mesh(m);
+  expect_only(r, C::kNonManifoldBoundary, 1);
+  EXPECT_EQ(r.issues[0].example, 2);
+}
+
+TEST(Check, SurfaceOrientation) {
+  Mesh m = sphere_surface(1);
+  std::swap(m.triangles[3 * 7 + 1], m.triangles[3 * 7 + 2]);  // flip triangle 7
+  const CheckReport r = check_mesh(m);
+  expect_only(r, C::kInconsistentOrientation, 3);  // its 3 edges
+  // A zero-area surface triangle.
+  Mesh z = sphere_surface(0);
+  for (int c = 0; c < 3; ++c) z.coords[3 * z.triangles[2] + c] = z.coords[3 * z.triangles[1] + c];
+  EXPECT_GE(check_mesh(z).count(C::kZeroMeasureElement), 1u);
+}
+
+TEST(Check, CategoryNames) {
+  for (int c = 0; c <= static_cast<int>(C::kDuplicateBoundaryEntity); ++c)
+    EXPECT_STRNE(to_string(static_cast<C>(c)), "unknown");
+}
