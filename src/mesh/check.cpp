@@ -214,7 +214,11 @@ CheckReport check_mesh(const Mesh& m) {
   bool ids_ok = check_ids(m.edges, 2, EntityKind::kEdge, nv, col);
   ids_ok = check_ids(m.triangles, 3, EntityKind::kTriangle, nv, col) && ids_ok;
   ids_ok = check_ids(m.tets, 4, EntityKind::kTet, nv, col) && ids_ok;
-  if (!ids_ok || m.kind() == MeshKind::kEmpty) return col.report();
+  if (!ids_ok) return col.report();
+  if (m.kind() == MeshKind::kEmpty) {
+    check_detail::check_edge_loops(m, col);  // a boundary given by its edges only
+    return col.report();
+  }
 
   Elements el;
   if (m.kind() == MeshKind::kVolume) el = {&m.tets, 4, EntityKind::kTet};

@@ -22,9 +22,10 @@ enum class CheckCategory {
   kDuplicateElement,    // an element with the same vertex set as an earlier one
   kNonManifoldFace,     // a face (edge in 2D / on surfaces) shared by more than two elements
   kInconsistentOrientation,  // surface: two neighbours traverse their common edge the same way
-  kOpenBoundary,          // volume: a boundary edge on one boundary face only
-  kNonManifoldBoundary,   // volume: boundary edge on > 2 boundary faces; 2D: boundary vertex
-                          // on != 2 boundary edges
+  kOpenBoundary,          // volume: a boundary edge on one boundary face only; edges-only
+                          // mesh: a vertex on one edge
+  kNonManifoldBoundary,   // volume: boundary edge on > 2 boundary faces; 2D (and edges-only
+                          // meshes): a boundary vertex on more than 2 boundary edges
   kMissingBoundary,       // a boundary face (edge in 2D) of the elements not listed
   kOrphanEntity,          // a listed triangle (edge) that is no face (edge) of any element
   kDuplicateBoundaryEntity,  // a triangle or edge listed twice

@@ -74,4 +74,8 @@ struct Elements {
 void check_topology(const Mesh& m, const Elements& el, const std::vector<Id>& kept,
                     Collector& col);
 
+/// A mesh of edges only (e.g. the boundary of a 2D domain to be meshed): every vertex of an
+/// edge is on exactly two of them (closed loops), no edge is listed twice.
+void check_edge_loops(const Mesh& m, Collector& col);
+
 }  // namespace riemesh::check_detail

@@ -161,6 +161,30 @@ void check_volume_boundary(const Mesh& m, const Adjacency& adj, const Distinct& 
 
 }  // namespace
 
+void check_edge_loops(const Mesh& m, Collector& col) {
+  std::vector<int> degree(m.num_vertices(), 0);
+  std::vector<std::pair<std::pair<Id, Id>, Id>> keys;
+  for (std::size_t e = 0; e < m.num_edges(); ++e) {
+    const Id a = m.edges[2 * e], b = m.edges[2 * e + 1];
+    if (a == b) continue;  // reported as a repeated vertex
+    ++degree[a], ++degree[b];
+    keys.push_back({{std::min(a, b), std::max(a, b)}, static_cast<Id>(e)});
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (keys[i].first == keys[i - 1].first) {
+      const Id e = keys[i].second;
+      col.add(CheckCategory::kDuplicateBoundaryEntity, EntityKind::kEdge, e,
+              {m.edges.data() + 2 * e, 2});
+    }
+  for (std::size_t v = 0; v < degree.size(); ++v) {
+    if (degree[v] == 0 || degree[v] == 2) continue;
+    const Id id = static_cast<Id>(v);
+    col.add(degree[v] == 1 ? CheckCategory::kOpenBoundary : CheckCategory::kNonManifoldBoundary,
+            EntityKind::kVertex, id, {&id, 1});
+  }
+}
+
 void check_topology(const Mesh& m, const Elements& el, const std::vector<Id>& kept,
                     Collector& col) {
   const Distinct d = distinct_elements(el, kept);

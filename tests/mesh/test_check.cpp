@@ -246,6 +246,25 @@ TEST(Check, PlanarBowTieIsNonManifold) {
   EXPECT_EQ(r.issues[0].example, 2);
 }
 
+TEST(Check, EdgeOnlyBoundaryLoops) {
+  // The boundary of unit_square(3, 2) alone: a closed loop. Cut one edge: two open ends.
+  Mesh m = unit_square(3, 2);
+  m.triangles.clear(), m.tri_ref.clear(), m.tri_tag.clear();
+  EXPECT_TRUE(check_mesh(m).valid()) << describe(check_mesh(m));
+  Mesh open = m;
+  open.edges.resize(open.edges.size() - 2);
+  open.edge_ref.pop_back();
+  open.edge_tag.pop_back();
+  expect_only(check_mesh(open), C::kOpenBoundary, 2);
+  Mesh twice = m;
+  twice.edges.insert(twice.edges.end(), {m.edges[1], m.edges[0]});
+  twice.edge_ref.push_back(1);
+  twice.edge_tag.push_back(0);
+  const CheckReport r = check_mesh(twice);
+  EXPECT_EQ(r.count(C::kDuplicateBoundaryEntity), 1u) << describe(r);
+  EXPECT_EQ(r.count(C::kNonManifoldBoundary), 2u) << describe(r);
+}
+
 TEST(Check, SurfaceOrientation) {
   Mesh m = sphere_surface(1);
   std::swap(m.triangles[3 * 7 + 1], m.triangles[3 * 7 + 2]);  // flip triangle 7
