@@ -69,20 +69,12 @@ SymMat<D> isotropic(InterpScheme s, std::span<const SymMat<D>> m, std::span<cons
 }
 
 /// Two metrics by simultaneous reduction: the sizes hᵢ = mu^{-1/2} along the common basis are
-/// interpolated linearly or geometrically (mu_t = mu_a^{1-t} mu_b^t, so that
-/// det M_t = det a^{1-t} det b^t: the maximum principle).
+/// interpolated linearly or geometrically (the latter keeps the maximum principle).
 template <int D>
 SymMat<D> simred_pair(const SymMat<D>& a, const SymMat<D>& b, double t, bool geometric) {
   const SimultaneousReduction<D> r = simultaneous_reduction(a, b);
   Vec<D> mu{};
-  for (int i = 0; i < D; ++i) {
-    if (geometric) {
-      mu[i] = r.mu_a[i] * std::pow(r.mu_b[i] / r.mu_a[i], t);
-    } else {
-      const double h = (1.0 - t) / std::sqrt(r.mu_a[i]) + t / std::sqrt(r.mu_b[i]);
-      mu[i] = 1.0 / (h * h);
-    }
-  }
+  for (int i = 0; i < D; ++i) mu[i] = interpolate_reduced(r.mu_a[i], r.mu_b[i], t, geometric);
   return rebuild_metric(r, mu);
 }
 

@@ -72,6 +72,14 @@ inline Vec<D> relative_eigenvalues(const SymMat<D>& a, const SymMat<D>& b) {
   return eigen(congruence(compose(ea.vectors, inv_root).to_mat(), b)).values;
 }
 
+/// One reduced coefficient at parameter t: the size h = mu^{-1/2} interpolated linearly, or
+/// geometrically (mu_a^{1-t} mu_b^t, which gives det M_t = det A^{1-t} det B^t).
+inline double interpolate_reduced(double mu_a, double mu_b, double t, bool geometric) {
+  if (geometric) return mu_a * std::pow(mu_b / mu_a, t);
+  const double h = (1.0 - t) / std::sqrt(mu_a) + t / std::sqrt(mu_b);
+  return 1.0 / (h * h);
+}
+
 /// The metric with coefficients mu in the reduced basis: dual diag(mu) dualᵀ = P^{-T} diag(mu) P^{-1}.
 template <int D>
 inline SymMat<D> rebuild_metric(const SimultaneousReduction<D>& r, const Vec<D>& mu) {
