@@ -135,6 +135,69 @@ TEST(Gradation, TwoVerticesHShock) {
   }
 }
 
+TEST(Gradation, AnisotropicFloorKeepsSmallSizes) {
+  // A: isotropic h = 0.01; B at distance 1 along x: size 1 along x, 0.02 along y; Hv α = 0.1.
+  // Along the edge h_s = 0.01, h_l = 1: target 0.01 + 0.1 = 0.11, η = 0.11. The isotropic
+  // correction of the smallest sizes (0.01 at A, 0.02 at B) changes nothing, h*_iso = 0.02; so
+  // B gets max(0.11·1, 0.02) = 0.11 along x and keeps min(0.02, max(0.11·0.02, 0.02)) = 0.02.
+  const std::vector<double> xy = {0, 0, 1, 0};
+  const std::vector<int32_t> e = {0, 1};
+  std::vector<SymMat2> m = {isotropic_metric<2>(0.01), SymMat2{{1.0, 0.0, 1.0 / (0.02 * 0.02)}}};
+  GradationOptions o;
+  o.mode = GradationMode::kHVariation;
+  o.threshold = 0.1;
+  const GradationReport r = gradate<2>(xy, e, m, o);
+  EXPECT_NEAR(m[1].c[0], 1.0 / (0.11 * 0.11), 1e-9);
+  EXPECT_NEAR(m[1].c[1], 0.0, 1e-9);
+  EXPECT_NEAR(m[1].c[2], 1.0 / (0.02 * 0.02), 1e-6);
+  EXPECT_EQ(r.passes, 2);
+}
+
+TEST(Gradation, ObliqueEdgeReachesTheTargetInOneStep) {
+  // B has sizes 1 (x) and 0.02 (y); the edge from A (h = 0.01) leaves at a small angle φ
+  // (sin φ = 0.035), length 1: h_AB(B) = (cos²φ + sin²φ/0.02²)^{-1/2} ≈ 0.50. Hv α = 0.1: the
+  // size along the edge must become 0.11. h*_iso = 0.02 (the smallest sizes 0.01, 0.02 need no
+  // isotropic correction), so the y size stays (floor) and only x shrinks: solve
+  // cos²φ/(η·1)² + sin²φ/0.02² = 1/0.11², η ≈ 0.112, not 0.11/0.50 = 0.22 (which leaves
+  // h_AB ≈ 0.2 and, repeated, converges only linearly).
+  const double s = 0.035, c = std::sqrt(1 - s * s);
+  const std::vector<double> xy = {-c, -s, 0, 0};
+  const std::vector<int32_t> e = {0, 1};
+  std::vector<SymMat2> m = {isotropic_metric<2>(0.01), SymMat2{{1.0, 0.0, 1.0 / (0.02 * 0.02)}}};
+  GradationOptions o;
+  o.mode = GradationMode::kHVariation;
+  o.threshold = 0.1;
+  const GradationReport r = gradate<2>(xy, e, m, o);
+  const double eta = c / std::sqrt(1 / (0.11 * 0.11) - s * s / (0.02 * 0.02));
+  EXPECT_NEAR(edge_size(m[1], Vec2{{c, s}}), 0.11, 1e-12);
+  EXPECT_NEAR(m[1].c[0], 1 / (eta * eta), 1e-9 / (eta * eta));
+  EXPECT_NEAR(m[1].c[1], 0.0, 1e-9);                  // directions kept
+  EXPECT_NEAR(m[1].c[2], 1.0 / (0.02 * 0.02), 1e-6);  // y size at the floor
+  EXPECT_NEAR(r.measure_after, 0.1, 1e-12);
+  EXPECT_EQ(r.passes, 2);
+}
+
+TEST(Gradation, IsotropicVariantRescalesUniformly) {
+  // anisotropic = false works on h = det^{-1/(2D)} and rescales the whole metric: the
+  // anisotropy ratio and directions of every vertex are kept.
+  std::mt19937 rng(8);
+  const Graph g = grid(8);
+  std::vector<SymMat2> m = random_field(g.xy.size() / 2, true, rng);
+  const std::vector<SymMat2> before = m;
+  GradationOptions o;
+  o.anisotropic = false;
+  const GradationReport r = gradate<2>(g.xy, g.edges, m, o);
+  EXPECT_TRUE(r.converged);
+  EXPECT_GT(r.modified_vertices, 0u);
+  EXPECT_LE(max_h_shock<2>(g.xy, g.edges, m, false), 1.3 * (1 + 1e-8));
+  for (std::size_t v = 0; v < m.size(); ++v) {
+    const double scale = m[v].c[0] / before[v].c[0];
+    EXPECT_GE(scale, 1.0 - 1e-12);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(m[v].c[k], scale * before[v].c[k], 1e-9 * m[v].c[2] + 1e-9 * std::abs(m[v].c[k]));
+  }
+}
+
 TEST(Gradation, HShockBoundHoldsOnRandomIsotropicFields) {
   std::mt19937 rng(11);
   const Graph graphs[2] = {chain(200, rng), grid(12)};
