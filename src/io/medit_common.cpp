@@ -59,6 +59,11 @@ const char* bound_name(Bound b) {
   return "";
 }
 
+const char* bound_plural(Bound b) {
+  return b == Bound::kVertex ? "vertices" : b == Bound::kEdge ? "edges"
+       : b == Bound::kTriangle ? "triangles" : b == Bound::kNormal ? "normals" : "tangents";
+}
+
 }  // namespace
 
 int keyword_code(std::string_view name) {
@@ -124,8 +129,8 @@ Mesh MeshAssembler::finish(const MeditReadOptions& options) {
       const std::size_t entry = (i - b.begin) / b.stride;
       fail(b.locate(entry, static_cast<int>(column)), keyword_name(b.code),
            std::string(bound_name(bound)) + " id " + std::to_string(std::int64_t{ids[i]} + 1) +
-               " out of range (the file has " + std::to_string(limit) + " " + bound_name(bound) +
-               (limit == 1 ? ")" : "s)"));
+               " out of range (the file has " + std::to_string(limit) + " " +
+               (limit == 1 ? bound_name(bound) : bound_plural(bound)) + ")");
     }
   }
   mesh.vert_tag.assign(nv, kTagNone);

@@ -25,11 +25,11 @@ void TextScanner::skip_blanks() {
 
 bool TextScanner::next(std::string_view& token) {
   skip_blanks();
-  token_line_ = line_;
   if (pos_ >= text_.size()) {
-    token = {};
+    token = {};  // line() stays that of the last token: where the file was cut short
     return false;
   }
+  token_line_ = line_;
   const std::size_t begin = pos_;
   if (text_[pos_] == '"') {
     // A quoted string runs to the closing quote, or to the end of the line if unterminated.

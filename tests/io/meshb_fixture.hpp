@@ -38,7 +38,8 @@ class MeshbFixture {
     keyword(54);  // GmfEnd, next position 0
     return bytes_;
   }
-  std::size_t size() const { return bytes_.size(); }
+  /// The bytes so far, without End (the last keyword has next position 0).
+  const std::string& bytes() const { return bytes_; }
 
  private:
   template <class T>
