@@ -40,6 +40,7 @@ constexpr double kExtrapolation[kLevels] = {
     (1e-3 * 1e-5) / ((1e-4 - 1e-3) * (1e-4 - 1e-5)),
     (1e-3 * 1e-4) / ((1e-5 - 1e-3) * (1e-5 - 1e-4))};
 constexpr double kEpsFloor = 1e-9;
+constexpr int kMaxPairScan = 16;
 
 /// log det m if m is positive definite (by Cholesky), otherwise false.
 template <int D>
@@ -173,6 +174,21 @@ double containment_factor(const SymMat<D>& m, std::span<const SymMat<D>> inputs)
   return c;
 }
 
+/// Index i·n + j of a pair whose intersection contains every input, or -1. Such a pair's
+/// intersection solves the problem restricted to two constraints and is feasible for all, so it
+/// is the optimum, exactly — the common case of inactive extra constraints, and the degenerate
+/// one (a constraint touching with zero multiplier) where the barrier path converges slowly.
+/// Only tried for up to kMaxPairScan metrics (O(n³) eigensolves).
+template <int D>
+int feasible_pair(std::span<const SymMat<D>> m) {
+  const int n = static_cast<int>(m.size());
+  if (n > kMaxPairScan) return -1;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if (containment_factor(intersect(m[i], m[j]), m) <= 1.0 + 1e-12) return i * n + j;
+  return -1;
+}
+
 }  // namespace
 
 template <int D>
@@ -187,7 +203,11 @@ template <int D>
 SymMat<D> intersect_max_volume(std::span<const SymMat<D>> m, double tol) {
   if (m.empty()) throw InputError("intersect: no metric given");
   const SymMat<D> seq = intersect_sequential(m);
-  if (m.size() == 1) return seq;
+  if (m.size() <= 2) return seq;  // exact: see intersect(a, b)
+  if (const int pair = feasible_pair(m); pair >= 0) {
+    const std::size_t n = m.size(), p = static_cast<std::size_t>(pair);
+    return intersect(m[p / n], m[p % n]);
+  }
   // Frame of the sequential intersection: C̃ᵢ = (S⁻¹ mᵢ S⁻¹)⁻¹ ⪰ I.
   const SymEigen<D> es = eigen(seq);
   Vec<D> root{}, inv_root{};
