@@ -1,0 +1,62 @@
+// Atomic writes: the target appears complete or not at all, and no temporary is left behind.
+#include "io/atomic_file.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include "core/error.hpp"
+#include "io_test_util.hpp"
+
+namespace riemesh {
+namespace {
+
+TEST(AtomicFile, CommitRenamesIntoPlace) {
+  test::ScratchDir dir;
+  const std::string path = dir.file("out.txt");
+  test::write_text(path, "old contents");
+  {
+    AtomicFile file(path, /*sync=*/true);
+    EXPECT_EQ(file.temp_path().rfind(path + ".tmp-", 0), 0u);
+    file.write("new ");
+    EXPECT_EQ(test::read_text(path), "old contents");  // untouched until commit
+    file.write("contents");
+    file.commit();
+  }
+  EXPECT_EQ(test::read_text(path), "new contents");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);
+  struct stat st {};
+  ASSERT_EQ(stat(path.c_str(), &st), 0);
+  EXPECT_NE(st.st_mode & 0044, 0u) << "the umask, not 0600, decides the mode";
+}
+
+TEST(AtomicFile, AbandonedWriteLeavesNothing) {
+  test::ScratchDir dir;
+  const std::string path = dir.file("out.txt");
+  try {
+    AtomicFile file(path);
+    file.write("partial");
+    throw std::runtime_error("writer failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+TEST(AtomicFile, ErrorsNameThePath) {
+  try {
+    write_file_atomically("/nonexistent-dir/x.mesh", "x");
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("/nonexistent-dir/x.mesh: cannot create", 0), 0u) << e.what();
+  }
+  EXPECT_THROW(read_file_bytes("/nonexistent-dir/x.mesh"), InputError);
+}
+
+TEST(AtomicFile, ReadFileBytes) {
+  test::ScratchDir dir;
+  const std::string bytes("a\0b\nc", 5);
+  write_file_atomically(dir.file("b"), bytes);
+  EXPECT_EQ(read_file_bytes(dir.file("b")), bytes);
+}
+
+}  // namespace
+}  // namespace riemesh
