@@ -6,16 +6,11 @@
 namespace riemesh::cli {
 namespace {
 
-std::string num(double v) {
+// Strings are built with += only: GCC 12 reports a false -Wrestrict on chains of operator+.
+void add_num(std::string& out, double v, const char* fmt = "%.17g") {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-std::string short_num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
+  std::snprintf(buf, sizeof buf, fmt, v);
+  out += buf;
 }
 
 /// Angle of a 2D direction in degrees, folded into (-90, 90] (a direction has no sign).
@@ -26,51 +21,65 @@ double angle_degrees(const Vec2& d) {
   return a;
 }
 
-template <class F>
-std::string join(int n, F f, const char* sep) {
-  std::string out;
-  for (int i = 0; i < n; ++i) out += (i ? sep : "") + f(i);
-  return out;
+/// Appends the numbers v[0..n) separated by sep.
+template <class V>
+void add_list(std::string& out, const V& v, int n, const char* sep, const char* fmt = "%.17g") {
+  for (int i = 0; i < n; ++i) {
+    if (i) out += sep;
+    add_num(out, v[i], fmt);
+  }
 }
 
 }  // namespace
 
 template <int D>
 std::string to_json(const MetricSummary<D>& s) {
-  constexpr int n = SymMat<D>::kSize;
-  std::string j = "{\"metric\": [" + join(n, [&](int k) { return num(s.metric.c[k]); }, ", ");
-  j += "], \"sizes\": [" + join(D, [&](int k) { return num(s.sizes[k]); }, ", ");
+  std::string j = "{\"metric\": [";
+  add_list(j, s.metric.c, SymMat<D>::kSize, ", ");
+  j += "], \"sizes\": [";
+  add_list(j, s.sizes, D, ", ");
   j += "], \"directions\": [";
-  if constexpr (D == 2) {
-    j += join(2, [&](int k) { return num(angle_degrees(s.directions.column(k))); }, ", ");
-  } else {
-    j += join(3, [&](int k) {
-      const Vec3 v = s.directions.column(k);
-      return "[" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + "]";
-    }, ", ");
+  for (int k = 0; k < D; ++k) {
+    if (k) j += ", ";
+    if constexpr (D == 2) {
+      add_num(j, angle_degrees(s.directions.column(k)));
+    } else {
+      j += "[";
+      add_list(j, s.directions.column(k), 3, ", ");
+      j += "]";
+    }
   }
-  j += "], \"anisotropy\": " + num(s.anisotropy) + ", \"det\": " + num(s.det) + "}";
+  j += "], \"anisotropy\": ";
+  add_num(j, s.anisotropy);
+  j += ", \"det\": ";
+  add_num(j, s.det);
+  j += "}";
   return j;
 }
 
 template <int D>
 std::string to_text(const MetricSummary<D>& s) {
-  constexpr int n = SymMat<D>::kSize;
-  std::string t = std::string("metric     ") + (D == 2 ? "(m11 m12 m22)" : "(m11 m12 m22 m13 m23 m33)");
-  t += ": " + join(n, [&](int k) { return num(s.metric.c[k]); }, " ") + "\n";
-  t += "sizes      : " + join(D, [&](int k) { return short_num(s.sizes[k]); }, " ") + "\n";
-  if constexpr (D == 2) {
-    t += "directions : " +
-         join(2, [&](int k) { return short_num(angle_degrees(s.directions.column(k))) + " deg"; },
-              ", ") + "\n";
-  } else {
-    t += "directions : " + join(3, [&](int k) {
-      const Vec3 v = s.directions.column(k);
-      return "(" + short_num(v[0]) + " " + short_num(v[1]) + " " + short_num(v[2]) + ")";
-    }, " ") + "\n";
+  std::string t = D == 2 ? "metric (m11 m12 m22)         : " : "metric (m11 m12 m22 m13 m23 m33) : ";
+  add_list(t, s.metric.c, SymMat<D>::kSize, " ");
+  t += "\nsizes      : ";
+  add_list(t, s.sizes, D, " ", "%.6g");
+  t += "\ndirections : ";
+  for (int k = 0; k < D; ++k) {
+    if (k) t += ", ";
+    if constexpr (D == 2) {
+      add_num(t, angle_degrees(s.directions.column(k)), "%.6g");
+      t += " deg";
+    } else {
+      t += "(";
+      add_list(t, s.directions.column(k), 3, " ", "%.6g");
+      t += ")";
+    }
   }
-  t += "anisotropy : " + short_num(s.anisotropy) + "\n";
-  t += "det        : " + short_num(s.det) + "\n";
+  t += "\nanisotropy : ";
+  add_num(t, s.anisotropy, "%.6g");
+  t += "\ndet        : ";
+  add_num(t, s.det, "%.6g");
+  t += "\n";
   return t;
 }
 
