@@ -15,9 +15,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // Usage errors exit 2 (help and version exit 0), as documented in the README.
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    // Help and version print and exit 0; usage errors are one line and exit 2.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "riemesh: error: %s (see -h)\n", e.what());
+    return 2;
   } catch (const riemesh::InputError& e) {
     std::fprintf(stderr, "riemesh: error: %s\n", e.what());
     return 2;
