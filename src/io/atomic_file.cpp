@@ -34,7 +34,12 @@ std::string read_file_bytes(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) throw InputError(path + ": cannot open for reading: " + errno_text());
   std::string bytes;
-  char buffer[1 << 16];
+  struct stat st {};
+  if (::fstat(::fileno(f), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+    bytes.resize(static_cast<std::size_t>(st.st_size));
+    bytes.resize(std::fread(bytes.data(), 1, bytes.size(), f));
+  }
+  char buffer[1 << 16];  // the rest, or all of a pipe or special file
   std::size_t n = 0;
   while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) bytes.append(buffer, n);
   const bool failed = std::ferror(f) != 0;
@@ -96,7 +101,8 @@ void AtomicFile::commit() {
     throw Error(path_ + ": close failed: " + errno_text());
   }
   if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
-    const std::string message = path_ + ": cannot rename temporary file into place: " + errno_text();
+    const std::string message =
+        path_ + ": cannot rename temporary file into place: " + errno_text();
     ::unlink(temp_path_.c_str());
     throw Error(message);
   }

@@ -80,26 +80,41 @@ Mesh read_medit_ascii(const std::string& path, std::string_view text,
   int code = 0;
   while (in.next_keyword(kw, code)) {
     switch (code) {
-      case kVertices: read_vertices(in, kw, m); break;
-      case kEdges: read_elements(in, kw, code, 2, m.edges, m.edge_ref, out); break;
-      case kTriangles: read_elements(in, kw, code, 3, m.triangles, m.tri_ref, out); break;
+      case kVertices:
+        read_vertices(in, kw, m);
+        break;
+      case kEdges:
+        read_elements(in, kw, code, 2, m.edges, m.edge_ref, out);
+        break;
+      case kTriangles:
+        read_elements(in, kw, code, 3, m.triangles, m.tri_ref, out);
+        break;
       case kTetrahedra:
         if (in.require_dim(kw) != 3) in.fail_here(kw, "tetrahedra in a 2D mesh");
         read_elements(in, kw, code, 4, m.tets, m.tet_ref, out);
         break;
-      case kCorners: case kRidges: case kRequiredVertices: case kRequiredEdges:
+      case kCorners:
+      case kRidges:
+      case kRequiredVertices:
+      case kRequiredEdges:
       case kRequiredTriangles:
         read_id_list(in, kw, code, out);
         break;
-      case kNormals: read_vectors(in, kw, m.normals); break;
-      case kTangents: read_vectors(in, kw, m.tangents); break;
+      case kNormals:
+        read_vectors(in, kw, m.normals);
+        break;
+      case kTangents:
+        read_vectors(in, kw, m.tangents);
+        break;
       case kNormalAtVertices:
         read_pairs(in, kw, code, m.normal_at_vertex, Bound::kNormal, out);
         break;
       case kTangentAtVertices:
         read_pairs(in, kw, code, m.tangent_at_vertex, Bound::kTangent, out);
         break;
-      default: in.skip_section(kw); break;
+      default:
+        in.skip_section(kw);
+        break;
     }
   }
   if (in.dim() == 0) fail(path, "Dimension", "missing (not a Medit mesh file?)");
@@ -140,7 +155,10 @@ void write_pairs(io_detail::TextOut& out, const char* kw, const std::vector<Id>&
   if (ids.empty()) return;
   out.text("\n").text(kw).text("\n").integer(static_cast<std::int64_t>(ids.size() / 2)).text("\n");
   for (std::size_t i = 0; i < ids.size(); i += 2)
-    out.integer(std::int64_t{ids[i]} + 1).text(" ").integer(std::int64_t{ids[i + 1]} + 1).text("\n");
+    out.integer(std::int64_t{ids[i]} + 1)
+        .text(" ")
+        .integer(std::int64_t{ids[i + 1]} + 1)
+        .text("\n");
 }
 
 }  // namespace

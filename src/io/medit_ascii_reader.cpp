@@ -38,7 +38,8 @@ std::int32_t AsciiMeditReader::ref(std::string_view keyword) {
 double AsciiMeditReader::real(std::string_view keyword) {
   const std::string_view t = token(keyword, "a real number");
   double value = 0;
-  if (!io_detail::parse_real(t, value)) fail_here(keyword, "expected a real number, found " + quote(t));
+  if (!io_detail::parse_real(t, value))
+    fail_here(keyword, "expected a real number, found " + quote(t));
   if (!std::isfinite(value)) fail_here(keyword, "non-finite value " + quote(t));
   return value;
 }
@@ -55,7 +56,8 @@ void AsciiMeditReader::check_room(std::string_view keyword, std::size_t n,
   // Each token takes at least one character and one separator.
   const std::size_t room = (in_.remaining() + 1) / 2;
   if (tokens_per_entry > 0 && n > room / tokens_per_entry)
-    fail_here(keyword, "count " + std::to_string(n) + " is larger than the rest of the file can hold");
+    fail_here(keyword,
+              "count " + std::to_string(n) + " is larger than the rest of the file can hold");
 }
 
 int AsciiMeditReader::require_dim(std::string_view keyword) {
@@ -111,7 +113,8 @@ bool AsciiMeditReader::next_keyword(std::string_view& name, int& code) {
       version_ = static_cast<int>(v);
     } else if (code == kDimension) {
       const std::int64_t d = integer(name);
-      if (d != 2 && d != 3) fail_here(name, "dimension " + std::to_string(d) + " (2 or 3 expected)");
+      if (d != 2 && d != 3)
+        fail_here(name, "dimension " + std::to_string(d) + " (2 or 3 expected)");
       dim_ = static_cast<int>(d);
     } else if (code == 0) {
       skip_section(name);

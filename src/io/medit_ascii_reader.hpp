@@ -13,7 +13,8 @@ namespace riemesh::medit_detail {
 
 class AsciiMeditReader {
  public:
-  AsciiMeditReader(const std::string& path, std::string_view text) : path_(path), text_(text), in_(text) {}
+  AsciiMeditReader(const std::string& path, std::string_view text)
+      : path_(path), text_(text), in_(text) {}
 
   /// Moves to the next data keyword (MeshVersionFormatted and Dimension are read on the way;
   /// unknown keywords are skipped). False at `End` or at the end of the file.

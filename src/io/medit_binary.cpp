@@ -16,13 +16,15 @@ Locator binary_locator(const std::string& path, std::size_t data_pos, std::size_
                        std::size_t int_size) {
   return [=](std::size_t entry, int column) {
     return path + ": byte " +
-           std::to_string(data_pos + entry * entry_bytes + static_cast<std::size_t>(column) * int_size);
+           std::to_string(data_pos + entry * entry_bytes +
+                          static_cast<std::size_t>(column) * int_size);
   };
 }
 
 class BinaryMeshReader {
  public:
-  BinaryMeshReader(const std::string& path, std::string_view bytes) : path_(path), in_(path, bytes) {}
+  BinaryMeshReader(const std::string& path, std::string_view bytes)
+      : path_(path), in_(path, bytes) {}
 
   Mesh read(const MeditReadOptions& options) {
     Mesh& m = out_.mesh;
@@ -30,22 +32,41 @@ class BinaryMeshReader {
     while (in_.next_keyword(code)) {
       bool read = true;
       switch (code) {
-        case kVertices: vertices(); break;
-        case kEdges: elements(2, m.edges, m.edge_ref); break;
-        case kTriangles: elements(3, m.triangles, m.tri_ref); break;
+        case kVertices:
+          vertices();
+          break;
+        case kEdges:
+          elements(2, m.edges, m.edge_ref);
+          break;
+        case kTriangles:
+          elements(3, m.triangles, m.tri_ref);
+          break;
         case kTetrahedra:
           if (in_.require_dim() != 3) in_.fail_at(in_.offset(), "tetrahedra in a 2D mesh");
           elements(4, m.tets, m.tet_ref);
           break;
-        case kCorners: case kRidges: case kRequiredVertices: case kRequiredEdges:
+        case kCorners:
+        case kRidges:
+        case kRequiredVertices:
+        case kRequiredEdges:
         case kRequiredTriangles:
           id_list();
           break;
-        case kNormals: vectors(m.normals); break;
-        case kTangents: vectors(m.tangents); break;
-        case kNormalAtVertices: pairs(m.normal_at_vertex, Bound::kNormal); break;
-        case kTangentAtVertices: pairs(m.tangent_at_vertex, Bound::kTangent); break;
-        default: read = false; break;
+        case kNormals:
+          vectors(m.normals);
+          break;
+        case kTangents:
+          vectors(m.tangents);
+          break;
+        case kNormalAtVertices:
+          pairs(m.normal_at_vertex, Bound::kNormal);
+          break;
+        case kTangentAtVertices:
+          pairs(m.tangent_at_vertex, Bound::kTangent);
+          break;
+        default:
+          read = false;
+          break;
       }
       in_.end_keyword(read);
     }
@@ -84,8 +105,8 @@ class BinaryMeshReader {
   }
 
   void id_list() {
-    static constexpr Bound kBound[] = {Bound::kVertex, Bound::kEdge, Bound::kVertex,
-                                       Bound::kEdge, Bound::kTriangle};
+    static constexpr Bound kBound[] = {Bound::kVertex, Bound::kEdge, Bound::kVertex, Bound::kEdge,
+                                       Bound::kTriangle};
     const int code = current_code();
     std::vector<Id>& ids = out_.tag_list(code);
     const std::size_t n = in_.count(isize());
@@ -162,15 +183,18 @@ Mesh read_medit_binary(const std::string& path, std::string_view bytes,
 void write_medit_binary(const Mesh& mesh, AtomicFile& file, const MeditWriteOptions& options) {
   const int dim = mesh.dim;
   const std::uint64_t nv = mesh.num_vertices();
-  const std::uint64_t estimate = 64 * 16 + nv * (8 * dim + 8) + 8 * (mesh.edges.size() +
-      mesh.triangles.size() + mesh.tets.size() + mesh.normal_at_vertex.size() +
-      mesh.tangent_at_vertex.size() + mesh.normals.size() + mesh.tangents.size()) +
+  const std::uint64_t estimate =
+      64 * 16 + nv * (8 * dim + 8) +
+      8 * (mesh.edges.size() + mesh.triangles.size() + mesh.tets.size() +
+           mesh.normal_at_vertex.size() + mesh.tangent_at_vertex.size() + mesh.normals.size() +
+           mesh.tangents.size()) +
       8 * (mesh.num_edges() + mesh.num_triangles() + mesh.num_tets() + nv);
   const std::uint64_t max_count =
       std::max({nv, std::uint64_t{mesh.num_edges()}, std::uint64_t{mesh.num_triangles()},
                 std::uint64_t{mesh.num_tets()}});
-  const int version = choose_meshb_version(options.binary_version, estimate, max_count, file.path());
-  MeshbWriter out(version, dim);
+  const int version =
+      choose_meshb_version(options.binary_version, estimate, max_count, file.path());
+  MeshbWriter out(version, dim, estimate);
   if (nv > 0) {
     out.keyword(kVertices, static_cast<std::int64_t>(nv));
     for (std::size_t v = 0; v < nv; ++v) {

@@ -43,25 +43,39 @@ struct SkippedKeyword {
 // BAMG keywords (SubDomainFromGeom has 4 ints there but 3 in libMeshb) are not listed: the
 // ASCII reader skips unlisted keywords by scanning to the next word.
 constexpr SkippedKeyword kSkipped[] = {
-    {"Quadrilaterals", 5},  {"Prisms", 7},       {"Hexahedra", 9},     {"Pyramids", 6},
-    {"EdgesP2", 4},         {"TrianglesP2", 7},  {"TetrahedraP2", 11}, {"QuadrilateralsQ2", 10},
+    {"Quadrilaterals", 5},
+    {"Prisms", 7},
+    {"Hexahedra", 9},
+    {"Pyramids", 6},
+    {"EdgesP2", 4},
+    {"TrianglesP2", 7},
+    {"TetrahedraP2", 11},
+    {"QuadrilateralsQ2", 10},
     {"RequiredQuadrilaterals", 1},
 };
 
 const char* bound_name(Bound b) {
   switch (b) {
-    case Bound::kVertex: return "vertex";
-    case Bound::kEdge: return "edge";
-    case Bound::kTriangle: return "triangle";
-    case Bound::kNormal: return "normal";
-    case Bound::kTangent: return "tangent";
+    case Bound::kVertex:
+      return "vertex";
+    case Bound::kEdge:
+      return "edge";
+    case Bound::kTriangle:
+      return "triangle";
+    case Bound::kNormal:
+      return "normal";
+    case Bound::kTangent:
+      return "tangent";
   }
   return "";
 }
 
 const char* bound_plural(Bound b) {
-  return b == Bound::kVertex ? "vertices" : b == Bound::kEdge ? "edges"
-       : b == Bound::kTriangle ? "triangles" : b == Bound::kNormal ? "normals" : "tangents";
+  return b == Bound::kVertex     ? "vertices"
+         : b == Bound::kEdge     ? "edges"
+         : b == Bound::kTriangle ? "triangles"
+         : b == Bound::kNormal   ? "normals"
+                                 : "tangents";
 }
 
 }  // namespace
@@ -102,11 +116,16 @@ void fail(const std::string& where, std::string_view keyword, const std::string&
 
 std::vector<Id>& MeshAssembler::tag_list(int code) {
   switch (code) {
-    case kCorners: return corners;
-    case kRequiredVertices: return required_vertices;
-    case kRidges: return ridges;
-    case kRequiredEdges: return required_edges;
-    default: return required_triangles;
+    case kCorners:
+      return corners;
+    case kRequiredVertices:
+      return required_vertices;
+    case kRidges:
+      return ridges;
+    case kRequiredEdges:
+      return required_edges;
+    default:
+      return required_triangles;
   }
 }
 
@@ -186,7 +205,8 @@ void check_writable(const Mesh& mesh, const std::string& path) {
   auto in_range = [&](const std::vector<Id>& ids, std::size_t stride, std::size_t column,
                       std::size_t n, const char* name) {
     for (std::size_t i = column; i < ids.size(); i += stride)
-      if (ids[i] < 0 || static_cast<std::size_t>(ids[i]) >= n) bad(std::string(name) + " id out of range");
+      if (ids[i] < 0 || static_cast<std::size_t>(ids[i]) >= n)
+        bad(std::string(name) + " id out of range");
   };
   in_range(mesh.edges, 1, 0, nv, "edge vertex");
   in_range(mesh.triangles, 1, 0, nv, "triangle vertex");

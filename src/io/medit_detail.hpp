@@ -19,8 +19,10 @@ class AtomicFile;
 namespace riemesh::medit_detail {
 
 // The format-specific readers and writers behind read_medit / write_medit.
-Mesh read_medit_ascii(const std::string& path, std::string_view text, const MeditReadOptions& options);
-Mesh read_medit_binary(const std::string& path, std::string_view bytes, const MeditReadOptions& options);
+Mesh read_medit_ascii(const std::string& path, std::string_view text,
+                      const MeditReadOptions& options);
+Mesh read_medit_binary(const std::string& path, std::string_view bytes,
+                       const MeditReadOptions& options);
 void write_medit_ascii(const Mesh& mesh, AtomicFile& file, const MeditWriteOptions& options);
 void write_medit_binary(const Mesh& mesh, AtomicFile& file, const MeditWriteOptions& options);
 
@@ -38,10 +40,10 @@ enum Code : int {
   kRequiredVertices = 15,
   kRequiredEdges = 16,
   kRequiredTriangles = 17,
-  kNormalAtVertices = 20,  // "ii" (vertex, normal)
-  kEnd = 54,               // no count, no data
-  kTangents = 59,          // "dr"
-  kNormals = 60,           // "dr"
+  kNormalAtVertices = 20,   // "ii" (vertex, normal)
+  kEnd = 54,                // no count, no data
+  kTangents = 59,           // "dr"
+  kNormals = 60,            // "dr"
   kTangentAtVertices = 61,  // "ii" (vertex, tangent)
   kSolAtVertices = 62,      // count, #types, types, then reals
 };
@@ -73,8 +75,8 @@ struct IdBlock {
   std::vector<Id>* ids = nullptr;
   std::size_t begin = 0;  // first id of the section in *ids
   std::size_t end = 0;
-  int stride = 1;                   // ids per entry in *ids
-  std::array<Bound, 4> bounds{};    // per column
+  int stride = 1;                 // ids per entry in *ids
+  std::array<Bound, 4> bounds{};  // per column
   Locator locate;
 };
 

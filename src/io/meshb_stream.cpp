@@ -48,12 +48,14 @@ bool MeshbReader::next_keyword(int& code) {
     // Positions only go forward: this also rules out loops in a corrupt file.
     if (next_ != 0 && (next_ <= keyword_pos_ || next_ > bytes_.size()))
       fail_at(keyword_pos_ + 4, "next keyword position " + std::to_string(next_) +
-                                    " outside the file (" + std::to_string(bytes_.size()) + " bytes)");
+                                    " outside the file (" + std::to_string(bytes_.size()) +
+                                    " bytes)");
     if (code_ == kEnd) return false;
     if (code_ == kDimension) {
       need(4);
       const std::int32_t d = raw<std::int32_t>();
-      if (d != 2 && d != 3) fail_at(pos_ - 4, "dimension " + std::to_string(d) + " (2 or 3 expected)");
+      if (d != 2 && d != 3)
+        fail_at(pos_ - 4, "dimension " + std::to_string(d) + " (2 or 3 expected)");
       dim_ = d;
       end_keyword(true);
       continue;
@@ -131,7 +133,8 @@ double MeshbReader::real() {
   return v;
 }
 
-MeshbWriter::MeshbWriter(int version, int dim) : version_(version) {
+MeshbWriter::MeshbWriter(int version, int dim, std::size_t expected_bytes) : version_(version) {
+  bytes_.reserve(expected_bytes);
   put(std::int32_t{1});
   put(std::int32_t{version});
   keyword(kDimension, -1);
@@ -139,7 +142,10 @@ MeshbWriter::MeshbWriter(int version, int dim) : version_(version) {
 }
 
 void MeshbWriter::put_position(std::uint64_t value) {
-  if (version_ >= 3) put(value); else put(static_cast<std::uint32_t>(value));
+  if (version_ >= 3)
+    put(value);
+  else
+    put(static_cast<std::uint32_t>(value));
 }
 
 void MeshbWriter::keyword(int code, std::int64_t count) {

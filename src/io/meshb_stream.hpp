@@ -78,15 +78,21 @@ class MeshbReader {
 
 class MeshbWriter {
  public:
-  MeshbWriter(int version, int dim);
+  MeshbWriter(int version, int dim, std::size_t expected_bytes = 0);
   /// Starts a keyword; count < 0 for keywords without a count.
   void keyword(int code, std::int64_t count);
   void i32(std::int32_t value) { put(value); }
   void integer(std::int64_t value) {
-    if (version_ >= 4) put(value); else put(static_cast<std::int32_t>(value));
+    if (version_ >= 4)
+      put(value);
+    else
+      put(static_cast<std::int32_t>(value));
   }
   void real(double value) {
-    if (version_ == 1) put(static_cast<float>(value)); else put(value);
+    if (version_ == 1)
+      put(static_cast<float>(value));
+    else
+      put(value);
   }
   /// Writes End and returns the file contents.
   const std::string& finish();

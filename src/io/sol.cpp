@@ -78,7 +78,8 @@ std::vector<Field> read_ascii(const std::string& path, std::string_view text,
     const std::size_t n = in.count(kw, 1);
     if (n != num_vertices) in.fail_here(kw, vertex_mismatch(n, num_vertices));
     const SolSection s = read_types(
-        file_dim, [&] { return in.integer(kw); }, [&](const std::string& what) { in.fail_here(kw, what); });
+        file_dim, [&] { return in.integer(kw); },
+        [&](const std::string& what) { in.fail_here(kw, what); });
     in.check_room(kw, n, static_cast<std::size_t>(s.components));
     fill_fields(s, n, file_dim, fields, [&] { return in.real(kw); });
   }
@@ -124,7 +125,8 @@ std::vector<Field> read_sol(const std::string& path, std::size_t num_vertices, i
   int file_dim = 0;
   std::vector<Field> fields = binary ? read_binary(path, bytes, num_vertices, file_dim)
                                      : read_ascii(path, bytes, num_vertices, file_dim);
-  if (fields.empty()) medit_detail::fail(path, "SolAtVertices", "no solution at vertices in the file");
+  if (fields.empty())
+    medit_detail::fail(path, "SolAtVertices", "no solution at vertices in the file");
   for (const Field& f : fields) {
     // Scalars do not depend on the dimension: a Dimension 3 .sol of a planar mesh is usable.
     if (f.kind != FieldKind::kScalar && file_dim != dim)
@@ -145,8 +147,11 @@ std::vector<Field> read_sol(const std::string& path, const Mesh& mesh) {
 namespace {
 
 // Vertex count shared by all fields; throws Error if they disagree.
-std::size_t checked_vertex_count(const std::vector<Field>& fields, int dim, const std::string& path) {
-  auto bad = [&](const std::string& what) { throw Error(path + ": cannot write solution: " + what); };
+std::size_t checked_vertex_count(const std::vector<Field>& fields, int dim,
+                                 const std::string& path) {
+  auto bad = [&](const std::string& what) {
+    throw Error(path + ": cannot write solution: " + what);
+  };
   if (dim != 2 && dim != 3) bad("dimension " + std::to_string(dim));
   if (fields.empty()) bad("no field");
   std::size_t n = 0;
@@ -180,9 +185,10 @@ void write_sol(const std::string& path, const std::vector<Field>& fields, int di
   }
   AtomicFile file(path, options.sync);
   if (binary) {
+    const std::uint64_t estimate = 1024 + n * per_vertex * 8;
     const int version =
-        medit_detail::choose_meshb_version(options.binary_version, 1024 + n * per_vertex * 8, n, path);
-    medit_detail::MeshbWriter out(version, dim);
+        medit_detail::choose_meshb_version(options.binary_version, estimate, n, path);
+    medit_detail::MeshbWriter out(version, dim, estimate);
     out.keyword(kSolAtVertices, static_cast<std::int64_t>(n));
     out.i32(static_cast<std::int32_t>(fields.size()));
     for (const Field& f : fields) out.i32(static_cast<std::int32_t>(f.kind));
@@ -193,13 +199,16 @@ void write_sol(const std::string& path, const std::vector<Field>& fields, int di
   } else {
     io_detail::TextOut out(file);
     out.text("MeshVersionFormatted 2\n\nDimension ").integer(dim).text("\n\nSolAtVertices\n");
-    out.integer(static_cast<std::int64_t>(n)).text("\n").integer(static_cast<std::int64_t>(fields.size()));
+    out.integer(static_cast<std::int64_t>(n))
+        .text("\n")
+        .integer(static_cast<std::int64_t>(fields.size()));
     for (const Field& f : fields) out.text(" ").integer(static_cast<int>(f.kind));
     out.text("\n");
     for (std::size_t i = 0; i < n; ++i) {
       for (std::size_t k = 0; k < fields.size(); ++k)
         for (std::size_t j = 0; j < comps[k]; ++j)
-          out.real(fields[k].values[i * comps[k] + j]).text(k + 1 == fields.size() && j + 1 == comps[k] ? "\n" : " ");
+          out.real(fields[k].values[i * comps[k] + j])
+              .text(k + 1 == fields.size() && j + 1 == comps[k] ? "\n" : " ");
     }
     out.text("\nEnd\n");
     out.flush();

@@ -118,8 +118,8 @@ inline Mesh cube_volume() {
   Mesh m;
   m.dim = 3;
   for (int v = 0; v < 8; ++v) {
-    const int x = (v == 1 || v == 2 || v == 5 || v == 6), y = (v == 2 || v == 3 || v == 6 || v == 7),
-              z = v >= 4;
+    const int x = (v == 1 || v == 2 || v == 5 || v == 6),
+              y = (v == 2 || v == 3 || v == 6 || v == 7), z = v >= 4;
     m.coords.insert(m.coords.end(), {1.0 * x, 1.0 * y, 1.0 * z});
     m.vert_ref.push_back(v);
   }

@@ -21,17 +21,29 @@ class MeshbFixture {
     patch_next(bytes_.size());
     put<std::int32_t>(code);
     slot_ = bytes_.size();
-    if (version_ >= 3) put<std::int64_t>(0); else put<std::int32_t>(0);
+    if (version_ >= 3)
+      put<std::int64_t>(0);
+    else
+      put<std::int32_t>(0);
     if (count >= 0) integer(count);
     return *this;
   }
   MeshbFixture& integer(std::int64_t v) {
-    if (version_ >= 4) put<std::int64_t>(v); else put<std::int32_t>(static_cast<std::int32_t>(v));
+    if (version_ >= 4)
+      put<std::int64_t>(v);
+    else
+      put<std::int32_t>(static_cast<std::int32_t>(v));
     return *this;
   }
-  MeshbFixture& i32(std::int32_t v) { put(v); return *this; }
+  MeshbFixture& i32(std::int32_t v) {
+    put(v);
+    return *this;
+  }
   MeshbFixture& real(double v) {
-    if (version_ == 1) put<float>(static_cast<float>(v)); else put<double>(v);
+    if (version_ == 1)
+      put<float>(static_cast<float>(v));
+    else
+      put<double>(v);
     return *this;
   }
   std::string finish() {
@@ -43,7 +55,9 @@ class MeshbFixture {
 
  private:
   template <class T>
-  void put(T v) { put_at(bytes_.size(), v); }
+  void put(T v) {
+    put_at(bytes_.size(), v);
+  }
   template <class T>
   void put_at(std::size_t at, T v) {
     unsigned char b[sizeof(T)];
@@ -55,8 +69,10 @@ class MeshbFixture {
   }
   void patch_next(std::size_t here) {
     if (slot_ == 0) return;
-    if (version_ >= 3) put_at<std::int64_t>(slot_, static_cast<std::int64_t>(here));
-    else put_at<std::int32_t>(slot_, static_cast<std::int32_t>(here));
+    if (version_ >= 3)
+      put_at<std::int64_t>(slot_, static_cast<std::int64_t>(here));
+    else
+      put_at<std::int32_t>(slot_, static_cast<std::int32_t>(here));
   }
 
   int version_;

@@ -1,10 +1,9 @@
 // Atomic writes: the target appears complete or not at all, and no temporary is left behind.
-#include "io/atomic_file.hpp"
-
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io_test_util.hpp"
 
 namespace riemesh {
@@ -46,7 +45,8 @@ TEST(AtomicFile, ErrorsNameThePath) {
     write_file_atomically("/nonexistent-dir/x.mesh", "x");
     ADD_FAILURE();
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("/nonexistent-dir/x.mesh: cannot create", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind("/nonexistent-dir/x.mesh: cannot create", 0), 0u)
+        << e.what();
   }
   EXPECT_THROW(read_file_bytes("/nonexistent-dir/x.mesh"), InputError);
 }

@@ -1,9 +1,8 @@
 // Medit .mesh / .meshb: round trips of meshes built in code, and the ASCII dialect features.
-#include "io/medit.hpp"
-
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "io/medit.hpp"
 #include "io_test_util.hpp"
 
 namespace riemesh {
@@ -90,7 +89,8 @@ TEST(Medit, AsciiRealsAreExact) {
   // Shortest round-trip output: awkward doubles come back bit for bit.
   Mesh m;
   m.dim = 3;
-  m.coords = {0.1, 1.0 / 3.0, -2.5e-310, 1e300, -0.0, 6.02214076e23, 5e-324, 1.7976931348623157e308, 1};
+  m.coords = {0.1, 1.0 / 3.0, -2.5e-310, 1e300, -0.0, 6.02214076e23, 5e-324, 1.7976931348623157e308,
+              1};
   ScratchDir dir;
   write_medit(m, dir.file("reals.mesh"));
   const Mesh back = read_medit(dir.file("reals.mesh"));
@@ -154,8 +154,9 @@ TEST(Medit, PlanarAsTwoD) {
   keep.planar_as_2d = false;
   EXPECT_EQ(read_medit(dir.file("flat.mesh"), keep).dim, 3);
 
-  test::write_text(dir.file("bent.mesh"),
-                   "Dimension 3\nVertices 3\n0 0 0 1\n1 0 0 2\n0 1 1e-300 3\nTriangles 1\n1 2 3 4\n");
+  test::write_text(
+      dir.file("bent.mesh"),
+      "Dimension 3\nVertices 3\n0 0 0 1\n1 0 0 2\n0 1 1e-300 3\nTriangles 1\n1 2 3 4\n");
   EXPECT_EQ(read_medit(dir.file("bent.mesh")).dim, 3);
 }
 

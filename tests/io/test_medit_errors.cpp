@@ -12,7 +12,7 @@ namespace riemesh {
 namespace {
 
 struct BadInput {
-  bool head;            // prefixed with kHead
+  bool head;  // prefixed with kHead
   const char* text;
   const char* message;  // expected to start the error, after "<dir>/"; null: no error
 };
@@ -29,17 +29,23 @@ const BadInput kBadAscii[] = {
     {false, "@Dimension 2\n", "bad.mesh:1: expected a keyword, found '@Dimension'"},
     // Lines below count from 3 (after kHead).
     {true, "Vertices\n-1\n", "bad.mesh:4: Vertices: negative count -1"},
-    {true, "Vertices\n1000000000\n0 0 1\n", "bad.mesh:4: Vertices: count 1000000000 is larger than"},
+    {true, "Vertices\n1000000000\n0 0 1\n",
+     "bad.mesh:4: Vertices: count 1000000000 is larger than"},
     {true, "Vertices\n2\n0 0 1\n", "bad.mesh:4: Vertices: count 2 is larger than the rest"},
-    {true, "Vertices\n2\n0 0 1\n# cut short here\n", "bad.mesh:5: Vertices: unexpected end of file, expected a real"},
+    {true, "Vertices\n2\n0 0 1\n# cut short here\n",
+     "bad.mesh:5: Vertices: unexpected end of file, expected a real"},
     {true, "Vertices\n2\n0 0 1\n1 1 2\nEnd", nullptr},  // fine
     {true, "Vertices\n2\n0 0 1\n1 nan 2\n", "bad.mesh:6: Vertices: non-finite value 'nan'"},
     {true, "Vertices\n2\n0 0 1\n1 inf 2\n", "bad.mesh:6: Vertices: non-finite value 'inf'"},
     {true, "Vertices\n2\n0 0 1\n1 1e999 2\n", "bad.mesh:6: Vertices: non-finite value '1e999'"},
-    {true, "Vertices\n2\n0 0 1\n1 0x1 2\n", "bad.mesh:6: Vertices: expected a real number, found '0x1'"},
-    {true, "Vertices\n2\n0 0 1\n1 1 2.5\n", "bad.mesh:6: Vertices: expected an integer, found '2.5'"},
-    {true, "Vertices\n1\n0 0 99999999999\n", "bad.mesh:5: Vertices: reference 99999999999 does not fit"},
-    {true, "Vertices\n1\n0 0 1\n2 2 2\n", "bad.mesh:6: Vertices: expected a keyword after the Vertices section, found '2'"},
+    {true, "Vertices\n2\n0 0 1\n1 0x1 2\n",
+     "bad.mesh:6: Vertices: expected a real number, found '0x1'"},
+    {true, "Vertices\n2\n0 0 1\n1 1 2.5\n",
+     "bad.mesh:6: Vertices: expected an integer, found '2.5'"},
+    {true, "Vertices\n1\n0 0 99999999999\n",
+     "bad.mesh:5: Vertices: reference 99999999999 does not fit"},
+    {true, "Vertices\n1\n0 0 1\n2 2 2\n",
+     "bad.mesh:6: Vertices: expected a keyword after the Vertices section, found '2'"},
     {true, "Vertices 3\n0 0 0\n1 0 0\n0 1 0\nTriangles\n1\n1 2 0 1\n",
      "bad.mesh:9: Triangles: id 0 out of range (ids start at 1)"},
     {true, "Vertices 3\n0 0 0\n1 0 0\n0 1 0\nTriangles\n2\n1 2 3 1\n\n1 2\n4 1\n",
@@ -117,8 +123,9 @@ TEST(MeditErrors, Binary) {
   EXPECT_EQ(binary_error(two.bytes() + "\x36"),
             "bad.meshb: byte 72: file truncated (8 bytes needed, 1 left)");
   // A NaN coordinate.
-  EXPECT_EQ(binary_error(MeshbFixture(2, false, 2).keyword(4, 1).real(0).real(NAN).integer(1).finish()),
-            "bad.meshb: byte 40: Vertices: non-finite value");
+  EXPECT_EQ(
+      binary_error(MeshbFixture(2, false, 2).keyword(4, 1).real(0).real(NAN).integer(1).finish()),
+      "bad.meshb: byte 40: Vertices: non-finite value");
   // A triangle naming vertex 3 of 2, then vertex 0.
   MeshbFixture tri(3, true, 2);
   tri.keyword(4, 2).real(0).real(0).integer(1).real(1).real(0).integer(1);
@@ -127,14 +134,16 @@ TEST(MeditErrors, Binary) {
             "bad.meshb: byte 104: Triangles: vertex id 3 out of range (the file has 2 vertices)");
   MeshbFixture zero(2, false, 2);
   zero.keyword(4, 1).real(0).real(0).integer(1).keyword(13, 1).integer(0);
-  EXPECT_EQ(binary_error(zero.finish()), "bad.meshb: byte 64: Corners: id 0 out of range (ids start at 1)");
+  EXPECT_EQ(binary_error(zero.finish()),
+            "bad.meshb: byte 64: Corners: id 0 out of range (ids start at 1)");
   // Negative count.
   EXPECT_EQ(binary_error(MeshbFixture(4, false, 3).keyword(6).integer(-3).finish()),
             "bad.meshb: byte 36: Triangles: negative count -3");
   // A next-keyword position pointing backwards (would loop) or past the end.
   std::string loop = MeshbFixture(2, false, 3).keyword(999, 0).finish();
   loop[24] = 8;
-  EXPECT_EQ(binary_error(loop), "bad.meshb: byte 24: keyword 999: next keyword position 8 outside the file (40 bytes)");
+  EXPECT_EQ(binary_error(loop),
+            "bad.meshb: byte 24: keyword 999: next keyword position 8 outside the file (40 bytes)");
 }
 
 TEST(MeditErrors, FileNames) {

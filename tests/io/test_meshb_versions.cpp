@@ -27,20 +27,20 @@ std::string fixture(int version, bool swapped) {
   }
   f.keyword(7, 1).integer(1).integer(2).integer(3).integer(4).integer(0);  // Quadrilaterals
   f.keyword(5, 2).integer(1).integer(2).integer(3).integer(3).integer(4).integer(-1);  // Edges
-  f.keyword(6, 2);  // Triangles
+  f.keyword(6, 2);                                                                     // Triangles
   for (int t : {1, 3, 2, 7, 1, 2, 4, 8}) f.integer(t);
   f.keyword(8, 2);  // Tetrahedra
   for (int t : {1, 2, 3, 4, 2, 1, 2, 5, 3, 5}) f.integer(t);
-  f.keyword(13, 2).integer(1).integer(4);  // Corners
-  f.keyword(14, 1).integer(2);             // Ridges
-  f.keyword(15, 1).integer(5);             // RequiredVertices
-  f.keyword(16, 2).integer(1).integer(2);  // RequiredEdges
-  f.keyword(17, 1).integer(2);             // RequiredTriangles
+  f.keyword(13, 2).integer(1).integer(4);       // Corners
+  f.keyword(14, 1).integer(2);                  // Ridges
+  f.keyword(15, 1).integer(5);                  // RequiredVertices
+  f.keyword(16, 2).integer(1).integer(2);       // RequiredEdges
+  f.keyword(17, 1).integer(2);                  // RequiredTriangles
   f.keyword(999, 2).integer(123).integer(456);  // not a libMeshb keyword: jumped over
   f.keyword(60, 2).real(0).real(0).real(-1).real(0.5).real(0.25).real(0.75);  // Normals
-  f.keyword(20, 2).integer(1).integer(1).integer(5).integer(2);  // NormalAtVertices
-  f.keyword(59, 1).real(1).real(0).real(0);                      // Tangents
-  f.keyword(61, 1).integer(2).integer(1);                        // TangentAtVertices
+  f.keyword(20, 2).integer(1).integer(1).integer(5).integer(2);               // NormalAtVertices
+  f.keyword(59, 1).real(1).real(0).real(0);                                   // Tangents
+  f.keyword(61, 1).integer(2).integer(1);                                     // TangentAtVertices
   return f.finish();
 }
 
@@ -120,7 +120,8 @@ TEST(MeshbVersions, TruncatedAndCorruptedFilesFailCleanly) {
   };
   for (int version = 1; version <= 4; ++version) {
     const std::string good = fixture(version, version % 2 == 0);
-    for (std::size_t n = 0; n < good.size(); ++n) expect_mesh_or_input_error(good.substr(0, n), read);
+    for (std::size_t n = 0; n < good.size(); ++n)
+      expect_mesh_or_input_error(good.substr(0, n), read);
     std::mt19937 gen(version);
     for (std::size_t i = 0; i < good.size(); ++i) {
       const unsigned values[] = {0x00, 0x01, 0x7f, 0x80, 0xff, static_cast<unsigned>(gen() & 0xff)};
@@ -153,7 +154,11 @@ TEST(MeshbVersions, AsciiTruncationsAndCorruptionsFailCleanly) {
 TEST(MeshbVersions, HugeCountsAreRejectedBeforeAllocating) {
   for (int version = 1; version <= 4; ++version) {
     MeshbFixture f(version, false, 3);
-    f.keyword(4, version == 4 ? (std::int64_t{1} << 60) : 2147483647).real(0).real(0).real(0).integer(1);
+    f.keyword(4, version == 4 ? (std::int64_t{1} << 60) : 2147483647)
+        .real(0)
+        .real(0)
+        .real(0)
+        .integer(1);
     try {
       medit_detail::read_medit_binary("big.meshb", f.finish(), {});
       ADD_FAILURE() << "no error";

@@ -21,7 +21,8 @@ std::string meshio_summary(const std::string& path) {
   const std::string command =
       "/usr/bin/python3 -c 'import sys, meshio; m = meshio.read(sys.argv[1]); "
       "print(len(m.points), m.points.shape[1], repr(float(m.points.sum())), "
-      "\" \".join(\"%s:%d\" % (c.type, len(c.data)) for c in m.cells))' '" + path + "' 2>/dev/null";
+      "\" \".join(\"%s:%d\" % (c.type, len(c.data)) for c in m.cells))' '" +
+      path + "' 2>/dev/null";
   std::FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return "popen failed";
   std::string out;

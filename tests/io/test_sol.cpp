@@ -1,9 +1,8 @@
 // Medit .sol / .solb: several fields per file, types 1-3, versions, errors.
-#include "io/sol.hpp"
-
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "io/sol.hpp"
 #include "io_test_util.hpp"
 #include "meshb_fixture.hpp"
 
@@ -73,7 +72,8 @@ TEST(Sol, BinaryFixturesOfEveryVersionAndByteOrder) {
 TEST(Sol, ScalarFieldsOfAnotherDimensionAreAccepted) {
   // A Dimension 3 .sol of a mesh read as planar: scalars are usable, vectors are not.
   test::ScratchDir dir;
-  test::write_text(dir.file("s.sol"), "MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n2\n1 1\n5\n6\nEnd\n");
+  test::write_text(dir.file("s.sol"),
+                   "MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n2\n1 1\n5\n6\nEnd\n");
   EXPECT_EQ(read_sol(dir.file("s.sol"), 2, 2)[0].values, (std::vector<double>{5, 6}));
   test::write_text(dir.file("v.sol"), "Dimension 3\nSolAtVertices 1 1 2 1 2 3\n");
   EXPECT_THROW(read_sol(dir.file("v.sol"), 1, 2), InputError);
@@ -85,12 +85,17 @@ struct BadSol {
 };
 
 const BadSol kBadSol[] = {
-    {"Dimension 2\nSolAtVertices\n3\n1 1\n1\n2\n3\n", "s.sol:3: SolAtVertices: 3 values for a mesh of 2 vertices"},
+    {"Dimension 2\nSolAtVertices\n3\n1 1\n1\n2\n3\n",
+     "s.sol:3: SolAtVertices: 3 values for a mesh of 2 vertices"},
     {"Dimension 2\nSolAtVertices\n2\n1 4\n1 2 3 4\n5 6 7 8\n",
-     "s.sol:4: SolAtVertices: unsupported solution type 4 (1 scalar, 2 vector, 3 symmetric tensor)"},
-    {"Dimension 2\nSolAtVertices\n2\n0\n", "s.sol:4: SolAtVertices: bad number of solution types 0"},
-    {"Dimension 2\nSolAtVertices\n2\n1 3\n1 2 3\n", "s.sol:4: SolAtVertices: count 2 is larger than"},
-    {"Dimension 2\nSolAtVertices\n2\n1 1\n1\nnan\n", "s.sol:6: SolAtVertices: non-finite value 'nan'"},
+     "s.sol:4: SolAtVertices: unsupported solution type 4 (1 scalar, 2 vector, 3 symmetric "
+     "tensor)"},
+    {"Dimension 2\nSolAtVertices\n2\n0\n",
+     "s.sol:4: SolAtVertices: bad number of solution types 0"},
+    {"Dimension 2\nSolAtVertices\n2\n1 3\n1 2 3\n",
+     "s.sol:4: SolAtVertices: count 2 is larger than"},
+    {"Dimension 2\nSolAtVertices\n2\n1 1\n1\nnan\n",
+     "s.sol:6: SolAtVertices: non-finite value 'nan'"},
     {"SolAtVertices\n2\n1 1\n1\n2\n", "s.sol:1: SolAtVertices: no Dimension keyword"},
     {"Dimension 2\nEnd\n", "s.sol: SolAtVertices: no solution at vertices in the file"},
 };
@@ -115,7 +120,9 @@ TEST(Sol, Errors) {
     read_sol(dir.file("s.solb"), 1000000, 2);
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(prefix + "s.solb: byte 28: SolAtVertices: count 1000000 needs more bytes", 0), 0u)
+    EXPECT_EQ(std::string(e.what()).rfind(
+                  prefix + "s.solb: byte 28: SolAtVertices: count 1000000 needs more bytes", 0),
+              0u)
         << e.what();
   }
 }
