@@ -52,11 +52,11 @@ void build_vert2elem(Adjacency& adj, const std::vector<Id>& s, int k) {
 
 /// A face met at its smallest vertex a, chained with the other faces sharing its second vertex.
 struct LocalFace {
-  Id c;      // third vertex (kNoId for an edge of a triangle)
-  Id face;   // element * verts_per_simplex + local face
-  Id next;   // next entry with the same second vertex, or -1
-  Id group;  // first entry with the same vertices
-  int count; // on a group's first entry: how many entries share its vertices
+  Id c;       // third vertex (kNoId for an edge of a triangle)
+  Id face;    // element * verts_per_simplex + local face
+  Id next;    // next entry with the same second vertex, or -1
+  Id group;   // first entry with the same vertices
+  int count;  // on a group's first entry: how many entries share its vertices
 };
 
 /// Neighbours across faces. Each face is handled at its smallest vertex a: the faces of the
@@ -205,8 +205,10 @@ Id find_edge(const Adjacency& adj, Id a, Id b) {
   while (lo < hi) {  // first edge >= (a, b)
     const std::size_t mid = (lo + hi) / 2;
     const Id ma = adj.edges[2 * mid], mb = adj.edges[2 * mid + 1];
-    if (ma < a || (ma == a && mb < b)) lo = mid + 1;
-    else hi = mid;
+    if (ma < a || (ma == a && mb < b))
+      lo = mid + 1;
+    else
+      hi = mid;
   }
   if (lo < adj.num_edges() && adj.edges[2 * lo] == a && adj.edges[2 * lo + 1] == b)
     return static_cast<Id>(lo);
@@ -242,8 +244,10 @@ Shell shell(const Adjacency& adj, const std::vector<Id>& simplices, Id a, Id b) 
   for (Id e : candidates) {
     int c, d;
     other_two(&simplices[4 * e], a, b, c, d);
-    if (adj.elem2elem[4 * e + c] == kNoId) start = e, cross = d;
-    else if (adj.elem2elem[4 * e + d] == kNoId) start = e, cross = c;
+    if (adj.elem2elem[4 * e + c] == kNoId)
+      start = e, cross = d;
+    else if (adj.elem2elem[4 * e + d] == kNoId)
+      start = e, cross = c;
     if (cross >= 0) break;
   }
   if (cross < 0) {

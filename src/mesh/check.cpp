@@ -35,8 +35,8 @@ void check_sizes(const Mesh& m, Collector& col) {
   expect(m.tri_tag.size(), m.num_triangles(), EntityKind::kTriangle, true);
   expect(m.tet_ref.size(), m.num_tets(), EntityKind::kTet, false);
   for (const Field& f : m.fields)
-    expect(f.values.size(), m.num_vertices() * field_components(f.kind, m.dim),
-           EntityKind::kVertex, false);
+    expect(f.values.size(), m.num_vertices() * field_components(f.kind, m.dim), EntityKind::kVertex,
+           false);
 }
 
 /// Ids in range and no repeated vertex, for one connectivity array; false if an id is bad.
@@ -170,21 +170,36 @@ std::vector<Id> find_duplicates(const Elements& el, Collector& col) {
 
 const char* to_string(CheckCategory category) {
   switch (category) {
-    case CheckCategory::kArraySize: return "array size mismatch";
-    case CheckCategory::kIdOutOfRange: return "vertex id out of range";
-    case CheckCategory::kNonFiniteCoordinate: return "non-finite coordinate";
-    case CheckCategory::kRepeatedVertex: return "repeated vertex in an entity";
-    case CheckCategory::kUnusedVertex: return "unused vertex";
-    case CheckCategory::kInvertedElement: return "inverted element";
-    case CheckCategory::kZeroMeasureElement: return "zero-measure element";
-    case CheckCategory::kDuplicateElement: return "duplicate element";
-    case CheckCategory::kNonManifoldFace: return "non-manifold face";
-    case CheckCategory::kInconsistentOrientation: return "inconsistent orientation";
-    case CheckCategory::kOpenBoundary: return "open boundary";
-    case CheckCategory::kNonManifoldBoundary: return "non-manifold boundary";
-    case CheckCategory::kMissingBoundary: return "boundary entity not listed";
-    case CheckCategory::kOrphanEntity: return "listed entity not in the elements";
-    case CheckCategory::kDuplicateBoundaryEntity: return "entity listed twice";
+    case CheckCategory::kArraySize:
+      return "array size mismatch";
+    case CheckCategory::kIdOutOfRange:
+      return "vertex id out of range";
+    case CheckCategory::kNonFiniteCoordinate:
+      return "non-finite coordinate";
+    case CheckCategory::kRepeatedVertex:
+      return "repeated vertex in an entity";
+    case CheckCategory::kUnusedVertex:
+      return "unused vertex";
+    case CheckCategory::kInvertedElement:
+      return "inverted element";
+    case CheckCategory::kZeroMeasureElement:
+      return "zero-measure element";
+    case CheckCategory::kDuplicateElement:
+      return "duplicate element";
+    case CheckCategory::kNonManifoldFace:
+      return "non-manifold face";
+    case CheckCategory::kInconsistentOrientation:
+      return "inconsistent orientation";
+    case CheckCategory::kOpenBoundary:
+      return "open boundary";
+    case CheckCategory::kNonManifoldBoundary:
+      return "non-manifold boundary";
+    case CheckCategory::kMissingBoundary:
+      return "boundary entity not listed";
+    case CheckCategory::kOrphanEntity:
+      return "listed entity not in the elements";
+    case CheckCategory::kDuplicateBoundaryEntity:
+      return "entity listed twice";
   }
   return "unknown";
 }
@@ -221,8 +236,10 @@ CheckReport check_mesh(const Mesh& m) {
   }
 
   Elements el;
-  if (m.kind() == MeshKind::kVolume) el = {&m.tets, 4, EntityKind::kTet};
-  else el = {&m.triangles, 3, EntityKind::kTriangle};
+  if (m.kind() == MeshKind::kVolume)
+    el = {&m.tets, 4, EntityKind::kTet};
+  else
+    el = {&m.triangles, 3, EntityKind::kTriangle};
   check_vertices(m, el, col);
   if (col.has(CheckCategory::kNonFiniteCoordinate)) return col.report();
   check_measures(m, el, col);

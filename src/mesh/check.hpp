@@ -12,22 +12,22 @@
 namespace riemesh {
 
 enum class CheckCategory {
-  kArraySize,        // an array's size does not match its entity count (refs missing, ...)
-  kIdOutOfRange,     // a vertex id outside [0, num_vertices)
+  kArraySize,     // an array's size does not match its entity count (refs missing, ...)
+  kIdOutOfRange,  // a vertex id outside [0, num_vertices)
   kNonFiniteCoordinate,
-  kRepeatedVertex,   // an element, triangle or edge using the same vertex twice
-  kUnusedVertex,     // a vertex of no element
-  kInvertedElement,  // negative signed area (2D) or volume (3D) beyond the tolerance
-  kZeroMeasureElement,  // |measure| <= kMeasureTolerance · (longest edge)^d
-  kDuplicateElement,    // an element with the same vertex set as an earlier one
-  kNonManifoldFace,     // a face (edge in 2D / on surfaces) shared by more than two elements
+  kRepeatedVertex,           // an element, triangle or edge using the same vertex twice
+  kUnusedVertex,             // a vertex of no element
+  kInvertedElement,          // negative signed area (2D) or volume (3D) beyond the tolerance
+  kZeroMeasureElement,       // |measure| <= kMeasureTolerance · (longest edge)^d
+  kDuplicateElement,         // an element with the same vertex set as an earlier one
+  kNonManifoldFace,          // a face (edge in 2D / on surfaces) shared by more than two elements
   kInconsistentOrientation,  // surface: two neighbours traverse their common edge the same way
-  kOpenBoundary,          // volume: a boundary edge on one boundary face only; edges-only
-                          // mesh: a vertex on one edge
-  kNonManifoldBoundary,   // volume: boundary edge on > 2 boundary faces; 2D (and edges-only
-                          // meshes): a boundary vertex on more than 2 boundary edges
-  kMissingBoundary,       // a boundary face (edge in 2D) of the elements not listed
-  kOrphanEntity,          // a listed triangle (edge) that is no face (edge) of any element
+  kOpenBoundary,             // volume: a boundary edge on one boundary face only; edges-only
+                             // mesh: a vertex on one edge
+  kNonManifoldBoundary,      // volume: boundary edge on > 2 boundary faces; 2D (and edges-only
+                             // meshes): a boundary vertex on more than 2 boundary edges
+  kMissingBoundary,          // a boundary face (edge in 2D) of the elements not listed
+  kOrphanEntity,             // a listed triangle (edge) that is no face (edge) of any element
   kDuplicateBoundaryEntity,  // a triangle or edge listed twice
 };
 
@@ -44,7 +44,7 @@ struct CheckIssue {
   std::size_t count = 0;
   EntityKind entity = EntityKind::kNone;  // what `example` numbers
   Id example = kNoId;                     // kNoId when no single entity is to blame
-  int local_face = -1;  // when the issue is about face local_face of element `example`
+  int local_face = -1;               // when the issue is about face local_face of element `example`
   std::array<double, 3> location{};  // centroid of the example (z = 0 in 2D)
 };
 

@@ -48,7 +48,8 @@ class Collector {
     int n = 0;
     for (Id v : verts) {
       if (v < 0 || static_cast<std::size_t>(v) >= nv) continue;
-      for (int c = 0; c < d && c < 3; ++c) p[c] += mesh_.coords[static_cast<std::size_t>(d) * v + c];
+      for (int c = 0; c < d && c < 3; ++c)
+        p[c] += mesh_.coords[static_cast<std::size_t>(d) * v + c];
       ++n;
     }
     if (n > 0)
@@ -71,8 +72,7 @@ struct Elements {
 
 /// Conformity, non-manifold faces, surface orientation and boundary consistency of the elements
 /// `el` restricted to `kept` (all of them when `kept` is empty).
-void check_topology(const Mesh& m, const Elements& el, const std::vector<Id>& kept,
-                    Collector& col);
+void check_topology(const Mesh& m, const Elements& el, const std::vector<Id>& kept, Collector& col);
 
 /// A mesh of edges only (e.g. the boundary of a 2D domain to be meshed): every vertex of an
 /// edge is on exactly two of them (closed loops), no edge is listed twice.

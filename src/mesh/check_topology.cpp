@@ -34,7 +34,8 @@ Distinct distinct_elements(const Elements& el, const std::vector<Id>& kept) {
 
 /// The vertices of face f of element e (k = 3: an edge; k = 4: a triangle, outward).
 std::vector<Id> face_vertices(const std::vector<Id>& s, int k, std::size_t e, int f) {
-  if (k == 4) return {s[4 * e + kTetFace[f][0]], s[4 * e + kTetFace[f][1]], s[4 * e + kTetFace[f][2]]};
+  if (k == 4)
+    return {s[4 * e + kTetFace[f][0]], s[4 * e + kTetFace[f][1]], s[4 * e + kTetFace[f][2]]};
   return {s[3 * e + kTriEdge[f][0]], s[3 * e + kTriEdge[f][1]]};
 }
 
@@ -89,8 +90,7 @@ std::vector<int> check_listed_edges(const Mesh& m, const Adjacency& adj, Collect
 }
 
 /// 2D: boundary edges form closed loops (two per boundary vertex) and are all listed.
-void check_planar_boundary(const Mesh& m, const Adjacency& adj, const Distinct& d,
-                           Collector& col) {
+void check_planar_boundary(const Mesh& m, const Adjacency& adj, const Distinct& d, Collector& col) {
   const std::vector<int> listed = check_listed_edges(m, adj, col);
   std::vector<int> degree(m.num_vertices(), 0);
   for (std::size_t e = 0; e < adj.num_elements(); ++e)
@@ -118,8 +118,7 @@ bool is_tet_face(const Adjacency& adj, const std::vector<Id>& tets, Id a, Id b, 
 
 /// Volume: listed triangles are tet faces, listed once; boundary faces are listed; the boundary
 /// surface is closed and edge-manifold.
-void check_volume_boundary(const Mesh& m, const Adjacency& adj, const Distinct& d,
-                           Collector& col) {
+void check_volume_boundary(const Mesh& m, const Adjacency& adj, const Distinct& d, Collector& col) {
   check_listed_edges(m, adj, col);
   std::vector<std::pair<std::vector<Id>, Id>> listed;
   for (std::size_t t = 0; t < m.num_triangles(); ++t) {
@@ -153,8 +152,8 @@ void check_volume_boundary(const Mesh& m, const Adjacency& adj, const Distinct& 
     }
   for (std::size_t g = 0; g < adj.num_edges(); ++g) {
     if (faces_on_edge[g] == 0 || faces_on_edge[g] == 2) continue;
-    const auto cat = faces_on_edge[g] == 1 ? CheckCategory::kOpenBoundary
-                                           : CheckCategory::kNonManifoldBoundary;
+    const auto cat =
+        faces_on_edge[g] == 1 ? CheckCategory::kOpenBoundary : CheckCategory::kNonManifoldBoundary;
     col.add(cat, EntityKind::kNone, kNoId, {adj.edges.data() + 2 * g, 2});
   }
 }
@@ -191,13 +190,18 @@ void check_topology(const Mesh& m, const Elements& el, const std::vector<Id>& ke
   const Adjacency adj = build_adjacency(d.verts, el.k, m.num_vertices());
   check_nonmanifold(adj, d, col);
   switch (m.kind()) {
-    case MeshKind::kVolume: check_volume_boundary(m, adj, d, col); break;
-    case MeshKind::kPlanar: check_planar_boundary(m, adj, d, col); break;
+    case MeshKind::kVolume:
+      check_volume_boundary(m, adj, d, col);
+      break;
+    case MeshKind::kPlanar:
+      check_planar_boundary(m, adj, d, col);
+      break;
     case MeshKind::kSurface:
       check_surface_orientation(adj, d, col);
       check_listed_edges(m, adj, col);
       break;
-    case MeshKind::kEmpty: break;
+    case MeshKind::kEmpty:
+      break;
   }
 }
 

@@ -130,7 +130,8 @@ Mesh unit_cube(int n) {
         m.vert_tag[c] |= kTagRidge;
       }
     }
-  for (int c = 0; c < 8; ++c) m.vert_tag[id((c & 1) * n, ((c >> 1) & 1) * n, (c >> 2) * n)] |= kTagCorner;
+  for (int c = 0; c < 8; ++c)
+    m.vert_tag[id((c & 1) * n, ((c >> 1) & 1) * n, (c >> 2) * n)] |= kTagCorner;
   return m;
 }
 
@@ -147,9 +148,9 @@ Mesh sphere_surface(int subdivisions) {
     m.coords.insert(m.coords.end(), {u[0], u[1], u[2]});
   }
   // Counter-clockwise seen from outside.
-  m.triangles = {0, 11, 5, 0, 5,  1,  0,  1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11,
-                 4, 11, 10, 2, 10, 7, 6, 7,  1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3,
-                 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+  m.triangles = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                 4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                 6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
   for (int level = 0; level < subdivisions; ++level) {
     // New vertex nv + e at the (projected) midpoint of edge e; each triangle becomes 4.
     const Adjacency adj = build_adjacency(m.triangles, 3, m.num_vertices());

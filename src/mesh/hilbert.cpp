@@ -56,8 +56,10 @@ std::uint64_t hilbert_key_d(const std::uint32_t* x_in) {
     if (x[D - 1] & q) t ^= q - 1;
   for (int i = 0; i < D; ++i) x[i] ^= t;
   // Interleave, most significant level first: bits of x[0], x[1] (, x[2]) at each level.
-  if constexpr (D == 3) return spread3(x[0]) << 2 | spread3(x[1]) << 1 | spread3(x[2]);
-  else return spread2(x[0]) << 1 | spread2(x[1]);
+  if constexpr (D == 3)
+    return spread3(x[0]) << 2 | spread3(x[1]) << 1 | spread3(x[2]);
+  else
+    return spread2(x[0]) << 1 | spread2(x[1]);
 }
 
 }  // namespace
@@ -72,7 +74,7 @@ namespace {
 struct Quantiser {
   int dim = 3;
   double lo[3] = {0, 0, 0};
-  double scale = 0.0;  // cells per unit length
+  double scale = 0.0;     // cells per unit length
   std::uint32_t top = 0;  // largest grid coordinate
 
   Quantiser(const std::vector<double>& coords, int d) : dim(d) {
@@ -159,7 +161,8 @@ std::vector<Id> sort_entities(std::vector<Id>& conn, int k, const Mesh& m, const
   for (std::size_t e = 0; e < n; ++e) {
     double c[3] = {0, 0, 0};
     for (int i = 0; i < k; ++i)
-      for (int a = 0; a < d; ++a) c[a] += m.coords[static_cast<std::size_t>(d) * conn[k * e + i] + a];
+      for (int a = 0; a < d; ++a)
+        c[a] += m.coords[static_cast<std::size_t>(d) * conn[k * e + i] + a];
     for (int a = 0; a < d; ++a) c[a] /= k;
     keys[e] = q.key(c);
   }

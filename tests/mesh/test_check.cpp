@@ -152,8 +152,8 @@ TEST(Check, InteriorTrianglesMayBeListed) {
   // An internal interface (a face shared by two tets) listed as a Triangle is fine.
   Mesh m = unit_cube(2);
   const Adjacency adj = build_adjacency(m);
-  const auto it = std::find_if(adj.elem2elem.begin(), adj.elem2elem.end(),
-                               [](Id n) { return n != kNoId; });
+  const auto it =
+      std::find_if(adj.elem2elem.begin(), adj.elem2elem.end(), [](Id n) { return n != kNoId; });
   const std::size_t f = it - adj.elem2elem.begin();
   for (int a = 0; a < 3; ++a) m.triangles.push_back(m.tets[4 * (f / 4) + kTetFace[f % 4][a]]);
   m.tri_ref.push_back(9);
@@ -163,8 +163,8 @@ TEST(Check, InteriorTrianglesMayBeListed) {
 
 TEST(Check, NonManifoldBoundaryEdge) {
   // Two tets sharing only the edge (0, 1): 4 boundary faces around that edge.
-  const Mesh m = tets_from({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1},
-                           {0, 1, 2, 3, 0, 1, 4, 5});
+  const Mesh m =
+      tets_from({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1}, {0, 1, 2, 3, 0, 1, 4, 5});
   expect_only(check_mesh(m), C::kNonManifoldBoundary, 1);
 }
 

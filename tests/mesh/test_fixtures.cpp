@@ -80,8 +80,8 @@ TEST(Fixtures, UnitCube) {
     const int axis = (ref - 1) / 2;
     const double side = (ref - 1) % 2;
     const Vec3 p0 = point3(m, m.triangles[3 * f]);
-    const Vec3 normal = cross(point3(m, m.triangles[3 * f + 1]) - p0,
-                              point3(m, m.triangles[3 * f + 2]) - p0);
+    const Vec3 normal =
+        cross(point3(m, m.triangles[3 * f + 1]) - p0, point3(m, m.triangles[3 * f + 2]) - p0);
     EXPECT_GT(normal[axis] * (side == 0 ? -1.0 : 1.0), 0.0) << "not outward";
     area_per_ref[ref] += 0.5 * norm(normal);
     for (int i = 0; i < 3; ++i) EXPECT_EQ(m.coords[3 * m.triangles[3 * f + i] + axis], side);
