@@ -66,19 +66,20 @@ inline SymEigen<2> eigen(const SymMat2& m) {
     // cos = |den|/sqrt(den² + b²). Valid for coefficients below 1e150 (no scaling).
     const double h = 0.5 * (d - a);
     const double hyp = std::sqrt(h * h + b * b);
-    const double den = h >= 0.0 ? h + hyp : h - hyp;
+    const double den = h + std::copysign(hyp, h);
     const double t = b / den;
     const double inv = 1.0 / std::sqrt(den * den + b * b);
-    const double c = std::abs(den) * inv, s = (den >= 0.0 ? b : -b) * inv;
+    const double c = std::abs(den) * inv, s = std::copysign(1.0, den) * b * inv;
     const double l0 = a - t * b, l1 = d + t * b;
-    // Columns (c, -s) for l0 and (s, c) for l1; put the smaller eigenvalue first.
-    if (l0 <= l1) {
-      e.values = {{l0, l1}};
-      e.vectors = {{{c, s}, {-s, c}}};
-    } else {
-      e.values = {{l1, l0}};
-      e.vectors = {{{s, c}, {c, -s}}};
-    }
+    // Columns (c, -s) for l0 and (s, c) for l1; the smaller eigenvalue goes first (computed
+    // slots rather than a data-dependent branch).
+    const int i0 = l0 <= l1 ? 0 : 1;
+    e.values[i0] = l0;
+    e.values[1 - i0] = l1;
+    e.vectors(0, i0) = c;
+    e.vectors(1, i0) = -s;
+    e.vectors(0, 1 - i0) = s;
+    e.vectors(1, 1 - i0) = c;
     return e;
   }
   detail::sort_eigen(e);
@@ -106,10 +107,17 @@ inline Vec3 separated_eigenvector(const double (&a)[3][3], double lambda) {
   const Vec3 r2{{a[0][2], a[1][2], a[2][2] - lambda}};
   const Vec3 c01 = cross(r0, r1), c02 = cross(r0, r2), c12 = cross(r1, r2);
   const double d01 = dot(c01, c01), d02 = dot(c02, c02), d12 = dot(c12, c12);
-  Vec3 best = c01;
-  double dmax = d01;
-  if (d02 > dmax) best = c02, dmax = d02;
-  if (d12 > dmax) best = c12, dmax = d12;
+  // Selections written as ternaries on values (compiled to blends, not branches: the winner is
+  // data dependent and would mispredict half of the time).
+  Vec3 best;
+  const bool take02 = d02 > d01;
+  const double dmax02 = take02 ? d02 : d01;
+  const bool take12 = d12 > dmax02;
+  for (int k = 0; k < 3; ++k) {
+    const double b02 = take02 ? c02[k] : c01[k];
+    best[k] = take12 ? c12[k] : b02;
+  }
+  const double dmax = take12 ? d12 : dmax02;
   if (dmax == 0.0) return Vec3::unit(0);  // A = lambda I to rounding: any vector will do
   return best;
 }
@@ -184,14 +192,16 @@ inline SymEigen<3> eigen(const SymMat3& m) {
   const Vec3 v1 = e2.vectors(0, 1) * u + e2.vectors(1, 1) * w;
   const double l_sep = dot(v_sep, av) * unscale;
   // The pair from the plane is sorted; the separated eigenvalue is the largest when
-  // half_det >= 0 and the smallest otherwise, so no sort is needed.
-  if (half_det >= 0.0) {
-    e.values = {{e2.values[0] * unscale, e2.values[1] * unscale, l_sep}};
-    e.vectors = Mat3::from_columns({v0, v1, v_sep});
-  } else {
-    e.values = {{l_sep, e2.values[0] * unscale, e2.values[1] * unscale}};
-    e.vectors = Mat3::from_columns({v_sep, v0, v1});
-  }
+  // half_det >= 0 and the smallest otherwise, so no sort is needed: the slots are computed
+  // (stores at computed indices instead of a data-dependent branch).
+  const int first = half_det >= 0.0 ? 0 : 1;  // slot of the plane's smaller eigenvalue
+  const int sep = half_det >= 0.0 ? 2 : 0;
+  e.values[first] = e2.values[0] * unscale;
+  e.values[first + 1] = e2.values[1] * unscale;
+  e.values[sep] = l_sep;
+  e.vectors.set_column(first, v0);
+  e.vectors.set_column(first + 1, v1);
+  e.vectors.set_column(sep, v_sep);
   return e;
 }
 
