@@ -137,50 +137,43 @@ inline void orthonormal_complement(const Vec3& n, double inv_norm, Vec3& u, Vec3
 
 }  // namespace detail
 
-/// Eigendecomposition of a symmetric 3x3 tensor.
-///
-/// Robust non-iterative method (after D. Eberly, "A robust eigensolver for 3x3 symmetric
-/// matrices", 2014): the eigenvalue farthest from the other two is found in closed form (one acos,
-/// one cos); its eigenvector, from cross products of rows of A - λI, is accurate because its gap
-/// is at least half the spectral spread. The other two eigenpairs come from the exact 2x2 problem
-/// in the orthogonal plane (one Jacobi rotation), which handles repeated eigenvalues. The result
-/// is backward stable (|R Λ Rᵀ - A| ≈ ε|A|) for any eigenvalue spread; a diagonal input is
-/// returned exactly. About 3x faster than cyclic Jacobi sweeps for the same accuracy.
-inline SymEigen<3> eigen(const SymMat3& m) {
+namespace detail {
+
+/// Diagonal tensor (or one whose off-diagonals are negligible): sorted diagonal, axis vectors.
+inline SymEigen<3> eigen_diagonal(const SymMat3& m) {
   SymEigen<3> e{};
-  double scale = 0.0;
-  for (int k = 0; k < 6; ++k) scale = std::max(scale, std::abs(m.c[k]));
-  if ((m.c[1] == 0.0 && m.c[3] == 0.0 && m.c[4] == 0.0) || !std::isfinite(scale)) {
-    e.values = {{m.c[0], m.c[2], m.c[5]}};
-    e.vectors = Mat3::identity();
-    detail::sort_eigen(e);
-    return e;
-  }
-  // Work on A / scale when needed to avoid overflow and underflow in the cubic's coefficients
-  // (powers of two keep the scaling exact; most metrics need none).
-  const double is = (scale > 1e-60 && scale < 1e60) ? 1.0 : std::ldexp(1.0, -std::ilogb(scale));
-  const double unscale = (is == 1.0) ? 1.0 : 1.0 / is;
-  const double a[3][3] = {{m.c[0] * is, m.c[1] * is, m.c[3] * is},
-                          {m.c[1] * is, m.c[2] * is, m.c[4] * is},
-                          {m.c[3] * is, m.c[4] * is, m.c[5] * is}};
+  e.values = {{m.c[0], m.c[2], m.c[5]}};
+  e.vectors = Mat3::identity();
+  sort_eigen(e);
+  return e;
+}
+
+/// The eigensolver proper on A = m; eigenvalues are multiplied by `unscale` (an exact power of
+/// two that undoes the caller's scaling of m, 1 for most inputs). Returns false, leaving e
+/// untouched, when the spread p of the spectrum or the mean q are outside the range where the
+/// cubic's coefficients neither overflow nor underflow; the caller then rescales.
+inline bool eigen3_in_range(const SymMat3& m, double unscale, SymEigen<3>& e) {
+  const double a[3][3] = {
+      {m.c[0], m.c[1], m.c[3]}, {m.c[1], m.c[2], m.c[4]}, {m.c[3], m.c[4], m.c[5]}};
   // Shifted, normalised B = (A - qI)/p has eigenvalues 2cos(φ + 2kπ/3), det(B)/2 = cos(3φ).
   const double q = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
   const double b00 = a[0][0] - q, b11 = a[1][1] - q, b22 = a[2][2] - q;
   const double offs = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
   const double p = std::sqrt((b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * offs) / 6.0);
+  if (!(p > 1e-60 && p < 1e60 && std::abs(q) < 1e250)) return false;  // NaN lands here too
   const double c00 = b11 * b22 - a[1][2] * a[1][2];
   const double c01 = a[0][1] * b22 - a[1][2] * a[0][2];
   const double c02 = a[0][1] * a[1][2] - b11 * a[0][2];
   const double half_det =
       std::clamp((b00 * c00 - a[0][1] * c01 + a[0][2] * c02) / (2.0 * p * p * p), -1.0, 1.0);
-  const double beta = detail::separated_root(half_det);
-  const Vec3 n_sep = detail::separated_eigenvector(a, q + p * beta);
+  const double beta = separated_root(half_det);
+  const Vec3 n_sep = separated_eigenvector(a, q + p * beta);
   const double inv_norm = 1.0 / norm(n_sep);
   const Vec3 v_sep = n_sep * inv_norm;
 
   // The exact 2x2 problem in the plane orthogonal to v_sep.
   Vec3 u, w;
-  detail::orthonormal_complement(n_sep, inv_norm, u, w);
+  orthonormal_complement(n_sep, inv_norm, u, w);
   auto apply = [&a](const Vec3& x) {
     return Vec3{{a[0][0] * x[0] + a[0][1] * x[1] + a[0][2] * x[2],
                  a[0][1] * x[0] + a[1][1] * x[1] + a[1][2] * x[2],
@@ -190,7 +183,6 @@ inline SymEigen<3> eigen(const SymMat3& m) {
   const SymEigen<2> e2 = eigen(SymMat2{{dot(u, au), dot(u, aw), dot(w, aw)}});
   const Vec3 v0 = e2.vectors(0, 0) * u + e2.vectors(1, 0) * w;
   const Vec3 v1 = e2.vectors(0, 1) * u + e2.vectors(1, 1) * w;
-  const double l_sep = dot(v_sep, av) * unscale;
   // The pair from the plane is sorted; the separated eigenvalue is the largest when
   // half_det >= 0 and the smallest otherwise, so no sort is needed: the slots are computed
   // (stores at computed indices instead of a data-dependent branch).
@@ -198,11 +190,37 @@ inline SymEigen<3> eigen(const SymMat3& m) {
   const int sep = half_det >= 0.0 ? 2 : 0;
   e.values[first] = e2.values[0] * unscale;
   e.values[first + 1] = e2.values[1] * unscale;
-  e.values[sep] = l_sep;
+  e.values[sep] = dot(v_sep, av) * unscale;
   e.vectors.set_column(first, v0);
   e.vectors.set_column(first + 1, v1);
   e.vectors.set_column(sep, v_sep);
-  return e;
+  return true;
+}
+
+}  // namespace detail
+
+/// Eigendecomposition of a symmetric 3x3 tensor.
+///
+/// Robust non-iterative method (after D. Eberly, "A robust eigensolver for 3x3 symmetric
+/// matrices", 2014): the eigenvalue farthest from the other two is found in closed form; its
+/// eigenvector, from cross products of rows of A - λI, is accurate because its gap is at least
+/// half the spectral spread. The other two eigenpairs come from the exact 2x2 problem in the
+/// orthogonal plane (one Jacobi rotation), which handles repeated eigenvalues. The result is
+/// backward stable (|R Λ Rᵀ - A| ≈ ε|A|) for any eigenvalue spread; a diagonal input is
+/// returned exactly. Inputs whose coefficients would overflow or underflow in the cubic are
+/// rescaled by a power of two (rare: metrics with sizes between 1e-25 and 1e25 never are).
+inline SymEigen<3> eigen(const SymMat3& m) {
+  if (m.c[1] == 0.0 && m.c[3] == 0.0 && m.c[4] == 0.0) return detail::eigen_diagonal(m);
+  SymEigen<3> e;
+  if (detail::eigen3_in_range(m, 1.0, e)) return e;
+  double scale = 0.0;
+  for (int k = 0; k < 6; ++k) scale = std::max(scale, std::abs(m.c[k]));
+  if (!std::isfinite(scale) || scale == 0.0) return detail::eigen_diagonal(m);
+  const int exponent = std::ilogb(scale);
+  if (detail::eigen3_in_range(std::ldexp(1.0, -exponent) * m, std::ldexp(1.0, exponent), e))
+    return e;
+  // Spread below 1e-60 of the largest coefficient: the off-diagonals are negligible.
+  return detail::eigen_diagonal(m);
 }
 
 /// R diag(λ) Rᵀ: rebuild a symmetric tensor from eigenvectors and (new) eigenvalues.
