@@ -1,0 +1,121 @@
+// Edge collapse: vertex `from` disappears into `to`; the one or two triangles on the edge go.
+#include <algorithm>
+
+#include "remesh/ops2d.hpp"
+
+namespace riemesh {
+namespace {
+
+/// The vertices around v (the far ends of its edges), from its ball.
+void ball_vertices(const TriMesh& m, const Ball& b, Id v, std::vector<Id>& out) {
+  out.clear();
+  for (const Id t : b.tris) {
+    const int i = vertex_index(m, t, v);
+    out.push_back(m.tv[3 * t + (i + 1) % 3]);
+    out.push_back(m.tv[3 * t + (i + 2) % 3]);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+/// Topology: the feature rules and the link condition (the common neighbours of `from` and `to`
+/// are exactly the apexes of the triangles on the edge), so the result stays a manifold mesh.
+bool topology_ok(const TriMesh& m, Id slot, Id from, Id to, const Ball& bfrom, const Ball& bto) {
+  if (m.frozen(from)) return false;
+  if (m.on_curve(from)) {
+    // A curve vertex slides along its own curve only.
+    if (m.ecurve[slot] != m.vcurve[from]) return false;
+  } else if (m.is_feature(slot)) {
+    return false;
+  }
+  if (!m.on_curve(from) && !bfrom.closed) return false;  // boundary vertex off any curve: keep
+  std::vector<Id> nf, nt;
+  ball_vertices(m, bfrom, from, nf);
+  ball_vertices(m, bto, to, nt);
+  std::vector<Id> common;
+  std::set_intersection(nf.begin(), nf.end(), nt.begin(), nt.end(), std::back_inserter(common));
+  const std::size_t on_edge = m.tadj[slot] == kNoId ? 1 : 2;
+  return common.size() == on_edge;
+}
+
+/// Geometry and quality of the triangles that keep `from` (now `to`), and lengths of new edges.
+Outcome shape_check(const TriMesh& m, const Ball& bfrom, Id from, Id to,
+                    const CollapseLimits& lim) {
+  const Vec2& pt = m.xy[to];
+  for (const Id t : bfrom.tris) {
+    const int i = vertex_index(m, t, from);
+    const Id a = m.tv[3 * t + (i + 1) % 3], b = m.tv[3 * t + (i + 2) % 3];
+    if (a == to || b == to) continue;  // removed with the edge
+    const double old_area = signed_area(m.xy[from], m.xy[a], m.xy[b]);
+    if (!(signed_area(pt, m.xy[a], m.xy[b]) > 1e-9 * old_area)) return Outcome::kRejectedGeometry;
+    if (tri_quality(m, to, a, b) < lim.min_quality) return Outcome::kRejectedQuality;
+    if (edge_length(m, to, a) > lim.max_length || edge_length(m, to, b) > lim.max_length)
+      return Outcome::kRejectedQuality;
+  }
+  return Outcome::kApplied;
+}
+
+void set_edge_data(TriMesh& m, Id slot, std::int32_t curve, std::int32_t ref, std::uint8_t tag) {
+  if (slot == kNoId) return;
+  m.ecurve[slot] = curve;
+  m.eref[slot] = ref;
+  m.etag[slot] = tag;
+}
+
+/// A triangle on the collapsing edge: the slot of its edge (from, x), opposite `to`, and of its
+/// edge (to, x), opposite `from`.
+struct Side {
+  Id t, slot_fx, slot_tx;
+};
+
+}  // namespace
+
+Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& lim) {
+  thread_local Ball bfrom, bto;  // scratch reused across calls; never shared between threads
+  collect_ball(m, from, bfrom);
+  collect_ball(m, to, bto);
+  if (!topology_ok(m, slot, from, to, bfrom, bto)) return Outcome::kRejectedTopology;
+
+  Side sides[2];
+  int nsides = 0;
+  for (const Id s : {slot, m.tadj[slot]}) {
+    if (s == kNoId) continue;
+    const Id t = s / 3;
+    const Side sd{t, 3 * t + vertex_index(m, t, to), 3 * t + vertex_index(m, t, from)};
+    // Gluing must neither leave a dangling edge nor merge two feature edges into one.
+    if (m.tadj[sd.slot_fx] == kNoId && m.tadj[sd.slot_tx] == kNoId)
+      return Outcome::kRejectedTopology;
+    if (m.is_feature(sd.slot_fx) && m.is_feature(sd.slot_tx)) return Outcome::kRejectedTopology;
+    sides[nsides++] = sd;
+  }
+  const Outcome shape = shape_check(m, bfrom, from, to, lim);
+  if (shape != Outcome::kApplied) return shape;
+
+  // Glue the outer neighbours of each removed triangle; the merged edge keeps the feature data.
+  Id survivor = kNoId;
+  for (int k = 0; k < nsides; ++k) {
+    const Side& sd = sides[k];
+    const Id outer_f = m.tadj[sd.slot_fx], outer_t = m.tadj[sd.slot_tx];
+    const Id keep = m.is_feature(sd.slot_fx) ? sd.slot_fx : sd.slot_tx;
+    const std::int32_t curve = m.ecurve[keep], ref = m.eref[keep];
+    const std::uint8_t tag = m.etag[keep];
+    link(m, outer_f, outer_t);
+    set_edge_data(m, outer_f, curve, ref, tag);
+    set_edge_data(m, outer_t, curve, ref, tag);
+    const Id any = outer_t != kNoId ? outer_t / 3 : outer_f / 3;
+    const int ix = 3 - (sd.slot_fx % 3) - (sd.slot_tx % 3);  // local index of the apex x
+    m.vtri[m.tv[3 * sd.t + ix]] = any;
+    survivor = any;
+  }
+  for (const Id t : bfrom.tris) {
+    const int i = vertex_index(m, t, from);
+    if (t == sides[0].t || (nsides == 2 && t == sides[1].t)) continue;
+    m.tv[3 * t + i] = to;
+  }
+  m.vtri[to] = survivor;
+  for (int k = 0; k < nsides; ++k) m.kill_triangle(sides[k].t);
+  m.kill_vertex(from);
+  return Outcome::kApplied;
+}
+
+}  // namespace riemesh

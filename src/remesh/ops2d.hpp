@@ -1,0 +1,72 @@
+#pragma once
+// Local operators of the 2D remesher on a TriMesh: edge split, edge collapse, edge swap and vertex
+// relocation (BOOK.md §7). Each checks its own admissibility and returns an Outcome: a rejection
+// is a normal answer, counted by the driver, not an error. They never create an inverted or
+// degenerate triangle and never change the domain's boundary curves or refs.
+#include <cmath>
+
+#include "metric/edge_length.hpp"
+#include "remesh/tri_mesh.hpp"
+
+namespace riemesh {
+
+enum class Outcome { kApplied, kRejectedTopology, kRejectedGeometry, kRejectedQuality };
+
+/// Metric length of edge (a, b): the UGAWG closed form (l_a − l_b)/ln(l_a/l_b).
+inline double edge_length(const TriMesh& m, Id a, Id b) {
+  return edge_length_geometric(m.metric[a], m.metric[b], m.xy[b] - m.xy[a]);
+}
+
+/// Mean-ratio quality 4√3 |K|_M / Σ l_M² of triangle (pa, pb, pc) in the metric `mm` (1 for the
+/// unit equilateral triangle, <= 0 when inverted).
+inline double quality_in(const SymMat2& mm, const Vec2& pa, const Vec2& pb, const Vec2& pc) {
+  const Vec2 e0 = pb - pa, e1 = pc - pb, e2 = pa - pc;
+  const double l2 = quadratic(mm, e0) + quadratic(mm, e1) + quadratic(mm, e2);
+  const double area = std::sqrt(det(mm)) * 0.5 * cross(e0, pc - pa);
+  return 6.928203230275509 * area / l2;  // 4√3
+}
+
+/// Quality of a triangle in the coefficient-wise mean of its vertex metrics: a cheap stand-in for
+/// the log-Euclidean mean inside the operators (vertex metrics of a unit mesh are close), used
+/// consistently for every decision.
+inline double tri_quality(const TriMesh& m, Id a, Id b, Id c) {
+  const SymMat2 mm = (1.0 / 3.0) * (m.metric[a] + m.metric[b] + m.metric[c]);
+  return quality_in(mm, m.xy[a], m.xy[b], m.xy[c]);
+}
+inline double tri_quality(const TriMesh& m, Id t) {
+  return tri_quality(m, m.tv[3 * t], m.tv[3 * t + 1], m.tv[3 * t + 2]);
+}
+
+/// A vertex to insert: position, metric and, on a feature curve, its curve and parameter.
+struct NewVertex {
+  Vec2 p;
+  SymMat2 metric;
+  std::int32_t curve = kNoCurve;
+  double param = 0.0;
+};
+
+/// Splits the edge at `slot` (and its neighbour's copy) at nv. Rejected (geometry) when a new
+/// triangle would not have a positive area, or (quality) when one would be below min_quality.
+/// On success *created is the new vertex.
+Outcome split_edge(TriMesh& m, Id slot, const NewVertex& nv, double min_quality, Id* created);
+
+/// Limits a collapse must respect in the triangles it changes.
+struct CollapseLimits {
+  double min_quality = 0.3;   // no changed triangle below this
+  double max_length = 1.5;    // no new edge longer than this in the metric
+};
+
+/// Removes vertex `from` by merging it into `to` along the edge at `slot` (which joins them).
+/// Frozen vertices never go; a vertex on a feature curve only moves along its curve.
+Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& limits);
+
+/// Flips the interior edge at `slot` when the smaller quality of the two triangles grows by more
+/// than `min_gain`. Feature edges are never flipped.
+Outcome swap_edge(TriMesh& m, Id slot, double min_gain);
+
+/// Moves vertex v to p (with its new metric and curve parameter) when every triangle of its ball
+/// stays valid and the smallest quality of the ball does not drop below min(old, floor).
+Outcome move_vertex(TriMesh& m, Id v, const Vec2& p, const SymMat2& metric, double param,
+                    double floor);
+
+}  // namespace riemesh

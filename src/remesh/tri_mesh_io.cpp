@@ -1,0 +1,111 @@
+#include "remesh/tri_mesh_io.hpp"
+
+#include <string>
+
+#include "core/error.hpp"
+#include "mesh/adjacency.hpp"
+
+namespace riemesh {
+namespace {
+
+std::string tri_name(std::size_t t) { return "triangle " + std::to_string(t + 1); }
+
+/// The slot of edge (a, b) in triangle t (either direction), or kNoId.
+Id find_slot(const TriMesh& m, Id t, Id a, Id b) {
+  for (int i = 0; i < 3; ++i) {
+    const Id s = 3 * t + i, x = m.edge_from(s), y = m.edge_to(s);
+    if ((x == a && y == b) || (x == b && y == a)) return s;
+  }
+  return kNoId;
+}
+
+void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics,
+                  std::span<const VertexCurve> curves) {
+  const std::size_t nv = mesh.num_vertices();
+  for (std::size_t v = 0; v < nv; ++v) {
+    const Id id = m.add_vertex(Vec2{{mesh.coords[2 * v], mesh.coords[2 * v + 1]}}, metrics[v]);
+    m.vref[id] = mesh.vert_ref.empty() ? 0 : mesh.vert_ref[v];
+    m.vtag[id] = mesh.vert_tag.empty() ? std::uint8_t{kTagNone} : mesh.vert_tag[v];
+    m.vcurve[id] = curves[v].curve;
+    m.vparam[id] = curves[v].param;
+    if (curves[v].curve != kNoCurve) m.vtag[id] |= kTagRidge;
+  }
+}
+
+void add_triangles(TriMesh& m, const Mesh& mesh) {
+  const Adjacency adj = build_adjacency(mesh.triangles, 3, mesh.num_vertices());
+  if (!adj.nonmanifold_faces.empty())
+    throw InputError("non-manifold edge at " + tri_name(adj.nonmanifold_faces[0] / 3));
+  for (std::size_t t = 0; t < mesh.num_triangles(); ++t) {
+    const Id* v = &mesh.triangles[3 * t];
+    if (!(signed_area(m.xy[v[0]], m.xy[v[1]], m.xy[v[2]]) > 0.0))
+      throw InputError(tri_name(t) + " is clockwise or degenerate");
+    m.add_triangle(v[0], v[1], v[2], mesh.tri_ref.empty() ? 0 : mesh.tri_ref[t]);
+  }
+  for (std::size_t t = 0; t < mesh.num_triangles(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const Id n = adj.elem2elem[3 * t + i];
+      if (n == kNoId) continue;
+      const Id s = 3 * static_cast<Id>(t) + i;
+      m.tadj[s] = find_slot(m, n, m.edge_from(s), m.edge_to(s));
+    }
+}
+
+}  // namespace
+
+TriMesh build_tri_mesh(const Mesh& mesh, std::span<const SymMat2> metrics,
+                       std::span<const FeatureEdge> features,
+                       std::span<const VertexCurve> vertex_curves) {
+  if (mesh.dim != 2) throw InputError("2D remeshing needs a planar mesh (Dimension 2)");
+  if (metrics.size() != mesh.num_vertices() || vertex_curves.size() != mesh.num_vertices())
+    throw InputError("one metric and one curve record per vertex expected");
+  TriMesh m;
+  add_vertices(m, mesh, metrics, vertex_curves);
+  add_triangles(m, mesh);
+  // Features: mark both sides of each listed edge, found through the triangles around a.
+  const Adjacency adj = build_adjacency(mesh.triangles, 3, mesh.num_vertices());
+  for (const FeatureEdge& f : features) {
+    for (const Id t : ball(adj, f.a)) {
+      const Id s = find_slot(m, t, f.a, f.b);
+      if (s == kNoId) continue;
+      m.ecurve[s] = f.curve;
+      m.eref[s] = f.ref;
+      m.etag[s] = f.tag;
+    }
+  }
+  for (std::size_t s = 0; s < m.tadj.size(); ++s)
+    if (m.tadj[s] == kNoId && m.ecurve[s] == kNoCurve)
+      throw InputError("boundary edge of " + tri_name(s / 3) + " belongs to no boundary curve");
+  return m;
+}
+
+Mesh to_mesh(const TriMesh& m, std::vector<SymMat2>* metrics) {
+  Mesh out;
+  out.dim = 2;
+  std::vector<Id> new_id(m.vertex_capacity(), kNoId);
+  if (metrics) metrics->clear();
+  for (std::size_t v = 0; v < m.vertex_capacity(); ++v) {
+    if (!m.vert_alive(static_cast<Id>(v))) continue;
+    new_id[v] = static_cast<Id>(out.num_vertices());
+    out.coords.insert(out.coords.end(), {m.xy[v][0], m.xy[v][1]});
+    out.vert_ref.push_back(m.vref[v]);
+    out.vert_tag.push_back(m.vtag[v] & (kTagCorner | kTagRequired));
+    if (metrics) metrics->push_back(m.metric[v]);
+  }
+  for (std::size_t t = 0; t < m.triangle_capacity(); ++t) {
+    if (!m.tri_alive(static_cast<Id>(t))) continue;
+    for (int i = 0; i < 3; ++i) out.triangles.push_back(new_id[m.tv[3 * t + i]]);
+    out.tri_ref.push_back(m.tref[t]);
+    for (int i = 0; i < 3; ++i) {
+      const Id s = 3 * static_cast<Id>(t) + i;
+      if (!m.is_feature(s) || (m.tadj[s] != kNoId && m.tadj[s] < s)) continue;
+      out.edges.insert(out.edges.end(), {new_id[m.edge_from(s)], new_id[m.edge_to(s)]});
+      out.edge_ref.push_back(m.eref[s]);
+      out.edge_tag.push_back(m.etag[s] & kTagRequired);
+    }
+  }
+  out.tri_tag.assign(out.num_triangles(), kTagNone);
+  return out;
+}
+
+}  // namespace riemesh
