@@ -115,6 +115,10 @@ bool AsciiMeditReader::next_keyword(std::string_view& name, int& code) {
       const std::int64_t d = integer(name);
       if (d != 2 && d != 3)
         fail_here(name, "dimension " + std::to_string(d) + " (2 or 3 expected)");
+      // Sections already read used the first dimension: a file has one.
+      if (dim_ != 0 && d != dim_)
+        fail_here(name,
+                  "dimension " + std::to_string(d) + " after dimension " + std::to_string(dim_));
       dim_ = static_cast<int>(d);
     } else if (code == 0) {
       skip_section(name);

@@ -25,6 +25,12 @@ Mesh read_medit_binary(const std::string& path, std::string_view bytes,
                        const MeditReadOptions& options);
 void write_medit_ascii(const Mesh& mesh, AtomicFile& file, const MeditWriteOptions& options);
 void write_medit_binary(const Mesh& mesh, AtomicFile& file, const MeditWriteOptions& options);
+/// read_sol on bytes already in memory (the fuzz targets call it): `path` picks .sol or .solb
+/// by its extension and names the file in messages.
+std::vector<Field> read_sol_bytes(const std::string& path, std::string_view bytes,
+                                  std::size_t num_vertices, int dim);
+/// Throws InputError unless the path ends with .sol or .solb.
+void check_sol_name(const std::string& path);
 
 // libMeshb keyword codes: enum GmfKwdCod in sources/libmeshb7.h of LoicMarechal/libMeshb
 // (v7.62), counted from GmfReserved1 = 0. Entry layouts from GmfKwdFmt in libmeshb7.c.

@@ -56,6 +56,10 @@ bool MeshbReader::next_keyword(int& code) {
       const std::int32_t d = raw<std::int32_t>();
       if (d != 2 && d != 3)
         fail_at(pos_ - 4, "dimension " + std::to_string(d) + " (2 or 3 expected)");
+      // Sections already read used the first dimension: a file has one.
+      if (dim_ != 0 && d != dim_)
+        fail_at(pos_ - 4,
+                "dimension " + std::to_string(d) + " after dimension " + std::to_string(dim_));
       dim_ = d;
       end_keyword(true);
       continue;

@@ -117,11 +117,25 @@ std::vector<Field> read_binary(const std::string& path, std::string_view bytes,
 }  // namespace
 
 std::vector<Field> read_sol(const std::string& path, std::size_t num_vertices, int dim) {
-  using medit_detail::ends_with;
-  const bool binary = ends_with(path, ".solb");
-  if (!binary && !ends_with(path, ".sol"))
+  medit_detail::check_sol_name(path);
+  return medit_detail::read_sol_bytes(path, read_file_bytes(path), num_vertices, dim);
+}
+
+std::vector<Field> read_sol(const std::string& path, const Mesh& mesh) {
+  return read_sol(path, mesh.num_vertices(), mesh.dim);
+}
+
+namespace medit_detail {
+
+void check_sol_name(const std::string& path) {
+  if (!ends_with(path, ".solb") && !ends_with(path, ".sol"))
     throw InputError(path + ": not a Medit solution file name (.sol or .solb expected)");
-  const std::string bytes = read_file_bytes(path);
+}
+
+std::vector<Field> read_sol_bytes(const std::string& path, std::string_view bytes,
+                                  std::size_t num_vertices, int dim) {
+  check_sol_name(path);
+  const bool binary = ends_with(path, ".solb");
   int file_dim = 0;
   std::vector<Field> fields = binary ? read_binary(path, bytes, num_vertices, file_dim)
                                      : read_ascii(path, bytes, num_vertices, file_dim);
@@ -140,9 +154,7 @@ std::vector<Field> read_sol(const std::string& path, std::size_t num_vertices, i
   return fields;
 }
 
-std::vector<Field> read_sol(const std::string& path, const Mesh& mesh) {
-  return read_sol(path, mesh.num_vertices(), mesh.dim);
-}
+}  // namespace medit_detail
 
 namespace {
 
