@@ -1,0 +1,259 @@
+// Background mesh: construction (validation, volumes, adjacency, log-metrics, search grid) and
+// the interpolation of metrics and vertex fields at located points. Location is in
+// background_locate.cpp.
+#include "remesh/background.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/spd.hpp"
+#include "mesh/adjacency.hpp"
+#include "remesh/simplex_geometry.hpp"
+
+namespace riemesh {
+namespace {
+
+std::string prefix() { return "background mesh: "; }
+
+template <int D>
+std::span<const Id> mesh_simplices(const Mesh& mesh) {
+  if (mesh.dim != D) {
+    std::string msg = prefix();
+    msg += "a " + std::to_string(D) + "D background needs a mesh of dimension " +
+           std::to_string(D) + ", got " + std::to_string(mesh.dim);
+    throw InputError(msg);
+  }
+  if (D == 3 && mesh.tets.empty())
+    throw InputError(prefix() + "a 3D background needs tetrahedra (the mesh has none)");
+  return D == 2 ? std::span<const Id>(mesh.triangles) : std::span<const Id>(mesh.tets);
+}
+
+/// Cells per axis of a grid of about `target` cells over a box of sides `extent`, cells about
+/// square: an axis shorter than the cell side gets one cell and the rest share the target.
+template <int D>
+void grid_shape(const Vec<D>& extent, double target, int n[D]) {
+  bool active[D];
+  for (int a = 0; a < D; ++a) active[a] = true;
+  for (int pass = 0; pass < D; ++pass) {
+    double prod = 1.0;
+    int count = 0;
+    for (int a = 0; a < D; ++a)
+      if (active[a]) prod *= extent[a], ++count;
+    if (count == 0) break;
+    const double h = std::pow(prod / target, 1.0 / count);
+    bool changed = false;
+    for (int a = 0; a < D; ++a) {
+      if (!active[a]) continue;
+      if (extent[a] < h) {
+        active[a] = false, n[a] = 1, changed = true;
+      } else {
+        n[a] = static_cast<int>(std::min(std::ceil(extent[a] / h), 1e6));
+      }
+    }
+    if (!changed) break;
+  }
+}
+
+/// Calls f(cell index) for every cell of the box [lo, hi] (inclusive, per axis) of a grid n.
+template <int D, class F>
+void for_box(const int lo[D], const int hi[D], const int n[D], F&& f) {
+  int c[D];
+  for (int a = 0; a < D; ++a) c[a] = lo[a];
+  while (true) {
+    std::size_t index = 0;
+    for (int a = D - 1; a >= 0; --a) index = index * static_cast<std::size_t>(n[a]) + c[a];
+    f(index);
+    int a = 0;
+    while (a < D && ++c[a] > hi[a]) c[a] = lo[a], ++a;
+    if (a == D) return;
+  }
+}
+
+}  // namespace
+
+template <int D>
+BackgroundMesh<D>::BackgroundMesh(std::span<const double> coords, std::span<const Id> simplices,
+                                  std::span<const double> metrics, InterpScheme scheme)
+    : scheme_(scheme) {
+  build(coords, simplices, metrics);
+}
+
+template <int D>
+BackgroundMesh<D>::BackgroundMesh(const Mesh& mesh, std::span<const double> metrics,
+                                  InterpScheme scheme)
+    : BackgroundMesh(mesh.coords, mesh_simplices<D>(mesh), metrics, scheme) {}
+
+template <int D>
+void BackgroundMesh<D>::build(std::span<const double> coords, std::span<const Id> simplices,
+                              std::span<const double> metrics) {
+  constexpr int kSize = SymMat<D>::kSize;
+  if (coords.size() % D != 0 || simplices.size() % kVerts != 0 || simplices.empty())
+    throw InputError(prefix() + "coordinate or simplex array of a bad size (" +
+                     std::to_string(coords.size()) + " coordinates, " +
+                     std::to_string(simplices.size()) + " simplex ids)");
+  const std::size_t nv = coords.size() / D;
+  const std::size_t ns = simplices.size() / kVerts;
+  if (nv >= static_cast<std::size_t>(std::numeric_limits<Id>::max()) ||
+      simplices.size() >= static_cast<std::size_t>(std::numeric_limits<Id>::max()))
+    throw InputError(prefix() + "too many entities for 32-bit ids");
+  if (metrics.size() != nv * kSize)
+    throw InputError(prefix() + std::to_string(metrics.size()) + " metric coefficients for " +
+                     std::to_string(nv) + " vertices (expected " + std::to_string(nv * kSize) +
+                     ")");
+  coords_.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+    for (int a = 0; a < D; ++a) {
+      coords_[v][a] = coords[D * v + a];
+      if (!std::isfinite(coords_[v][a]))
+        throw InputError(prefix() + "vertex " + std::to_string(v + 1) +
+                         " has a non-finite coordinate");
+    }
+  simplices_.assign(simplices.begin(), simplices.end());
+  for (Id v : simplices_)
+    if (v < 0 || static_cast<std::size_t>(v) >= nv)
+      throw InputError(prefix() + "vertex id " + std::to_string(v) + " out of range [0, " +
+                       std::to_string(nv) + ")");
+  volumes_.resize(ns);
+  for (std::size_t s = 0; s < ns; ++s) {
+    Vec<D> x[kVerts];
+    for (int i = 0; i < kVerts; ++i) x[i] = coords_[simplices_[kVerts * s + i]];
+    volumes_[s] = simplex::signed_volume(x);
+    if (volumes_[s] == 0.0 || !std::isfinite(volumes_[s]))
+      throw InputError(prefix() + "simplex " + std::to_string(s + 1) + " has zero measure");
+  }
+  metrics_.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    std::copy_n(metrics.begin() + kSize * v, kSize, metrics_[v].c);
+    if (!is_spd(metrics_[v]))
+      throw InputError(prefix() + "the metric of vertex " + std::to_string(v + 1) +
+                       " is not symmetric positive definite");
+  }
+  if (scheme_ == InterpScheme::kLogEuclidean) {
+    logs_.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v) logs_[v] = log_spd(metrics_[v]);
+  }
+  elem2elem_ = build_adjacency(simplices_, kVerts, nv).elem2elem;
+  // Walks from a hint crossing a uniform mesh take O(ns^(1/D)) steps; beyond a generous multiple
+  // of that, the grid search is cheaper than walking on (and a cycle cannot run forever).
+  max_walk_steps_ =
+      64 + 8 * static_cast<int>(std::ceil(std::pow(static_cast<double>(ns), 1.0 / D)));
+  build_grid();
+}
+
+template <int D>
+void BackgroundMesh<D>::build_grid() {
+  Vec<D> lo = coords_[0], hi = coords_[0];
+  for (const Vec<D>& x : coords_)
+    for (int a = 0; a < D; ++a) lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
+  // About 4 triangles or 8 tetrahedra per cell: a simplex overlaps a few cells, so a cell lists
+  // ~12 triangles or ~50 tetrahedra, the cost of one containment scan in the robust search.
+  const double target = std::max(1.0, static_cast<double>(num_simplices()) / (D == 2 ? 4 : 8));
+  grid_.lo = lo;
+  grid_shape<D>(hi - lo, target, grid_.n);
+  std::size_t cells = 1;
+  for (int a = 0; a < D; ++a) {
+    grid_.cell[a] = (hi[a] - lo[a]) / grid_.n[a];
+    grid_.inv_cell[a] = grid_.n[a] / (hi[a] - lo[a]);
+    cells *= static_cast<std::size_t>(grid_.n[a]);
+  }
+  // Two passes over the simplices' bounding boxes: count, then fill (ids increase per cell).
+  grid_.offsets.assign(cells + 1, 0);
+  auto simplex_box = [&](std::size_t s, int c_lo[D], int c_hi[D]) {
+    Vec<D> b_lo = coords_[simplices_[kVerts * s]], b_hi = b_lo;
+    for (int i = 1; i < kVerts; ++i) {
+      const Vec<D>& x = coords_[simplices_[kVerts * s + i]];
+      for (int a = 0; a < D; ++a)
+        b_lo[a] = std::min(b_lo[a], x[a]), b_hi[a] = std::max(b_hi[a], x[a]);
+    }
+    cell_of(b_lo, c_lo);
+    cell_of(b_hi, c_hi);
+  };
+  int c_lo[D], c_hi[D];
+  for (std::size_t s = 0; s < num_simplices(); ++s) {
+    simplex_box(s, c_lo, c_hi);
+    for_box<D>(c_lo, c_hi, grid_.n, [&](std::size_t c) { ++grid_.offsets[c + 1]; });
+  }
+  for (std::size_t c = 0; c < cells; ++c) grid_.offsets[c + 1] += grid_.offsets[c];
+  grid_.ids.resize(grid_.offsets[cells]);
+  std::vector<std::size_t> fill(grid_.offsets.begin(), grid_.offsets.end() - 1);
+  for (std::size_t s = 0; s < num_simplices(); ++s) {
+    simplex_box(s, c_lo, c_hi);
+    for_box<D>(c_lo, c_hi, grid_.n,
+               [&](std::size_t c) { grid_.ids[fill[c]++] = static_cast<Id>(s); });
+  }
+  // Walk starts: the simplex nearest the cell centre (first in id order on ties), so that a
+  // hint-free walk crosses about half a cell.
+  grid_.start.assign(cells, kNoId);
+  std::vector<double> best(cells, std::numeric_limits<double>::infinity());
+  for (std::size_t s = 0; s < num_simplices(); ++s) {
+    Vec<D> centroid = Vec<D>::zero();
+    for (int i = 0; i < kVerts; ++i) centroid += coords_[simplices_[kVerts * s + i]];
+    centroid *= 1.0 / kVerts;
+    simplex_box(s, c_lo, c_hi);
+    for_box<D>(c_lo, c_hi, grid_.n, [&](std::size_t cell) {
+      Vec<D> centre{};
+      std::size_t rest = cell;
+      for (int a = 0; a < D; ++a) {
+        const auto k = rest % static_cast<std::size_t>(grid_.n[a]);
+        rest /= static_cast<std::size_t>(grid_.n[a]);
+        centre[a] = grid_.lo[a] + (static_cast<double>(k) + 0.5) * grid_.cell[a];
+      }
+      const Vec<D> d = centroid - centre;
+      if (dot(d, d) < best[cell]) best[cell] = dot(d, d), grid_.start[cell] = static_cast<Id>(s);
+    });
+  }
+}
+
+template <int D>
+SymMat<D> BackgroundMesh<D>::metric_at(const Location<D>& loc) const {
+  RIEMESH_CHECK(loc.simplex >= 0 && static_cast<std::size_t>(loc.simplex) < num_simplices());
+  const auto v = simplex(loc.simplex);
+  // A vertex hit returns the input metric itself (no log/exp rounding).
+  for (int i = 0; i < kVerts; ++i)
+    if (loc.bary[i] == 1.0) return metrics_[v[i]];
+  SymMat<D> m[kVerts];
+  if (scheme_ == InterpScheme::kLogEuclidean) {
+    for (int i = 0; i < kVerts; ++i) m[i] = logs_[v[i]];
+    return interpolate_log_euclidean_logs<D>(m, loc.bary);
+  }
+  for (int i = 0; i < kVerts; ++i) m[i] = metrics_[v[i]];
+  return interpolate<D>(scheme_, std::span<const SymMat<D>>(m), std::span<const double>(loc.bary));
+}
+
+template <int D>
+SymMat<D> BackgroundMesh<D>::metric_at(const Vec<D>& p, Id hint, Id* found) const {
+  const Location<D> loc = locate(p, hint);
+  if (found) *found = loc.simplex;
+  return metric_at(loc);
+}
+
+template <int D>
+void BackgroundMesh<D>::interpolate_fields(const Location<D>& loc, std::span<const double> values,
+                                           int components, std::span<double> out) const {
+  if (components < 1 || values.size() != num_vertices() * static_cast<std::size_t>(components) ||
+      out.size() < static_cast<std::size_t>(components)) {
+    std::string msg = prefix();
+    msg += "field of " + std::to_string(values.size()) + " values with " +
+           std::to_string(components) + " components per vertex does not fit " +
+           std::to_string(num_vertices()) + " vertices and an output of " +
+           std::to_string(out.size());
+    throw InputError(msg);
+  }
+  RIEMESH_CHECK(loc.simplex >= 0 && static_cast<std::size_t>(loc.simplex) < num_simplices());
+  const auto v = simplex(loc.simplex);
+  const auto k = static_cast<std::size_t>(components);
+  for (std::size_t c = 0; c < k; ++c) {
+    double s = 0.0;
+    for (int i = 0; i < kVerts; ++i)
+      s += loc.bary[i] * values[k * static_cast<std::size_t>(v[i]) + c];
+    out[c] = s;
+  }
+}
+
+template class BackgroundMesh<2>;
+template class BackgroundMesh<3>;
+
+}  // namespace riemesh
