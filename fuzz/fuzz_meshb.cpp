@@ -1,0 +1,20 @@
+// libFuzzer target: the binary Medit reader (.meshb, versions 1-4, both byte orders) on
+// arbitrary bytes, in memory.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "fuzz_common.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+  for (bool planar : {true, false}) {
+    riemesh::fuzz::run_reader([&] {
+      riemesh::MeditReadOptions options;
+      options.planar_as_2d = planar;
+      riemesh::fuzz::expect_writable(
+          riemesh::medit_detail::read_medit_binary("fuzz.meshb", bytes, options));
+    });
+  }
+  return 0;
+}
