@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config    # toolchain
-  clang                                           # fuzzers (libFuzzer) and the sanitizer build
+  clang libclang-rt-14-dev                        # fuzzers (libFuzzer runtime) and the sanitizer build
   libgtest-dev libgmock-dev libbenchmark-dev      # tests and benchmarks
   libcli11-dev libeigen3-dev                      # command line, small dense algebra
   libcairo2-dev                                   # PNG/SVG rendering
