@@ -19,6 +19,7 @@ void read_element_nodes(GmshInput& in, GmshAssembler& out, int type, int nv, int
   Id v[4] = {};
   for (int k = 0; k < nv; ++k) {
     const std::int32_t tag = in.int32("a node tag");
+    if (tag <= 0) in.fail("node tag " + std::to_string(tag) + " (tags start at 1)");
     if (kept) v[k] = out.node(node_tag(tag), in);
   }
   if (kept)
