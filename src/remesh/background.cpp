@@ -156,6 +156,7 @@ void BackgroundMesh<D>::build_grid() {
   std::size_t cells = 1;
   for (int a = 0; a < D; ++a) {
     grid_.cell[a] = (hi[a] - lo[a]) / grid_.n[a];
+    hint_reach_ = std::max(hint_reach_, 3.0 * grid_.cell[a]);
     grid_.inv_cell[a] = grid_.n[a] / (hi[a] - lo[a]);
     cells *= static_cast<std::size_t>(grid_.n[a]);
   }

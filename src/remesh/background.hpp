@@ -5,12 +5,15 @@
 // interpolated values (issue 4; BOOK.md §1 "Interpolation of metrics", log-Euclidean by default),
 // and vertex fields are transferred by P1 interpolation located by walking (BOOK.md §8).
 //
-// Point location: a visibility walk from a hint (the neighbour across the face with the most
-// negative barycentric coordinate, first such face on ties), bounded in steps. When the walk
-// leaves the domain (non-convex domain, hole, point outside) or reaches its step cap, a robust
-// search takes over: the simplices overlapping p's cell of a uniform grid are tested for
-// containment, and if none contains p, rings of cells are searched for the closest simplex
-// (exact, by the distance lower bound of each ring; the last rings cover every simplex).
+// Point location: a visibility walk (the neighbour across the face with the most negative
+// barycentric coordinate, first such face on ties), bounded in steps, from the hint when it lies
+// within hint_reach() of p (a few grid cells: the remesher's hints are neighbours), otherwise
+// from the simplex nearest the centre of p's cell in a uniform grid (a far hint would cost a
+// walk across the mesh). When the walk leaves the domain (non-convex domain, hole, point
+// outside) or reaches its step cap, a robust search takes over: the simplices overlapping p's
+// cell are tested for containment, and if none contains p, rings of cells are searched for the
+// closest simplex (exact, by the distance lower bound of each ring; the last rings cover every
+// simplex).
 // Predicates are plain doubles with a relative tolerance (kBaryTolerance), which is enough here:
 // any simplex returned contains p up to that tolerance, and all choices are deterministic.
 //
@@ -64,7 +67,8 @@ class BackgroundMesh {
   BackgroundMesh(const Mesh& mesh, std::span<const double> metrics,
                  InterpScheme scheme = InterpScheme::kLogEuclidean);
 
-  /// Locates p by walking from `hint` (a simplex id; kNoId: start from p's grid cell).
+  /// Locates p by walking from `hint` (a simplex id; kNoId, or a hint whose first vertex is
+  /// farther than hint_reach() from p: from p's grid cell).
   /// Never fails: returns the containing simplex, or the closest one with inside == false.
   /// Throws InputError for a non-finite point or a hint out of range.
   Location<D> locate(const Vec<D>& p, Id hint = kNoId, LocateStats* stats = nullptr) const;
@@ -93,6 +97,8 @@ class BackgroundMesh {
   Id neighbour(Id s, int i) const { return elem2elem_[kVerts * static_cast<std::size_t>(s) + i]; }
   /// The walk's step cap (beyond it the robust search takes over).
   int max_walk_steps() const { return max_walk_steps_; }
+  /// Hints farther than this from p (from their first vertex) are replaced by the grid start.
+  double hint_reach() const { return hint_reach_; }
 
  private:
   /// Uniform grid over the vertices' bounding box; cell c lists the simplices whose bounding
@@ -128,6 +134,7 @@ class BackgroundMesh {
   std::vector<SymMat<D>> logs_;  // log M per vertex, for kLogEuclidean only
   Grid grid_;
   int max_walk_steps_ = 0;
+  double hint_reach_ = 0.0;
 };
 
 }  // namespace riemesh

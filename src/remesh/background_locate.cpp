@@ -109,6 +109,10 @@ Location<D> BackgroundMesh<D>::locate(const Vec<D>& p, Id hint, LocateStats* sta
   if (hint != kNoId && (hint < 0 || static_cast<std::size_t>(hint) >= num_simplices()))
     throw InputError("background mesh: hint " + std::to_string(hint) + " is not a simplex id");
   Id start = hint;
+  if (start != kNoId) {
+    const Vec<D> d = p - coords_[simplices_[kVerts * static_cast<std::size_t>(start)]];
+    if (dot(d, d) > hint_reach_ * hint_reach_) start = kNoId;
+  }
   if (start == kNoId) {
     int c[D];
     cell_of(p, c);
