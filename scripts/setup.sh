@@ -10,6 +10,7 @@ packages=(
   libcli11-dev libeigen3-dev                      # command line, small dense algebra
   libcairo2-dev                                   # PNG/SVG rendering
   python3-numpy python3-meshio time               # independent checks (shared/bench, validators)
+  gmsh                                            # independent .msh/.mesh reader in the io tests
 )
 
 SUDO=""
