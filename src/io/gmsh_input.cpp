@@ -12,8 +12,8 @@ namespace riemesh::gmsh_detail {
 int nodes_per_element(int type) {
   // elm-type table of the MSH specification (first- to fifth-order Lagrange elements).
   static constexpr int kNodes[] = {
-      0,  2,  3,  4,  4,  8,  6,  5,  3,  6,  9,  10, 27, 18, 14, 1,  8,  20, 15, 13,  // 0-19
-      9,  10, 12, 15, 15, 21, 4,  5,  6,  20, 35, 56, 0,  0,  0,  0,  16, 0,  0,  0,   // 20-39
+      0, 2,  3,  4,  4,  8,  6, 5, 3, 6,  9,  10, 27, 18, 14, 1, 8,  20, 15, 13,  // 0-19
+      9, 10, 12, 15, 15, 21, 4, 5, 6, 20, 35, 56, 0,  0,  0,  0, 16, 0,  0,  0,   // 20-39
   };
   if (type == 92) return 64;   // 64-node third-order hexahedron
   if (type == 93) return 125;  // 125-node fourth-order hexahedron
@@ -62,8 +62,7 @@ void GmshInput::end_data() {
 
 void GmshInput::need(std::size_t bytes, const char* what) {
   last_pos_ = pos_;
-  if (bytes > bytes_.size() - pos_)
-    fail(std::string("unexpected end of file, expected ") + what);
+  if (bytes > bytes_.size() - pos_) fail(std::string("unexpected end of file, expected ") + what);
 }
 
 std::string_view GmshInput::value_token(const char* what) {
@@ -143,9 +142,9 @@ void GmshInput::skip_section(std::string_view name) {
   }
   if (at == std::string_view::npos) fail("no " + end + " before the end of the file");
   const std::size_t line =
-      scanner_.line() + static_cast<std::size_t>(
-                            std::count(bytes_.begin() + static_cast<std::ptrdiff_t>(from),
-                                       bytes_.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+      scanner_.line() +
+      static_cast<std::size_t>(std::count(bytes_.begin() + static_cast<std::ptrdiff_t>(from),
+                                          bytes_.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
   scanner_.reset({at + end.size(), line});
   in_data_ = false;
 }

@@ -26,7 +26,7 @@ struct Entity {
   int tag = 0;
   int physical = 0;
   bool physical_group = true;  // false: no physical group (the unused point of an empty mesh)
-  std::vector<Id> elements;  // ids into the mesh arrays (vertices for points)
+  std::vector<Id> elements;    // ids into the mesh arrays (vertices for points)
   std::array<double, 6> box{};
 };
 
@@ -100,10 +100,10 @@ std::vector<Entity> make_entities(const Mesh& mesh, const std::vector<std::int32
     if (inserted) {
       entities.emplace_back();
       entities.back().physical = ref;
-      entities.back().box = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-                             std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-                             -std::numeric_limits<double>::max(),
-                             -std::numeric_limits<double>::max()};
+      entities.back().box = {
+          std::numeric_limits<double>::max(),  std::numeric_limits<double>::max(),
+          std::numeric_limits<double>::max(),  -std::numeric_limits<double>::max(),
+          -std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()};
     }
     Entity& entity = entities[it->second];
     entity.elements.push_back(static_cast<Id>(e));
@@ -261,9 +261,9 @@ void write_gmsh(const Mesh& mesh, const std::string& path, const GmshWriteOption
   // The point box is the point itself: that of its first corner.
   for (Entity& entity : entities[0])
     for (int c = 0; c < 3; ++c)
-      entity.box[c] = c < mesh.dim ? mesh.coords[static_cast<std::size_t>(entity.elements[0]) *
-                                                     mesh.dim + c]
-                                   : 0.0;
+      entity.box[c] = c < mesh.dim
+                          ? mesh.coords[static_cast<std::size_t>(entity.elements[0]) * mesh.dim + c]
+                          : 0.0;
   entities[1] = make_entities(mesh, mesh.edge_ref, mesh.edges, 2, mesh.num_edges());
   entities[2] = make_entities(mesh, mesh.tri_ref, mesh.triangles, 3, mesh.num_triangles());
   entities[3] = make_entities(mesh, mesh.tet_ref, mesh.tets, 4, mesh.num_tets());

@@ -46,11 +46,20 @@ std::string xml_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += static_cast<unsigned char>(c) < 32 ? '_' : c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += static_cast<unsigned char>(c) < 32 ? '_' : c;
     }
   }
   return out;
@@ -62,8 +71,8 @@ Array field_array(const Mesh& mesh, const Field& field, const std::string& path)
   const int dim = mesh.dim;
   const auto nc = static_cast<std::size_t>(field_components(field.kind, dim));
   if (field.values.size() != nv * nc)
-    throw Error(path + ": cannot write field '" + field.name + "': " +
-                std::to_string(field.values.size()) + " values for " + std::to_string(nv) +
+    throw Error(path + ": cannot write field '" + field.name +
+                "': " + std::to_string(field.values.size()) + " values for " + std::to_string(nv) +
                 " vertices");
   const int components = field.kind == FieldKind::kScalar   ? 1
                          : field.kind == FieldKind::kVector ? 3

@@ -13,24 +13,24 @@ namespace {
 
 // A valid 4.1 file: one triangle of ref 7 on surface 1 (lines numbered on the right).
 const char kValid[] =
-    "$MeshFormat\n"       // 1
-    "4.1 0 8\n"           // 2
-    "$EndMeshFormat\n"    // 3
-    "$Entities\n"         // 4
-    "0 0 1 0\n"           // 5
+    "$MeshFormat\n"          // 1
+    "4.1 0 8\n"              // 2
+    "$EndMeshFormat\n"       // 3
+    "$Entities\n"            // 4
+    "0 0 1 0\n"              // 5
     "1 0 0 0 1 1 0 1 7 0\n"  // 6
-    "$EndEntities\n"      // 7
-    "$Nodes\n"            // 8
-    "1 3 1 3\n"           // 9
-    "2 1 0 3\n"           // 10
-    "1\n2\n3\n"           // 11-13
+    "$EndEntities\n"         // 7
+    "$Nodes\n"               // 8
+    "1 3 1 3\n"              // 9
+    "2 1 0 3\n"              // 10
+    "1\n2\n3\n"              // 11-13
     "0 0 0\n1 0 0\n0 1 0\n"  // 14-16
-    "$EndNodes\n"         // 17
-    "$Elements\n"         // 18
-    "1 1 1 1\n"           // 19
-    "2 1 2 1\n"           // 20
-    "1 1 2 3\n"           // 21
-    "$EndElements\n";     // 22
+    "$EndNodes\n"            // 17
+    "$Elements\n"            // 18
+    "1 1 1 1\n"              // 19
+    "2 1 2 1\n"              // 20
+    "1 1 2 3\n"              // 21
+    "$EndElements\n";        // 22
 
 struct Edit {
   const char* from;  // replaced in kValid (first occurrence); null: the text is `to` alone
@@ -50,17 +50,20 @@ const Edit kBad[] = {
     {"1 0 0 0 1 1 0 1 7 0", "1 0 0 0 1 1 0 1 7",
      "bad.msh:7: $Entities: expected a bounding entity count, got '$EndEntities'"},
     {"1 3 1 3", "1 1000000000 1 3", "bad.msh:9: $Nodes: 1000000000 nodes cannot fit"},
-    {"1 3 1 3", "-1 3 1 3", "bad.msh:9: $Nodes: expected the number of node blocks (a "
-                            "non-negative integer), got '-1'"},
+    {"1 3 1 3", "-1 3 1 3",
+     "bad.msh:9: $Nodes: expected the number of node blocks (a "
+     "non-negative integer), got '-1'"},
     {"2 1 0 3", "2 1 0 4", "bad.msh:10: $Nodes: the blocks hold more nodes than the 3 announced"},
     {"2 1 0 3", "4 1 0 3", "bad.msh:10: $Nodes: entity dimension 4 (0 to 3 expected)"},
     {"2 1 0 3", "2 1 2 3", "bad.msh:10: $Nodes: parametric flag 2 (0 or 1 expected)"},
     {"1\n2\n3\n", "1\n2\n2\n", "bad.msh:17: $Nodes: node tag 2 given twice"},
     {"1\n2\n3\n", "1\n0\n3\n", "bad.msh:17: $Nodes: node tag 0 (tags start at 1)"},
-    {"1 0 0\n", "1 nan 0\n", "bad.msh:15: $Nodes: expected a coordinate (a finite real), got "
-                             "'nan'"},
-    {"0 1 0\n$EndNodes", "0 1\n$EndNodes", "bad.msh:17: $Nodes: expected a coordinate, got "
-                                           "'$EndNodes'"},
+    {"1 0 0\n", "1 nan 0\n",
+     "bad.msh:15: $Nodes: expected a coordinate (a finite real), got "
+     "'nan'"},
+    {"0 1 0\n$EndNodes", "0 1\n$EndNodes",
+     "bad.msh:17: $Nodes: expected a coordinate, got "
+     "'$EndNodes'"},
     {"0 1 0\n$EndNodes", "0 1 0 0\n$EndNodes", "bad.msh:16: $Nodes: expected $EndNodes, got '0'"},
     {"1 1 2 3\n", "1 1 2 9\n", "bad.msh:21: $Elements: unknown node tag 9"},
     {"2 1 2 1\n", "2 1 99 1\n", "bad.msh:20: $Elements: unknown element type 99"},
@@ -70,14 +73,16 @@ const Edit kBad[] = {
      "bad.msh:20: $Elements: 1 elements cannot fit in the 6 bytes left in the file"},
     {"1 1 2 3\n$EndElements\n", "1 1 2 # a long comment to make room",
      "bad.msh:21: $Elements: unexpected end of file, expected a node tag"},
-    {"$EndElements\n", "", "bad.msh:21: $Elements: unexpected end of file, expected "
-                           "$EndElements"},
+    {"$EndElements\n", "",
+     "bad.msh:21: $Elements: unexpected end of file, expected "
+     "$EndElements"},
     {"$Nodes", "$Elements\n$EndElements\n$Nodes", "bad.msh:8: $Elements: section before $Nodes"},
     {"$Elements", "$Nodes\n0 0 0 0\n$EndNodes\n$Elements",
      "bad.msh:18: $Nodes: second $Nodes section"},
     {"$Entities", "$Foo\n1 2\n$EndFo\n$Entities", "bad.msh:4: $Foo: no $EndFoo before the end"},
-    {"$Entities", "$EndFoo\n$Entities", "bad.msh:4: $EndFoo: expected a section name, got "
-                                        "'$EndFoo'"},
+    {"$Entities", "$EndFoo\n$Entities",
+     "bad.msh:4: $EndFoo: expected a section name, got "
+     "'$EndFoo'"},
     {"$EndElements\n", "$EndElements\n$NodeData\n1\n\"u\"\n0\n3\n0\n10\n1\n1 0 0\n",
      "bad.msh:30: $NodeData: field of 10 components (1 to 9 expected)"},
     {"$EndElements\n", "$EndElements\n$NodeData\n0\n0\n3\n0\n1\n2\n1 0\n7 0\n",

@@ -76,15 +76,14 @@ std::string census(const Mesh& m) {
   };
   std::size_t corners = 0;
   for (std::uint8_t t : m.vert_tag) corners += (t & kTagCorner) != 0;
-  return "dim " + std::to_string(m.dim) + " nv " + std::to_string(m.num_vertices()) +
-         " corners " + std::to_string(corners) + " edges " + std::to_string(m.num_edges()) +
-         refs(m.edge_ref) + " triangles " + std::to_string(m.num_triangles()) + refs(m.tri_ref) +
-         " tets " + std::to_string(m.num_tets()) + refs(m.tet_ref);
+  return "dim " + std::to_string(m.dim) + " nv " + std::to_string(m.num_vertices()) + " corners " +
+         std::to_string(corners) + " edges " + std::to_string(m.num_edges()) + refs(m.edge_ref) +
+         " triangles " + std::to_string(m.num_triangles()) + refs(m.tri_ref) + " tets " +
+         std::to_string(m.num_tets()) + refs(m.tet_ref);
 }
 
 bool gmsh_resave(const std::string& in, const std::string& out, const char* flags = "") {
-  const std::string command =
-      "gmsh '" + in + "' -0 " + flags + " -o '" + out + "' >/dev/null 2>&1";
+  const std::string command = "gmsh '" + in + "' -0 " + flags + " -o '" + out + "' >/dev/null 2>&1";
   return std::system(command.c_str()) == 0;
 }
 

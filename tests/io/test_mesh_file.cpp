@@ -27,8 +27,9 @@ TEST(MeshFile, FormatByExtension) {
     mesh_format("dir.v2/noext");
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "dir.v2/noext: unknown mesh file extension (.mesh, .meshb, .msh or .vtu expected)");
+    EXPECT_STREQ(
+        e.what(),
+        "dir.v2/noext: unknown mesh file extension (.mesh, .meshb, .msh or .vtu expected)");
   }
 }
 

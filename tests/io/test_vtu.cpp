@@ -91,7 +91,8 @@ TEST(Vtu, PlanarMeshGetsZeroZAndPaddedFields) {
   Mesh m = test::square_2d();
   m.fields.push_back({"v", FieldKind::kVector, std::vector<double>(18, 2.0)});
   m.fields.push_back({"m", FieldKind::kSymTensor, {}});
-  for (int v = 0; v < 9; ++v) m.fields.back().values.insert(m.fields.back().values.end(), {1, 2, 3});
+  for (int v = 0; v < 9; ++v)
+    m.fields.back().values.insert(m.fields.back().values.end(), {1, 2, 3});
   test::ScratchDir dir;
   write_vtu(m, dir.file("s.vtu"));
   const auto arrays = appended_arrays(test::read_text(dir.file("s.vtu")));
