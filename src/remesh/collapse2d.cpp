@@ -39,16 +39,21 @@ bool topology_ok(const TriMesh& m, Id slot, Id from, Id to, const Ball& bfrom, c
 }
 
 /// Geometry and quality of the triangles that keep `from` (now `to`), and lengths of new edges.
+/// A triangle may fall below lim.min_quality only when the ball was already worse (so collapses
+/// can clean up a bad region without being blocked by it).
 Outcome shape_check(const TriMesh& m, const Ball& bfrom, Id from, Id to,
                     const CollapseLimits& lim) {
   const Vec2& pt = m.xy[to];
+  double old_min = 1.0;
+  for (const Id t : bfrom.tris) old_min = std::min(old_min, tri_quality(m, t));
+  const double floor = std::min(lim.min_quality, old_min);
   for (const Id t : bfrom.tris) {
     const int i = vertex_index(m, t, from);
     const Id a = m.tv[3 * t + (i + 1) % 3], b = m.tv[3 * t + (i + 2) % 3];
     if (a == to || b == to) continue;  // removed with the edge
     const double old_area = signed_area(m.xy[from], m.xy[a], m.xy[b]);
     if (!(signed_area(pt, m.xy[a], m.xy[b]) > 1e-9 * old_area)) return Outcome::kRejectedGeometry;
-    if (tri_quality(m, to, a, b) < lim.min_quality) return Outcome::kRejectedQuality;
+    if (tri_quality(m, to, a, b) < floor) return Outcome::kRejectedQuality;
     if (edge_length(m, to, a) > lim.max_length || edge_length(m, to, b) > lim.max_length)
       return Outcome::kRejectedQuality;
   }

@@ -95,6 +95,18 @@ void collect_ball(const TriMesh& m, Id v, Ball& out) {
   } while (t != start);
 }
 
+Id find_edge_slot(const TriMesh& m, Id a, Id b) {
+  thread_local Ball ball;
+  collect_ball(m, a, ball);
+  Id found = kNoId;
+  for (const Id t : ball.tris) {
+    const int i = vertex_index(m, t, a);
+    if (m.tv[3 * t + (i + 1) % 3] == b) return 3 * t + (i + 2) % 3;  // a -> b
+    if (m.tv[3 * t + (i + 2) % 3] == b) found = 3 * t + (i + 1) % 3;  // b -> a
+  }
+  return found;
+}
+
 std::string check_tri_mesh(const TriMesh& m) {
   auto fail = [](const char* what, long id) { return std::string(what) + " at " + std::to_string(id); };
   for (std::size_t t = 0; t < m.triangle_capacity(); ++t) {

@@ -89,6 +89,10 @@ inline int vertex_index(const TriMesh& m, Id t, Id v) {
   return -1;
 }
 
+/// The slot of edge (a, b) in a triangle around a (either direction: the slot runs a -> b when
+/// one does), or kNoId when a and b are not joined.
+Id find_edge_slot(const TriMesh& m, Id a, Id b);
+
 /// Structural and geometric invariants of a TriMesh (for tests and debugging): symmetric
 /// adjacency, matching edge data on both sides, live vertex back-pointers, positive areas.
 /// Returns an empty string when all hold, otherwise the first violation.

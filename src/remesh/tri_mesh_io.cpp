@@ -54,7 +54,7 @@ void add_triangles(TriMesh& m, const Mesh& mesh) {
 }  // namespace
 
 TriMesh build_tri_mesh(const Mesh& mesh, std::span<const SymMat2> metrics,
-                       std::span<const FeatureEdge> features,
+                       std::span<const TriFeature> features,
                        std::span<const VertexCurve> vertex_curves) {
   if (mesh.dim != 2) throw InputError("2D remeshing needs a planar mesh (Dimension 2)");
   if (metrics.size() != mesh.num_vertices() || vertex_curves.size() != mesh.num_vertices())
@@ -64,7 +64,7 @@ TriMesh build_tri_mesh(const Mesh& mesh, std::span<const SymMat2> metrics,
   add_triangles(m, mesh);
   // Features: mark both sides of each listed edge, found through the triangles around a.
   const Adjacency adj = build_adjacency(mesh.triangles, 3, mesh.num_vertices());
-  for (const FeatureEdge& f : features) {
+  for (const TriFeature& f : features) {
     for (const Id t : ball(adj, f.a)) {
       const Id s = find_slot(m, t, f.a, f.b);
       if (s == kNoId) continue;

@@ -9,7 +9,7 @@
 namespace riemesh {
 
 /// A feature (boundary or interface) edge of the input, with its curve and ref.
-struct FeatureEdge {
+struct TriFeature {
   Id a, b;
   std::int32_t curve, ref;
   std::uint8_t tag;  // kTagRequired for a required edge
@@ -26,7 +26,7 @@ struct VertexCurve {
 /// Vertex tags and refs are taken from the mesh. Throws InputError for a clockwise or degenerate
 /// triangle, a non-manifold edge or a boundary edge that is not a feature.
 TriMesh build_tri_mesh(const Mesh& mesh, std::span<const SymMat2> metrics,
-                       std::span<const FeatureEdge> features,
+                       std::span<const TriFeature> features,
                        std::span<const VertexCurve> vertex_curves);
 
 /// The live part of a TriMesh as a compact Mesh (dim 2): vertices with refs and tags

@@ -10,7 +10,7 @@ namespace riemesh::test_support {
 inline TriMesh square_tri_mesh(int n, const SymMat2& metric) {
   const Mesh mesh = unit_square(n, n);
   std::vector<SymMat2> metrics(mesh.num_vertices(), metric);
-  std::vector<FeatureEdge> features;
+  std::vector<TriFeature> features;
   for (std::size_t e = 0; e < mesh.num_edges(); ++e)
     features.push_back({mesh.edges[2 * e], mesh.edges[2 * e + 1], mesh.edge_ref[e] - 1,
                         mesh.edge_ref[e], kTagNone});

@@ -2,6 +2,10 @@
 // feature data, positive areas), the domain's area and its boundary, and refuses what it must.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <tuple>
+
+#include "metric/metric.hpp"
 #include "remesh/ops2d.hpp"
 #include "remesh/square_tri_mesh.hpp"
 
@@ -171,4 +175,42 @@ TEST(Move, KeepsValidityAndQuality) {
   EXPECT_EQ(move_vertex(m, 0, Vec2{{0.1, 0.0}}, SymMat2::identity(), 0.0, 0.0),
             Outcome::kRejectedTopology);
   EXPECT_EQ(check_tri_mesh(m), "");
+}
+
+TEST(Split, LongestFirstSweepsRefineUniformly) {
+  // Splitting the edges longer than √2 at their midpoints, longest first, sweep after sweep, in a
+  // uniform metric of size 0.1 on one cell: all edges end in [√2/2 · 1/2, √2], none degenerate.
+  TriMesh m = square_tri_mesh(1, isotropic_metric<2>(0.1));
+  auto len = [&m](Id a, Id b) {
+    return edge_length_geometric(m.metric[a], m.metric[b], m.xy[b] - m.xy[a]);
+  };
+  for (int sweep = 0; sweep < 12; ++sweep) {
+    std::vector<std::tuple<double, Id, Id>> list;
+    for (std::size_t s = 0; s < m.tadj.size(); ++s) {
+      const Id si = static_cast<Id>(s);
+      if (!m.tri_alive(si / 3) || (m.tadj[si] != kNoId && m.tadj[si] < si)) continue;
+      const Id a = m.edge_from(si), b = m.edge_to(si);
+      if (len(a, b) > std::sqrt(2.0)) list.emplace_back(-len(a, b), a, b);
+    }
+    std::sort(list.begin(), list.end());
+    for (const auto& [l, a, b] : list) {
+      const Id si = find_edge_slot(m, a, b);
+      ASSERT_NE(si, kNoId);
+      NewVertex nv{0.5 * (m.xy[a] + m.xy[b]), m.metric[a]};
+      if (m.is_feature(si)) nv.curve = m.ecurve[si];
+      Id created;
+      ASSERT_EQ(split_edge(m, si, nv, 0.0, &created), Outcome::kApplied);
+    }
+    ASSERT_EQ(check_tri_mesh(m), "") << "sweep " << sweep;
+    if (list.empty()) break;
+  }
+  double lmin = 1e300, lmax = 0;
+  for (std::size_t s = 0; s < m.tadj.size(); ++s) {
+    if (!m.tri_alive(static_cast<Id>(s / 3))) continue;
+    const double l = len(m.edge_from(static_cast<Id>(s)), m.edge_to(static_cast<Id>(s)));
+    lmin = std::min(lmin, l), lmax = std::max(lmax, l);
+  }
+  EXPECT_LE(lmax, std::sqrt(2.0));
+  EXPECT_GE(lmin, 0.3);
+  EXPECT_NEAR(total_area(m), 1.0, 1e-13);
 }

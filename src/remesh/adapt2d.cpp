@@ -1,0 +1,257 @@
+// The 2D adaptation driver: prepare the metric field, then passes of split, collapse, swap and
+// smoothing sweeps over the mesh until the edge lengths settle (BOOK.md §7).
+#include "remesh/adapt2d.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "mesh/adjacency.hpp"
+#include "metric/gradation.hpp"
+#include "metric/metric.hpp"
+#include "remesh/remesh2d_context.hpp"
+#include "remesh/tri_mesh_io.hpp"
+
+namespace riemesh {
+namespace {
+
+constexpr double kLongEdge = 1.4142135623730951;   // √2
+constexpr double kShortEdge = 0.7071067811865476;  // 1/√2
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+/// Validated, clipped to [hmin, hmax] and graded copy of the input metrics.
+std::vector<SymMat2> prepare_metrics(const Mesh& in, std::span<const SymMat2> metrics,
+                                     const Adapt2dOptions& o, Adapt2dReport& report) {
+  if (metrics.size() != in.num_vertices())
+    throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
+                     std::to_string(in.num_vertices()) + " vertices");
+  std::vector<SymMat2> out(metrics.begin(), metrics.end());
+  const double lo = std::isfinite(o.hmax) ? 1.0 / (o.hmax * o.hmax) : 0.0;
+  const double hi = o.hmin > 0.0 ? 1.0 / (o.hmin * o.hmin) : std::numeric_limits<double>::max();
+  for (std::size_t v = 0; v < out.size(); ++v) {
+    require_metric(out[v], "vertex " + std::to_string(v + 1));
+    if (lo > 0.0 || hi < std::numeric_limits<double>::max()) out[v] = project_spd(out[v], lo, hi);
+  }
+  if (o.hgrad > 0.0) {
+    const Adjacency adj = build_adjacency(in.triangles, 3, in.num_vertices());
+    GradationOptions g;
+    g.mode = GradationMode::kGrowth;
+    g.threshold = o.hgrad;
+    const GradationReport r = gradate<2>(in.coords, adj.edges, std::span<SymMat2>(out), g);
+    report.gradation_before = r.measure_before;
+    report.gradation_after = r.measure_after;
+  }
+  return out;
+}
+
+/// Calls f(slot) once per live edge (the slot of the lower triangle side for interior edges).
+/// Slots created during the sweep are not visited.
+template <class F>
+void for_each_edge(const TriMesh& m, F f) {
+  const std::size_t n = m.tadj.size();
+  for (std::size_t s = 0; s < n; ++s) {
+    if (!m.tri_alive(static_cast<Id>(s / 3))) continue;
+    const Id r = m.tadj[s];
+    if (r != kNoId && r < static_cast<Id>(s)) continue;
+    f(static_cast<Id>(s));
+  }
+}
+
+/// An edge to split or collapse, by its end vertices (slots move as the mesh changes).
+struct Candidate {
+  double length;
+  Id a, b;
+};
+
+/// The edges whose metric length passes `select`, sorted by `longer_first` length (ties by ids,
+/// so the order is deterministic).
+template <class Select>
+std::vector<Candidate> candidates(const TriMesh& m, Select select, bool longer_first) {
+  std::vector<Candidate> out;
+  for_each_edge(m, [&](Id s) {
+    const Id a = m.edge_from(s), b = m.edge_to(s);
+    const double l = edge_length(m, a, b);
+    if (select(l)) out.push_back({l, a, b});
+  });
+  std::sort(out.begin(), out.end(), [longer_first](const Candidate& x, const Candidate& y) {
+    if (x.length != y.length) return longer_first ? x.length > y.length : x.length < y.length;
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+  return out;
+}
+
+/// Splits the edges longer than √2, longest first, sweep after sweep (a split's new edges wait
+/// for the next sweep, so every long edge is reached and none is halved twice in a sweep).
+long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
+  TriMesh& m = ctx.mesh();
+  long total = 0;
+  for (int sweep = 0; sweep < 40; ++sweep) {
+    const std::vector<Candidate> list =
+        candidates(m, [](double l) { return l > kLongEdge; }, true);
+    long done = 0;
+    for (const Candidate& c : list) {
+      const Id s = find_edge_slot(m, c.a, c.b);
+      if (s == kNoId) continue;
+      Id created = kNoId;
+      if (split_edge(m, s, ctx.split_point(s), 0.0, &created) == Outcome::kApplied) {
+        ctx.inherit_hint(created, c.a);
+        ++done;
+      } else {
+        ++st.rejected;
+      }
+    }
+    total += done;
+    if (done == 0) break;
+  }
+  return total;
+}
+
+/// Collapses the edges shorter than 1/√2, shortest first.
+long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
+  TriMesh& m = ctx.mesh();
+  const CollapseLimits limits{0.3, 1.3};
+  long done = 0;
+  for (const Candidate& c : candidates(m, [](double l) { return l < kShortEdge; }, false)) {
+    if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
+    const Id s = find_edge_slot(m, c.a, c.b);
+    if (s == kNoId || edge_length(m, c.a, c.b) >= kShortEdge) continue;
+    bool applied = false;
+    for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}}) {
+      if (m.frozen(from) || (m.on_curve(from) && !ctx.collapse_keeps_hausd(from, to))) continue;
+      if (collapse_edge(m, s, from, to, limits) == Outcome::kApplied) {
+        applied = true;
+        break;
+      }
+    }
+    if (applied) ++done;
+    else ++st.rejected;
+  }
+  return done;
+}
+
+long swap_sweep(TriMesh& m, PassStats& st) {
+  long done = 0;
+  for_each_edge(m, [&](Id s) {
+    if (!m.tri_alive(s / 3) || m.tadj[s] == kNoId || m.is_feature(s)) return;
+    const Outcome o = swap_edge(m, s, 1e-3);
+    if (o == Outcome::kApplied) ++done;
+    else if (o == Outcome::kRejectedGeometry) ++st.rejected;
+  });
+  return done;
+}
+
+long smooth_sweep(Remesh2dContext& ctx, PassStats& st) {
+  TriMesh& m = ctx.mesh();
+  long done = 0;
+  for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
+    const Id v = static_cast<Id>(vi);
+    if (!m.vert_alive(v) || m.frozen(v)) continue;
+    NewVertex target;
+    if (!ctx.smoothing_target(v, target)) continue;
+    if (move_vertex(m, v, target.p, target.metric, target.param, 0.6) == Outcome::kApplied) {
+      ctx.inherit_hint(v, v);
+      ++done;
+    } else {
+      ++st.rejected;
+    }
+  }
+  return done;
+}
+
+void summarize(const TriMesh& m, PassStats& st) {
+  long n = 0, in = 0;
+  double sum = 0, lmin = std::numeric_limits<double>::infinity(), lmax = 0;
+  for_each_edge(m, [&](Id s) {
+    const double l = edge_length(m, m.edge_from(s), m.edge_to(s));
+    ++n, sum += l, lmin = std::min(lmin, l), lmax = std::max(lmax, l);
+    in += (l >= kShortEdge && l <= kLongEdge) ? 1 : 0;
+  });
+  double qsum = 0, qmin = 1.0;
+  long nt = 0;
+  for (std::size_t t = 0; t < m.triangle_capacity(); ++t) {
+    if (!m.tri_alive(static_cast<Id>(t))) continue;
+    const double q = tri_quality(m, static_cast<Id>(t));
+    ++nt, qsum += q, qmin = std::min(qmin, q);
+  }
+  st.vertices = m.num_live_vertices();
+  st.triangles = m.num_live_triangles();
+  st.len_min = lmin, st.len_max = lmax, st.len_mean = n ? sum / n : 0.0;
+  st.len_in = n ? static_cast<double>(in) / n : 0.0;
+  st.q_min = qmin, st.q_mean = nt ? qsum / nt : 0.0;
+}
+
+/// Where and why the passes stalled: the longest (or shortest) edge left and its place.
+std::string stall_reason(const TriMesh& m) {
+  double worst = 0;
+  Id where = kNoId;
+  for_each_edge(m, [&](Id s) {
+    const double l = edge_length(m, m.edge_from(s), m.edge_to(s));
+    const double badness = l > 1.0 ? l : 1.0 / l;
+    if (badness > worst) worst = badness, where = s;
+  });
+  if (where == kNoId) return "no edge left";
+  const Vec2 p = 0.5 * (m.xy[m.edge_from(where)] + m.xy[m.edge_to(where)]);
+  const double l = edge_length(m, m.edge_from(where), m.edge_to(where));
+  return std::string(l > 1.0 ? "an edge stays too long" : "an edge stays too short") +
+         " (metric length " + num(l) + ") near (" + num(p[0]) + ", " + num(p[1]) +
+         "): the operators' checks refuse to change it further";
+}
+
+}  // namespace
+
+void Adapt2dOptions::validate() const {
+  if (!(hmin >= 0.0) || !std::isfinite(hmin)) throw InputError("--hmin must be a finite size >= 0");
+  if (!(hmax > 0.0)) throw InputError("--hmax must be a size > 0");
+  if (hmin > 0.0 && hmax < hmin)
+    throw InputError("--hmin " + num(hmin) + " is larger than --hmax " + num(hmax));
+  if (!(hgrad == 0.0 || (hgrad > 1.0 && std::isfinite(hgrad))))
+    throw InputError("--hgrad must be 0 (off) or a ratio > 1, got " + num(hgrad));
+  if (!(hausd >= 0.0) || !std::isfinite(hausd)) throw InputError("--hausd must be a distance >= 0");
+  if (!(angle_deg >= 0.0 && angle_deg <= 180.0))
+    throw InputError("--angle must be in [0, 180] degrees, got " + num(angle_deg));
+  if (max_passes < 1 || max_passes > 1000) throw InputError("--passes must be in 1..1000");
+}
+
+Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
+                      const Adapt2dOptions& options, const PassCallback& on_pass) {
+  options.validate();
+  if (input.dim != 2) throw InputError("2D remeshing needs a planar mesh (Dimension 2)");
+  if (input.num_triangles() == 0) throw InputError("the mesh has no triangles");
+  Adapt2dResult result;
+  const std::vector<SymMat2> prepared = prepare_metrics(input, metrics, options, result.report);
+  Remesh2dContext ctx(input, prepared, options);
+  TriMesh& m = ctx.mesh();
+  for (int pass = 1; pass <= options.max_passes; ++pass) {
+    const auto t0 = std::chrono::steady_clock::now();
+    PassStats st;
+    st.pass = pass;
+    if (options.insert) {
+      st.splits = split_sweeps(ctx, st);
+      st.collapses = collapse_sweep(ctx, st);
+    }
+    for (int k = 0; k < 2; ++k) {
+      if (options.swap) st.swaps += swap_sweep(m, st);
+      if (options.move) st.moves += smooth_sweep(ctx, st);
+    }
+    summarize(m, st);
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    result.report.passes.push_back(st);
+    if (on_pass) on_pass(st);
+    if (st.splits + st.collapses <= static_cast<long>(st.vertices / 1000)) {
+      result.report.converged = true;
+      break;
+    }
+  }
+  if (!result.report.converged) result.report.stall_reason = stall_reason(m);
+  result.mesh = to_mesh(m, &result.metrics);
+  return result;
+}
+
+}  // namespace riemesh

@@ -1,0 +1,75 @@
+#pragma once
+// 2D anisotropic remeshing to a metric field (issue #4): a planar triangle mesh and one metric per
+// vertex in, a unit mesh for that field out, the domain's boundary curves, refs and corners kept.
+//
+// Method (BOOK.md §1, §3, §7): metrics are clipped to [hmin, hmax] and graded on the input edges;
+// the input mesh becomes the background mesh (new vertices take the log-Euclidean interpolation of
+// the INPUT field); boundary and interface curves are reconstructed (cubic, see
+// boundary_curves.hpp) and boundary vertices are always placed on that reconstruction, with the
+// metric tightened along the curve so that chords stay within hausd. Passes then alternate edge
+// splits (metric length > √2), collapses (< 1/√2), swaps and smoothing until the lengths settle.
+#include <functional>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/symmat.hpp"
+#include "mesh/mesh.hpp"
+#include "metric/interpolation.hpp"
+
+namespace riemesh {
+
+struct Adapt2dOptions {
+  double hmin = 0.0;                                         ///< smallest size (0: none)
+  double hmax = std::numeric_limits<double>::infinity();     ///< largest size (inf: none)
+  double hgrad = 1.3;       ///< metric growth bound between neighbours (MMG's -hgrad); 0: off
+  double hausd = 0.01;      ///< largest distance between boundary chords and the curve
+  double angle_deg = 45.0;  ///< corner when the boundary turns by more than this (MMG's -ar)
+  bool detect_angles = true;  ///< false: corners only from tags and refs (MMG's -nr)
+  bool insert = true;         ///< split and collapse (false: MMG's -noinsert)
+  bool swap = true;           ///< edge swaps (false: -noswap)
+  bool move = true;           ///< vertex smoothing (false: -nomove)
+  InterpScheme interp = InterpScheme::kLogEuclidean;  ///< metric interpolation for new vertices
+  int max_passes = 15;        ///< bound on the passes (each pass is itself bounded)
+
+  /// Throws InputError naming the option when a value is out of range or options contradict.
+  void validate() const;
+};
+
+/// What one pass did and the state of the mesh after it.
+struct PassStats {
+  int pass = 0;
+  long splits = 0, collapses = 0, swaps = 0, moves = 0;
+  long rejected = 0;  ///< operations refused by their checks (not errors)
+  std::size_t vertices = 0, triangles = 0;
+  double len_min = 0, len_max = 0, len_mean = 0, len_in = 0;  ///< metric edge lengths
+  double q_min = 0, q_mean = 0;                               ///< metric quality (1 = regular)
+  double seconds = 0;
+};
+
+struct Adapt2dReport {
+  std::vector<PassStats> passes;
+  bool converged = false;
+  /// Why the passes stopped without converging, with a place ("... near (x, y)"); empty if
+  /// they converged.
+  std::string stall_reason;
+  double gradation_before = 0, gradation_after = 0;  ///< max growth factor over input edges
+};
+
+struct Adapt2dResult {
+  Mesh mesh;                     ///< the adapted mesh (dim 2)
+  std::vector<SymMat2> metrics;  ///< the metric at each output vertex
+  Adapt2dReport report;
+};
+
+/// Called after each pass (for progress lines and -v statistics).
+using PassCallback = std::function<void(const PassStats&)>;
+
+/// Adapts a planar triangle mesh to the metric field given at its vertices. Throws InputError for
+/// a mesh that is not planar, has no triangles, has a clockwise or degenerate triangle, or for a
+/// metric that is not SPD or finite (naming the vertex). Deterministic.
+Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
+                      const Adapt2dOptions& options, const PassCallback& on_pass = {});
+
+}  // namespace riemesh

@@ -1,0 +1,202 @@
+#include "remesh/remesh2d_context.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "remesh/tri_mesh_io.hpp"
+
+namespace riemesh {
+namespace {
+
+std::vector<double> flatten(std::span<const SymMat2> metrics) {
+  std::vector<double> out;
+  out.reserve(3 * metrics.size());
+  for (const SymMat2& m : metrics) out.insert(out.end(), {m.c[0], m.c[1], m.c[2]});
+  return out;
+}
+
+/// Fraction t of the way from a to b where half the metric length lies on each side, for sizes
+/// varying geometrically along the edge: length density l_a q^s with q = l_b/l_a, so
+/// q^t = (q + 1)/2.
+double metric_midpoint(double la, double lb) {
+  const double q = lb / la;
+  if (std::abs(q - 1.0) < 1e-9) return 0.5;
+  return std::log(0.5 * (q + 1.0)) / std::log(q);
+}
+
+}  // namespace
+
+Remesh2dContext::Remesh2dContext(const Mesh& input, std::span<const SymMat2> metrics,
+                                 const Adapt2dOptions& options)
+    : options_(options),
+      curves_(build_boundary_curves(input, {options.angle_deg, options.detect_angles})),
+      background_(input, flatten(metrics), options.interp),
+      num_input_vertices_(input.num_vertices()) {
+  const std::size_t nv = input.num_vertices();
+  std::vector<TriFeature> features;
+  for (const FeatureEdge& f : curves_.edges) {
+    const bool required = f.input_edge != kNoId && !input.edge_tag.empty() &&
+                          (input.edge_tag[f.input_edge] & kTagRequired);
+    features.push_back({f.v0, f.v1, static_cast<std::int32_t>(f.curve),
+                        curves_.curves[f.curve].ref,
+                        static_cast<std::uint8_t>(required ? kTagRequired : kTagNone)});
+  }
+  std::vector<VertexCurve> vcurves(nv);
+  Mesh tagged = input;
+  tagged.vert_tag.resize(nv, kTagNone);
+  tagged.vert_ref.resize(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const auto at = curves_.curves_at(static_cast<Id>(v));
+    if (curves_.corner[v]) {
+      tagged.vert_tag[v] |= kTagCorner;
+    } else if (!at.empty()) {
+      vcurves[v] = {static_cast<std::int32_t>(at[0].curve), at[0].param};
+    }
+  }
+  mesh_ = build_tri_mesh(tagged, metrics, features, vcurves);
+  hint_.assign(nv, kNoId);
+  for (std::size_t t = 0; t < input.num_triangles(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      Id& h = hint_[input.triangles[3 * t + i]];
+      if (h == kNoId) h = static_cast<Id>(t);
+    }
+  // Boundary vertices get the metric tightened along their curve for hausd.
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!mesh_.on_curve(static_cast<Id>(v))) continue;
+    mesh_.metric[v] = metric_for(mesh_.xy[v], mesh_.vcurve[v], mesh_.vparam[v], static_cast<Id>(v));
+  }
+}
+
+double Remesh2dContext::param_on(Id v, std::int32_t c, double near) const {
+  const BoundaryCurve& curve = curves_.curves[c];
+  if (mesh_.vcurve[v] == c) return unwrap_near(curve, near, mesh_.vparam[v]);
+  double best = near, dist = std::numeric_limits<double>::infinity();
+  if (static_cast<std::size_t>(v) < num_input_vertices_) {
+    for (const CurveVertex& cv : curves_.curves_at(v)) {
+      if (cv.curve != c) continue;
+      const double s = unwrap_near(curve, near, cv.param);
+      if (std::abs(s - near) < dist) best = s, dist = std::abs(s - near);
+    }
+  }
+  return best;
+}
+
+SymMat2 Remesh2dContext::metric_for(const Vec2& p, std::int32_t curve, double s,
+                                    Id hint_vertex) const {
+  Id found = kNoId;
+  const Id hint = static_cast<std::size_t>(hint_vertex) < hint_.size() ? hint_[hint_vertex] : kNoId;
+  SymMat2 m = background_.metric_at(p, hint, &found);
+  last_found_ = found;
+  if (curve == kNoCurve || !(options_.hausd > 0.0)) return m;
+  const BoundaryCurve& c = curves_.curves[curve];
+  const double h = std::max(hausd_size(c, s, options_.hausd), options_.hmin);
+  if (!std::isfinite(h)) return m;
+  // Rank-one tightening along the unit tangent T: M + (1/h² − TᵀMT) TTᵀ when the metric allows
+  // more than h along the curve; lengths across the curve are unchanged.
+  const Vec2 t = normalize(tangent(c, s));
+  const double add = 1.0 / (h * h) - quadratic(m, t);
+  if (add > 0.0) m += add * outer(t);
+  return m;
+}
+
+void Remesh2dContext::inherit_hint(Id v, Id /*near*/) {
+  if (hint_.size() <= static_cast<std::size_t>(v)) hint_.resize(v + 1, kNoId);
+  hint_[v] = last_found_;
+}
+
+NewVertex Remesh2dContext::split_point(Id slot) const {
+  const Id a = mesh_.edge_from(slot), b = mesh_.edge_to(slot);
+  const Vec2 ab = mesh_.xy[b] - mesh_.xy[a];
+  const double t = metric_midpoint(length(mesh_.metric[a], ab), length(mesh_.metric[b], ab));
+  const Id near = t < 0.5 ? a : b;
+  NewVertex nv;
+  const std::int32_t c = mesh_.ecurve[slot];
+  if (c == kNoCurve) {
+    nv.p = mesh_.xy[a] + t * ab;
+    nv.metric = metric_for(nv.p, kNoCurve, 0.0, near);
+    return nv;
+  }
+  const BoundaryCurve& curve = curves_.curves[c];
+  const double raw_a = mesh_.vcurve[a] == c ? mesh_.vparam[a] : param_on(a, c, 0.0);
+  const double sb = param_on(b, c, raw_a);
+  const double sa = param_on(a, c, sb);
+  const double s = param_at_fraction(curve, sa, sb, t);
+  nv.p = point(curve, s);
+  nv.curve = c;
+  nv.param = wrap_param(curve, s);
+  nv.metric = metric_for(nv.p, c, s, near);
+  return nv;
+}
+
+void Remesh2dContext::curve_neighbours(Id v, Id& prev, Id& next) const {
+  prev = next = kNoId;
+  thread_local Ball ball;
+  collect_ball(mesh_, v, ball);
+  const std::int32_t c = mesh_.vcurve[v];
+  Id found[2] = {kNoId, kNoId};
+  int n = 0;
+  for (const Id t : ball.tris) {
+    const int i = vertex_index(mesh_, t, v);
+    const Id cand[2] = {mesh_.tv[3 * t + (i + 2) % 3], mesh_.tv[3 * t + (i + 1) % 3]};
+    const Id slots[2] = {3 * t + (i + 1) % 3, 3 * t + (i + 2) % 3};
+    for (int k = 0; k < 2; ++k)
+      if (mesh_.ecurve[slots[k]] == c && n < 2 && (n == 0 || found[0] != cand[k]))
+        found[n++] = cand[k];
+  }
+  if (n < 2) return;
+  const double s = mesh_.vparam[v];
+  const bool first_before = param_on(found[0], c, s) < s;
+  prev = first_before ? found[0] : found[1];
+  next = first_before ? found[1] : found[0];
+}
+
+bool Remesh2dContext::smoothing_target(Id v, NewVertex& out) const {
+  if (mesh_.frozen(v)) return false;
+  const std::int32_t c = mesh_.vcurve[v];
+  if (c == kNoCurve) {
+    thread_local Ball ball;
+    collect_ball(mesh_, v, ball);
+    if (!ball.closed) return false;
+    Vec2 sum = Vec2::zero();
+    for (const Id t : ball.tris) {
+      const Id x = mesh_.tv[3 * t + (vertex_index(mesh_, t, v) + 1) % 3];
+      const double l = edge_length(mesh_, x, v);
+      sum += mesh_.xy[x] + (mesh_.xy[v] - mesh_.xy[x]) / l;  // unit metric length from x
+    }
+    out.p = sum / static_cast<double>(ball.tris.size());
+    out.curve = kNoCurve;
+    out.metric = metric_for(out.p, kNoCurve, 0.0, v);
+    return true;
+  }
+  Id prev, next;
+  curve_neighbours(v, prev, next);
+  if (prev == kNoId) return false;
+  const BoundaryCurve& curve = curves_.curves[c];
+  const double s = mesh_.vparam[v];
+  const double sp = param_on(prev, c, s), sn = param_on(next, c, s);
+  const double a1 = length(curve, sp, s), a2 = length(curve, s, sn);
+  if (!(a1 > 0.0 && a2 > 0.0)) return false;
+  // Metric length per unit arc on each side; balance the two metric lengths.
+  const double d1 = edge_length(mesh_, prev, v) / a1, d2 = edge_length(mesh_, v, next) / a2;
+  const double snew = param_at_fraction(curve, sp, sn, d2 / (d1 + d2));
+  out.p = point(curve, snew);
+  out.curve = c;
+  out.param = wrap_param(curve, snew);
+  out.metric = metric_for(out.p, c, snew, v);
+  return true;
+}
+
+bool Remesh2dContext::collapse_keeps_hausd(Id from, Id to) const {
+  if (!(options_.hausd > 0.0)) return true;
+  Id prev, next;
+  curve_neighbours(from, prev, next);
+  if (prev == kNoId) return false;
+  const Id other = prev == to ? next : prev;
+  const std::int32_t c = mesh_.vcurve[from];
+  const double s = mesh_.vparam[from];
+  return chord_deviation(curves_.curves[c], param_on(to, c, s), param_on(other, c, s)) <=
+         options_.hausd;
+}
+
+}  // namespace riemesh

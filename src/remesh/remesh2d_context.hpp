@@ -1,0 +1,60 @@
+#pragma once
+// The state of one 2D adaptation (internal to remesh/): the mesh being changed, the background
+// mesh with the input metric field, the input's boundary curves, and the geometric rules that
+// place new and moved vertices (on the curves, at metric midpoints) and give them their metric.
+#include <vector>
+
+#include "remesh/adapt2d.hpp"
+#include "remesh/background.hpp"
+#include "remesh/boundary_curves.hpp"
+#include "remesh/ops2d.hpp"
+
+namespace riemesh {
+
+class Remesh2dContext {
+ public:
+  /// Takes the (clipped, graded) input metrics; the mesh's vertex ids become TriMesh ids.
+  Remesh2dContext(const Mesh& input, std::span<const SymMat2> metrics,
+                  const Adapt2dOptions& options);
+
+  TriMesh& mesh() { return mesh_; }
+  const TriMesh& mesh() const { return mesh_; }
+  const Adapt2dOptions& options() const { return options_; }
+
+  /// The vertex to insert at the middle of the edge at `slot`: the metric midpoint of an interior
+  /// edge, the arc-length midpoint along the curve of a feature edge.
+  NewVertex split_point(Id slot) const;
+
+  /// The metric for a vertex at p (on curve `curve` at parameter s, or kNoCurve), from the
+  /// background field near the hint vertex's location, tightened along the curve for hausd.
+  SymMat2 metric_for(const Vec2& p, std::int32_t curve, double s, Id hint_vertex) const;
+
+  /// Where smoothing would put v (inside: metric-weighted average of the unit-length points
+  /// seen from its neighbours; on a curve: the curve point balancing the metric lengths to its
+  /// two curve neighbours). False when v may not move.
+  bool smoothing_target(Id v, NewVertex& out) const;
+
+  /// For a collapse of `from` (on a curve) into `to`: true when the chord that replaces the two
+  /// curve edges at `from` stays within hausd of the curve.
+  bool collapse_keeps_hausd(Id from, Id to) const;
+
+  /// Records, for vertex v just created or moved, the background triangle found by the last
+  /// metric_for query (the start of its next walk).
+  void inherit_hint(Id v, Id near);
+
+ private:
+  /// Parameter of vertex v on curve c, in the unwrapped branch nearest to `near`.
+  double param_on(Id v, std::int32_t c, double near) const;
+  /// The two vertices joined to v by feature edges of v's curve (kNoId when missing).
+  void curve_neighbours(Id v, Id& prev, Id& next) const;
+
+  Adapt2dOptions options_;
+  BoundaryCurves curves_;
+  BackgroundMesh<2> background_;
+  TriMesh mesh_;
+  std::vector<Id> hint_;            // per vertex: a background triangle near it
+  mutable Id last_found_ = kNoId;   // background triangle of the last metric_for query
+  std::size_t num_input_vertices_ = 0;
+};
+
+}  // namespace riemesh
