@@ -5,9 +5,23 @@
 
 namespace riemesh::cli {
 
+/// Thrown by a command that has printed its result and must exit with `code` (1 for an invalid
+/// mesh in `riemesh check`); main returns the code.
+struct ExitStatus {
+  int code;
+};
+
 /// `riemesh metric ...` (the metric calculator and, later, metric construction).
 void register_metric(CLI::App& app);
 /// `riemesh demo`: a short tour on embedded inputs.
 void register_demo(CLI::App& app);
+/// `riemesh check FILE`: validity report (exit 0 valid, 1 invalid, 2 unreadable).
+void register_check(CLI::App& app);
+/// `riemesh stats FILE [--metric M] [--json] [--plot OUT]`: counts, measures, quality, lengths.
+void register_stats(CLI::App& app);
+/// `riemesh convert IN OUT`: mesh format conversion by extension.
+void register_convert(CLI::App& app);
+/// `riemesh render FILE -o OUT.png|OUT.svg`: a picture of a mesh.
+void register_render(CLI::App& app);
 
 }  // namespace riemesh::cli

@@ -12,6 +12,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   riemesh::cli::register_metric(app);
   riemesh::cli::register_demo(app);
+  riemesh::cli::register_check(app);
+  riemesh::cli::register_stats(app);
+  riemesh::cli::register_convert(app);
+  riemesh::cli::register_render(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -19,6 +23,8 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::fprintf(stderr, "riemesh: error: %s (see -h)\n", e.what());
     return 2;
+  } catch (const riemesh::cli::ExitStatus& e) {
+    return e.code;
   } catch (const riemesh::InputError& e) {
     std::fprintf(stderr, "riemesh: error: %s\n", e.what());
     return 2;

@@ -1,0 +1,47 @@
+#include "apps/mesh_args.hpp"
+
+#include "core/error.hpp"
+#include "io/mesh_file.hpp"
+#include "io/sol.hpp"
+#include "mesh/check.hpp"
+#include "metric/mesh_quality.hpp"
+
+namespace riemesh::cli {
+
+Mesh load_mesh(const std::string& path) { return read_mesh(path); }
+
+std::vector<double> load_metric(const std::string& path, const Mesh& mesh) {
+  std::vector<Field> fields = read_sol(path, mesh);
+  const Field* metric = nullptr;
+  for (const Field& f : fields)
+    if (f.kind == FieldKind::kSymTensor) {
+      if (metric) throw InputError(path + ": holds several tensor fields, expected one metric");
+      metric = &f;
+    }
+  if (!metric)
+    throw InputError(path + ": holds no symmetric tensor field (type 3), expected a metric");
+  try {
+    validate_metric_field(mesh, metric->values);
+  } catch (const InputError& e) {
+    std::string msg = path;
+    msg += ": ";
+    msg += e.what();
+    throw InputError(msg);
+  }
+  return metric->values;
+}
+
+void require_measurable(const Mesh& mesh, const std::string& path) {
+  const CheckReport r = check_mesh(mesh);
+  for (CheckCategory c : {CheckCategory::kArraySize, CheckCategory::kIdOutOfRange,
+                          CheckCategory::kNonFiniteCoordinate})
+    if (r.count(c) > 0) {
+      std::string msg = path;
+      msg += ": ";
+      msg += to_string(c);
+      msg += " (see riemesh check)";
+      throw InputError(msg);
+    }
+}
+
+}  // namespace riemesh::cli
