@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# riemesh check and riemesh stats: exit codes, and stats --json values on a hand-made mesh.
+set -u
+. "$(dirname "$0")/cli_lib.sh"
+
+# --- check -------------------------------------------------------------------------------------
+out=$("$R" check "$SHARED/data/2d/naca0012.mesh"); code=$?
+if [ $code -eq 0 ] && [[ "$out" == *": valid, planar"* ]]; then ok check-valid; else ko "check-valid: $code $out"; fi
+"$R" check "$SHARED/data/vol/$(ls "$SHARED/data/vol" | grep -m1 '\.mesh$')" >/dev/null; code=$?
+[ $code -eq 0 ] || [ $code -eq 1 ] && ok "check-volume-runs ($code)" || ko "check-volume-runs: $code"
+
+# A truncated file: unreadable -> exit 2, one line.
+head -c 60000 "$SHARED/data/2d/naca0012.mesh" >"$TMP/broken.mesh"
+expect_error check-truncated check "$TMP/broken.mesh"
+expect_error check-missing check "$TMP/none.mesh"
+expect_error check-extension check "$TMP/mesh.txt"
+
+# An inverted triangle (clockwise 1 3 2): invalid -> exit 1, the issue named with a location.
+write_two_triangles "$TMP/two.mesh"
+sed 's/^1 2 3 1$/1 3 2 1/' "$TMP/two.mesh" >"$TMP/inverted.mesh"
+out=$("$R" check "$TMP/inverted.mesh"); code=$?
+if [ $code -eq 1 ] && [[ "$out" == *"INVALID"* ]] && [[ "$out" == *"inverted element: 1 (first: triangle 1 at ("* ]]; then
+  ok check-inverted
+else
+  ko "check-inverted: $code $out"
+fi
+"$R" check "$TMP/two.mesh" >/dev/null && ok check-two-triangles || ko check-two-triangles
+
+# --- stats --json on two right triangles ------------------------------------------------------
+# Areas ½ each; Euclidean mean ratio 4√3·½/(1+1+2) = √3/2 (bin [0.8, 0.9)). With M = diag(4, 1):
+# lengths 2 (x edges), 1 (y edges), √5 (diagonal) -> 2 of 5 in [1/√2, √2]; histogram bins
+# [1, √2): 2 and [2, 2√2): 3; metric quality 4√3·sqrt(det M)·½/(4+1+5) = 0.4√3 (bin [0.6, 0.7)).
+write_metric "$TMP/m.sol" 4 "4 0 1" "4 0 1" "4 0 1" "4 0 1"
+json=$("$R" stats --json "$TMP/two.mesh" --metric "$TMP/m.sol"); code=$?
+if [ $code -ne 0 ]; then ko "stats-json: exit $code"; fi
+check_json() {  # NAME PYTHON-BOOLEAN-EXPRESSION-ON-j
+  if /usr/bin/python3 -c "import json,sys,math; j=json.loads(sys.argv[1]); sys.exit(0 if ($2) else 1)" "$json"; then
+    ok "$1"; else ko "$1: $2 on $json"; fi
+}
+[ "$(printf '%s\n' "$json" | wc -l)" -eq 1 ] && ok stats-json-one-line || ko stats-json-one-line
+check_json stats-keys 'set(j) == {"file","dim","kind","valid","counts","refs","measure","quality","metric"}'
+check_json stats-kind 'j["dim"] == 2 and j["kind"] == "planar" and j["valid"] is True'
+check_json stats-counts 'j["counts"] == {"vertices":4,"edges":5,"triangles":2,"tetrahedra":0,"boundary_edges":4,"boundary_triangles":0,"corners":0,"ridges":0,"required_vertices":0}'
+check_json stats-refs 'j["refs"] == {"vertices":[1],"edges":[1,2,3,4],"triangles":[1,2],"tetrahedra":[]}'
+check_json stats-measure 'j["measure"] == {"min":0.5,"max":0.5,"total":1.0}'
+check_json stats-quality 'all(abs(j["quality"][k] - math.sqrt(3)/2) < 1e-15 for k in ("min","mean","max"))'
+check_json stats-quality-hist 'j["quality"]["histogram"]["counts"] == [0]*8+[2,0] and len(j["quality"]["histogram"]["edges"]) == 11'
+check_json stats-length 'abs(j["metric"]["edge_length"]["min"]-1) < 1e-14 and abs(j["metric"]["edge_length"]["max"]-math.sqrt(5)) < 1e-14 and abs(j["metric"]["edge_length"]["mean"]-(6+math.sqrt(5))/5) < 1e-14'
+check_json stats-length-hist 'j["metric"]["edge_length"]["histogram"]["counts"] == [0,0,0,0,0,2,0,3,0,0]'
+check_json stats-length-edges 'abs(j["metric"]["edge_length"]["histogram"]["edges"][4] - 2**-0.5) < 1e-15 and j["metric"]["edge_length"]["histogram"]["edges"][0] == 0'
+check_json stats-unit-fraction 'j["metric"]["edge_length"]["unit_fraction"] == 0.4'
+check_json stats-metric-quality 'abs(j["metric"]["quality"]["min"] - 0.4*math.sqrt(3)) < 1e-14 and j["metric"]["quality"]["histogram"]["counts"][6] == 2'
+json=$("$R" stats --json "$TMP/two.mesh")
+check_json stats-no-metric-key '"metric" not in j'
+json=$("$R" stats --json "$TMP/inverted.mesh")
+check_json stats-inverted 'j["valid"] is False and j["measure"]["min"] == -0.5 and j["quality"]["min"] < 0'
+
+# Real data: the L-shape with its metric, text and JSON.
+json=$("$R" stats --json "$SHARED/data/formats/lshape.mesh" --metric "$SHARED/data/formats/lshape_metric.sol")
+check_json stats-lshape 'j["counts"]["vertices"] == 372 and sum(j["metric"]["edge_length"]["histogram"]["counts"]) == j["counts"]["edges"] and 0 <= j["metric"]["edge_length"]["unit_fraction"] <= 1'
+"$R" stats "$SHARED/data/2d/naca0012.mesh" | grep -q "quality (Euclidean)" && ok stats-text || ko stats-text
+
+# --plot: a PNG of the histograms.
+"$R" stats "$TMP/two.mesh" --metric "$TMP/m.sol" --plot "$TMP/h.png" >/dev/null
+[ "$(head -c 8 "$TMP/h.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] && ok stats-plot || ko stats-plot
+
+# --- bad inputs: exit 2, one line, no output ----------------------------------------------------
+write_metric "$TMP/short.sol" 3 "4 0 1" "4 0 1" "4 0 1"
+expect_error stats-metric-count stats "$TMP/two.mesh" --metric "$TMP/short.sol"
+write_metric "$TMP/indefinite.sol" 4 "4 0 1" "4 0 1" "1 2 1" "4 0 1"
+expect_error stats-metric-not-spd stats --json "$TMP/two.mesh" --metric "$TMP/indefinite.sol"
+grep -q "vertex 3" "$TMP/err" && ok stats-metric-names-vertex || ko "stats-metric-names-vertex: $(cat "$TMP/err")"
+expect_error stats-missing stats "$TMP/none.mesh"
+expect_error stats-missing-metric stats "$TMP/two.mesh" --metric "$TMP/none.sol"
+expect_error stats-plot-extension stats "$TMP/two.mesh" --plot "$TMP/h.jpg"
+expect_no_file stats-plot-extension-no-file "$TMP/h.jpg"
+expect_error stats-bad-width stats "$TMP/two.mesh" --plot "$TMP/w.png" --width 3
+expect_no_file stats-bad-width-no-file "$TMP/w.png"
+expect_error stats-truncated stats --json "$TMP/broken.mesh"
+
+exit $fail
