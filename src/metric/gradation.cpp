@@ -22,6 +22,7 @@ void GradationOptions::validate() const {
       break;
     case GradationMode::kHShock:
     case GradationMode::kGrowth:
+    case GradationMode::kGrowthPhysical:
       if (!(threshold > 1.0)) throw InputError("gradation: H-shock/growth threshold must be > 1");
       break;
     default:
@@ -104,6 +105,7 @@ double graded_size(const GradationOptions& o, double hs, double hl, double len) 
       return s.log_c > log_beta ? hs * std::exp(s.length * log_beta) : hl;
     }
     case GradationMode::kGrowth:
+    case GradationMode::kGrowthPhysical:
       return std::min(hl, hs + len * std::log(o.threshold));
   }
   return hl;
@@ -234,6 +236,24 @@ bool correct_growth(const EdgeGeom<D>& e, std::span<SymMat<D>> m, const Gradatio
   return into_a || into_b;
 }
 
+/// Physical-space growth: M_B grown to A keeps B's directions with sizes h_i + |AB| ln β, i.e.
+/// η_i = (1 + |AB| ln β / h_i)⁻² per principal direction; then M_A ← M_A ∩ grown, both ways.
+template <int D>
+bool correct_growth_physical(const EdgeGeom<D>& e, std::span<SymMat<D>> m,
+                             const GradationOptions& o, std::vector<char>& touched) {
+  const double add = e.len * std::log(o.threshold);
+  auto grow = [&](int32_t to, int32_t from) {
+    MetricSizes<D> s = sizes(m[from]);
+    for (int i = 0; i < D; ++i) s.sizes[i] += add;
+    if (!intersect_into(m[to], metric_from_sizes(s.directions, s.sizes))) return false;
+    touched[to] = 1;
+    return true;
+  };
+  const bool into_a = grow(e.a, e.b);
+  const bool into_b = grow(e.b, e.a);
+  return into_a || into_b;
+}
+
 /// Max over edges of the H-variation (hv) or H-shock of the field.
 template <int D>
 double field_measure(const std::vector<EdgeGeom<D>>& geom, std::span<const SymMat<D>> m,
@@ -284,6 +304,8 @@ GradationReport gradate(std::span<const double> coords, std::span<const int32_t>
         c = correct_isotropic(e, metrics, h, options, touched);
       else if (options.mode == GradationMode::kGrowth)
         c = correct_growth(e, metrics, options, touched);
+      else if (options.mode == GradationMode::kGrowthPhysical)
+        c = correct_growth_physical(e, metrics, options, touched);
       else
         c = correct_anisotropic(e, metrics, options, touched);
       changed = changed || c;

@@ -17,6 +17,11 @@ enum class GradationMode {
   kHVariation,  ///< size gradient v = (h_B − h_A)/|AB| <= threshold (α > 0)
   kHShock,      ///< H-shock c = (h_B/h_A)^{1/L} <= threshold (β > 1)
   kGrowth,  ///< metric-space growth M_B → η² M_B, η = (1 + ℓ_{M_B}(AB) ln β)⁻¹, intersected
+  /// Physical-space growth: each principal size of M_B grows by |AB| ln β along its own
+  /// direction (Alauzet 2010's mixed space), then intersected. Unlike kGrowth it does not
+  /// shrink the long sizes of a smooth field whose directions turn (polar fields), because the
+  /// small sizes grow additively instead of by a common factor.
+  kGrowthPhysical,
 };
 
 struct GradationOptions {

@@ -42,7 +42,7 @@ std::vector<SymMat2> prepare_metrics(const Mesh& in, std::span<const SymMat2> me
   if (o.hgrad > 0.0) {
     const Adjacency adj = build_adjacency(in.triangles, 3, in.num_vertices());
     GradationOptions g;
-    g.mode = GradationMode::kGrowth;
+    g.mode = GradationMode::kGrowthPhysical;
     g.threshold = o.hgrad;
     const GradationReport r = gradate<2>(in.coords, adj.edges, std::span<SymMat2>(out), g);
     report.gradation_before = r.measure_before;

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -392,4 +393,55 @@ TEST(Gradation, InputErrors) {
   EXPECT_THROW(gradate<2>(xy, std::vector<int32_t>{0, 1}, two, o), InputError);
   m[0] = SymMat2{{1.0, 2.0, 1.0}};  // indefinite
   EXPECT_THROW(gradate<2>(xy, std::vector<int32_t>{0, 1}, m, o), InputError);
+}
+
+TEST(Gradation, PhysicalGrowthKeepsATurningAnisotropicField) {
+  // A polar-like field on a ring of radius 0.5: radial size 0.001, tangential 0.1, vertices
+  // 0.02 apart. The field is smooth, but neighbouring metrics are rotated by 0.04 rad. The
+  // metric-space growth shrinks the tangential size to a few times the radial one (the
+  // intersection of two thin rotated ellipses); the physical-space growth, where the radial
+  // size grows additively to 0.001 + 0.02 ln 1.3 ≈ 0.0062, keeps it above half its value.
+  const int n = 157;  // 2π·0.5 / 0.02
+  std::vector<double> coords;
+  std::vector<int32_t> edges;
+  std::vector<SymMat2> metrics;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / n;
+    coords.insert(coords.end(), {0.5 * std::cos(a), 0.5 * std::sin(a)});
+    const Mat2 r{{{std::cos(a), -std::sin(a)}, {std::sin(a), std::cos(a)}}};
+    metrics.push_back(metric_from_sizes(r, Vec2{{0.001, 0.1}}));  // radial first
+    edges.insert(edges.end(), {i, (i + 1) % n});
+  }
+  auto tangential_size = [](const SymMat2& m) { return sizes(m).sizes[0]; };
+  GradationOptions o;
+  o.threshold = 1.3;
+  o.mode = GradationMode::kGrowthPhysical;
+  std::vector<SymMat2> physical = metrics;
+  const GradationReport r = gradate<2>(coords, edges, std::span<SymMat2>(physical), o);
+  EXPECT_TRUE(r.converged);
+  o.mode = GradationMode::kGrowth;
+  std::vector<SymMat2> metric_space = metrics;
+  gradate<2>(coords, edges, std::span<SymMat2>(metric_space), o);
+  for (int i = 0; i < n; ++i) {
+    EXPECT_GT(tangential_size(physical[i]), 0.05) << i;
+    EXPECT_LT(tangential_size(metric_space[i]), 0.05) << i;
+  }
+}
+
+TEST(Gradation, PhysicalGrowthBoundsSizesAndIsAFixedPoint) {
+  // Sizes 0.01 and 1 at distance 1 along x: the large end may keep at most 0.01 + ln 1.3 in
+  // every direction (additive growth of each principal size); a second run changes nothing.
+  std::vector<double> coords = {0, 0, 1, 0};
+  std::vector<int32_t> edges = {0, 1};
+  std::vector<SymMat2> m = {isotropic_metric<2>(0.01), isotropic_metric<2>(1.0)};
+  GradationOptions o;
+  o.mode = GradationMode::kGrowthPhysical;
+  o.threshold = 1.3;
+  gradate<2>(coords, edges, std::span<SymMat2>(m), o);
+  const MetricSizes<2> s = sizes(m[1]);
+  EXPECT_NEAR(s.sizes[0], 0.01 + std::log(1.3), 1e-12);
+  EXPECT_NEAR(s.sizes[1], 0.01 + std::log(1.3), 1e-12);
+  const GradationReport again = gradate<2>(coords, edges, std::span<SymMat2>(m), o);
+  EXPECT_EQ(again.modified_vertices, 0u);
+  EXPECT_EQ(again.passes, 1);
 }

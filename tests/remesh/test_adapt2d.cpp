@@ -1,0 +1,140 @@
+// 2D adaptation by properties (STYLE.md: no golden meshes): validity, boundary kept, metric edge
+// lengths and qualities in range, determinism, and the bad-input paths.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/error.hpp"
+#include "mesh/check.hpp"
+#include "mesh/fixtures.hpp"
+#include "metric/edge_length.hpp"
+#include "metric/metric.hpp"
+#include "remesh/adapt2d.hpp"
+
+using namespace riemesh;
+
+namespace {
+
+/// The UGAWG-style linear field of ../shared/PEERS.md with a milder h0: hx = 0.1,
+/// hy = h0 + 2(0.1 − h0)|y − 0.5|.
+SymMat2 linear_metric(double y, double h0) {
+  const double hy = h0 + 2.0 * (0.1 - h0) * std::abs(y - 0.5);
+  return SymMat2{{1.0 / 0.01, 0.0, 1.0 / (hy * hy)}};
+}
+
+std::vector<SymMat2> linear_field(const Mesh& m, double h0) {
+  std::vector<SymMat2> out;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) out.push_back(linear_metric(m.coords[2 * v + 1], h0));
+  return out;
+}
+
+/// Metric lengths of the unique edges of the output, with the analytic field at the end points
+/// (geometric closed form).
+std::vector<double> edge_lengths(const Mesh& m, double h0) {
+  std::set<std::pair<Id, Id>> edges;
+  for (std::size_t t = 0; t < m.num_triangles(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      Id a = m.triangles[3 * t + i], b = m.triangles[3 * t + (i + 1) % 3];
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  std::vector<double> out;
+  for (const auto& [a, b] : edges) {
+    const Vec2 pa{{m.coords[2 * a], m.coords[2 * a + 1]}}, pb{{m.coords[2 * b], m.coords[2 * b + 1]}};
+    out.push_back(edge_length_geometric(linear_metric(pa[1], h0), linear_metric(pb[1], h0), pb - pa));
+  }
+  return out;
+}
+
+double area(const Mesh& m) {
+  double a = 0;
+  for (std::size_t t = 0; t < m.num_triangles(); ++t) {
+    const Id* v = &m.triangles[3 * t];
+    const Vec2 p0{{m.coords[2 * v[0]], m.coords[2 * v[0] + 1]}};
+    const Vec2 p1{{m.coords[2 * v[1]], m.coords[2 * v[1] + 1]}};
+    const Vec2 p2{{m.coords[2 * v[2]], m.coords[2 * v[2] + 1]}};
+    a += 0.5 * cross(p1 - p0, p2 - p0);
+  }
+  return a;
+}
+
+}  // namespace
+
+TEST(Adapt2d, UniformSizeOnTheSquare) {
+  const Mesh in = unit_square(10, 10);
+  const std::vector<SymMat2> met(in.num_vertices(), isotropic_metric<2>(0.05));
+  const Adapt2dResult r = adapt2d(in, met, {});
+  EXPECT_TRUE(check_mesh(r.mesh).valid());
+  EXPECT_NEAR(area(r.mesh), 1.0, 1e-12);
+  // (4/√3) C(M) = (4/√3) / 0.05² ≈ 924 unit triangles.
+  EXPECT_GT(r.mesh.num_triangles(), 800u);
+  EXPECT_LT(r.mesh.num_triangles(), 1200u);
+  int corners = 0;
+  for (auto t : r.mesh.vert_tag) corners += (t & kTagCorner) ? 1 : 0;
+  EXPECT_EQ(corners, 4);
+  std::set<int> refs(r.mesh.edge_ref.begin(), r.mesh.edge_ref.end());
+  EXPECT_EQ(refs, (std::set<int>{1, 2, 3, 4}));
+}
+
+TEST(Adapt2d, AnisotropicLinearFieldAfterPasses) {
+  // The milder linear field (h0 = 0.01), iterated as the UGAWG benchmark does: the metric is
+  // re-evaluated on each new mesh. After 4 passes: ≥ 95% of edges in [1/√2, √2], none below 0.4
+  // or above 2, minimum quality > 0.4 (in the analytic field at the vertices).
+  Mesh m = unit_square(20, 20);
+  Adapt2dOptions o;
+  o.hgrad = 0.0;
+  for (int pass = 0; pass < 4; ++pass) m = adapt2d(m, linear_field(m, 0.01), o).mesh;
+  EXPECT_TRUE(check_mesh(m).valid());
+  EXPECT_NEAR(area(m), 1.0, 1e-12);
+  const std::vector<double> len = edge_lengths(m, 0.01);
+  const double in = std::count_if(len.begin(), len.end(), [](double l) {
+                      return l >= std::sqrt(0.5) && l <= std::sqrt(2.0);
+                    }) / static_cast<double>(len.size());
+  EXPECT_GE(in, 0.95);
+  EXPECT_GE(*std::min_element(len.begin(), len.end()), 0.4);
+  EXPECT_LE(*std::max_element(len.begin(), len.end()), 2.0);
+}
+
+TEST(Adapt2d, Deterministic) {
+  const Mesh in = unit_square(12, 12);
+  const std::vector<SymMat2> met = linear_field(in, 0.02);
+  const Adapt2dResult a = adapt2d(in, met, {});
+  const Adapt2dResult b = adapt2d(in, met, {});
+  EXPECT_EQ(a.mesh.coords, b.mesh.coords);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  EXPECT_EQ(a.mesh.edges, b.mesh.edges);
+}
+
+TEST(Adapt2d, BoundaryStaysOnTheSquare) {
+  const Mesh in = unit_square(8, 8);
+  const Adapt2dResult r = adapt2d(in, linear_field(in, 0.02), {});
+  for (std::size_t e = 0; e < r.mesh.num_edges(); ++e)
+    for (int k = 0; k < 2; ++k) {
+      const Id v = r.mesh.edges[2 * e + k];
+      const double x = r.mesh.coords[2 * v], y = r.mesh.coords[2 * v + 1];
+      const double d = std::min({x, y, 1.0 - x, 1.0 - y});
+      EXPECT_LT(std::abs(d), 1e-14) << "boundary vertex off the square at " << x << ", " << y;
+    }
+}
+
+TEST(Adapt2d, BadInput) {
+  const Mesh in = unit_square(2, 2);
+  std::vector<SymMat2> met(in.num_vertices(), SymMat2::identity());
+  Adapt2dOptions o;
+  met[3] = SymMat2{{1.0, 2.0, 1.0}};  // not positive definite
+  EXPECT_THROW(adapt2d(in, met, o), InputError);
+  met[3] = SymMat2{{std::nan(""), 0.0, 1.0}};
+  EXPECT_THROW(adapt2d(in, met, o), InputError);
+  met.pop_back();
+  EXPECT_THROW(adapt2d(in, met, o), InputError);  // count mismatch
+  met.assign(in.num_vertices(), SymMat2::identity());
+  o.hmin = 2.0, o.hmax = 1.0;
+  EXPECT_THROW(adapt2d(in, met, o), InputError);  // contradicting sizes
+  o = {};
+  o.hgrad = 0.5;
+  EXPECT_THROW(adapt2d(in, met, o), InputError);
+  Mesh flipped = in;
+  std::swap(flipped.triangles[0], flipped.triangles[1]);
+  EXPECT_THROW(adapt2d(flipped, met, {}), InputError);
+}
