@@ -19,6 +19,10 @@ namespace {
 
 constexpr double kLongEdge = 1.4142135623730951;   // √2
 constexpr double kShortEdge = 0.7071067811865476;  // 1/√2
+// Collapse candidates: edges below 0.9 (not 1/√2), refused when they would create an edge
+// longer than 1.45. Collapsing up to 0.9 lifts the mean length from about 0.90 to 0.97, so the
+// element count comes within a few per cent of (4/√3) C(M) (measured on the PEERS.md cases).
+constexpr double kCollapseBelow = 0.9;
 
 std::string num(double v) {
   char buf[32];
@@ -116,12 +120,12 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
 /// Collapses the edges shorter than 1/√2, shortest first.
 long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
   TriMesh& m = ctx.mesh();
-  const CollapseLimits limits{0.3, 1.3};
+  const CollapseLimits limits{0.3, 1.45};
   long done = 0;
-  for (const Candidate& c : candidates(m, [](double l) { return l < kShortEdge; }, false)) {
+  for (const Candidate& c : candidates(m, [](double l) { return l < kCollapseBelow; }, false)) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
     const Id s = find_edge_slot(m, c.a, c.b);
-    if (s == kNoId || edge_length(m, c.a, c.b) >= kShortEdge) continue;
+    if (s == kNoId || edge_length(m, c.a, c.b) >= kCollapseBelow) continue;
     bool applied = false;
     for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}}) {
       if (m.frozen(from) || (m.on_curve(from) && !ctx.collapse_keeps_hausd(from, to))) continue;
