@@ -109,8 +109,8 @@ void value_stats_text(std::string& out, const char* name, const ValueStats& s) {
               s.summary.max);
   out += "  histogram:";
   for (std::size_t i = 0; i < s.histogram.counts.size(); ++i)
-    append_line(out, " [%.3g,%.3g):%zu", s.histogram.edges[i], s.histogram.edges[i + 1],
-                s.histogram.counts[i]);
+    append_line(out, i + 1 < s.histogram.counts.size() ? " [%.3g,%.3g):%zu" : " [%.3g,%.3g]:%zu",
+                s.histogram.edges[i], s.histogram.edges[i + 1], s.histogram.counts[i]);
   out += "\n";
 }
 

@@ -107,6 +107,15 @@ void Canvas::text(double x, double y, const std::string& s, double size, Align a
   cairo_show_text(cr_, s.c_str());
 }
 
+double Canvas::text_width(const std::string& s, double size, bool bold) const {
+  cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr_, size);
+  cairo_text_extents_t ext;
+  cairo_text_extents(cr_, s.c_str(), &ext);
+  return ext.x_advance;
+}
+
 void Canvas::save(const std::string& path) {
   require_ok(cairo_status(cr_), "drawing failed");
   if (format_ == ImageFormat::kPng) {

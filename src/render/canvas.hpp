@@ -40,6 +40,8 @@ class Canvas {
   /// Text with its baseline at y, aligned on x.
   void text(double x, double y, const std::string& s, double size, Align align = Align::kLeft,
             bool bold = false) const;
+  /// Width of the text at that font size.
+  double text_width(const std::string& s, double size, bool bold = false) const;
   /// Finishes the drawing and writes it to path (PNG or SVG, as constructed), atomically.
   void save(const std::string& path);
 

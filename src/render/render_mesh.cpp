@@ -151,6 +151,14 @@ void draw_colorbar(const Canvas& cv, const Coloring& c, double x, double y, doub
     cairo_stroke(cr);
     cv.text(x + w + 7, ty + 4, render_detail::format_number(v), 11);
   }
+  // Inverted elements (negative quality) are red, outside the colour map.
+  if (std::any_of(c.values.begin(), c.values.end(), [](double v) { return v < 0.0; })) {
+    cv.set_color({0.85, 0.0, 0.0});
+    cairo_rectangle(cr, x, y + h + 14, w, 12);
+    cairo_fill(cr);
+    cv.set_color({0, 0, 0});
+    cv.text(x + w + 7, y + h + 24, "inverted", 11);
+  }
 }
 
 void draw_swatches(const Canvas& cv, const Coloring& c, double x, double y, double h) {
@@ -266,12 +274,15 @@ void render_mesh(const Mesh& mesh, const std::string& path, const RenderOptions&
   }
 
   cv.set_color({0, 0, 0});
-  cv.text(margin, 20, title_line(mesh, o, col), 13);
+  // The title shrinks to fit the width.
+  const std::string title = title_line(mesh, o, col);
+  const double room = o.width - 2 * margin, natural = cv.text_width(title, 13);
+  cv.text(margin, 20, title, natural > room ? 13 * room / natural : 13);
   const double lx = o.width - legend_w + 10, ly = title_h + margin + 10;
   if (o.color == ColorBy::kRef)
     draw_swatches(cv, col, lx, ly, area_h - 20);
   else
-    draw_colorbar(cv, col, lx, ly, std::min(area_h - 20, 300.0));
+    draw_colorbar(cv, col, lx, ly, std::min(area_h - 50, 300.0));
   cv.save(path);
 }
 
