@@ -29,10 +29,10 @@ bool topology_ok(const TriMesh& m, Id slot, Id from, Id to, const Ball& bfrom, c
     return false;
   }
   if (!m.on_curve(from) && !bfrom.closed) return false;  // boundary vertex off any curve: keep
-  std::vector<Id> nf, nt;
+  thread_local std::vector<Id> nf, nt, common;  // scratch, reused; never shared between threads
   ball_vertices(m, bfrom, from, nf);
   ball_vertices(m, bto, to, nt);
-  std::vector<Id> common;
+  common.clear();
   std::set_intersection(nf.begin(), nf.end(), nt.begin(), nt.end(), std::back_inserter(common));
   const std::size_t on_edge = m.tadj[slot] == kNoId ? 1 : 2;
   return common.size() == on_edge;

@@ -35,11 +35,9 @@ Outcome swap_edge(TriMesh& m, Id slot, double min_gain) {
   const Id c = m.tv[3 * t + i], a = m.tv[3 * t + (i + 1) % 3], b = m.tv[3 * t + (i + 2) % 3];
   const Id d = m.tv[3 * u + j];
   if (c == d) return Outcome::kRejectedTopology;
-  // The new diagonal c-d must not exist already (it would duplicate an edge).
-  thread_local Ball ball;
-  collect_ball(m, c, ball);
-  for (const Id w : ball.tris)
-    if (vertex_index(m, w, d) >= 0) return Outcome::kRejectedTopology;
+  // No check that the diagonal c-d exists elsewhere: both new triangles must be positive, so the
+  // quadrilateral is strictly convex and c-d crosses a-b; in a valid planar triangulation no
+  // other edge can cross a-b.
   const Vec2 &pa = m.xy[a], &pb = m.xy[b], &pc = m.xy[c], &pd = m.xy[d];
   const double scale = std::abs(signed_area(pc, pa, pb)) + std::abs(signed_area(pd, pb, pa));
   if (!(signed_area(pc, pa, pd) > 1e-9 * scale && signed_area(pd, pb, pc) > 1e-9 * scale))

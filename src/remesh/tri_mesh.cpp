@@ -1,5 +1,6 @@
 #include "remesh/tri_mesh.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace riemesh {
@@ -69,42 +70,64 @@ void TriMesh::kill_vertex(Id v) {
 void collect_ball(const TriMesh& m, Id v, Ball& out) {
   out.tris.clear();
   out.closed = true;
-  const Id t0 = m.vtri[v];
   // With v at local index i, triangle t spans the angle from P(i+1) to P(i+2) counter-clockwise:
-  // its clockwise neighbour around v is across edge (i+2)%3 (v -> P(i+1)), its counter-clockwise
-  // neighbour across edge (i+1)%3 (P(i+2) -> v). Turn clockwise to the boundary (or once round),
-  // then collect counter-clockwise.
+  // its counter-clockwise neighbour around v is across edge (i+1)%3 (P(i+2) -> v), its clockwise
+  // neighbour across edge (i+2)%3 (v -> P(i+1)). Collect counter-clockwise from vtri; only when
+  // that hits the boundary, walk clockwise from vtri too and put those triangles first.
+  const Id t0 = m.vtri[v];
   Id t = t0;
-  for (;;) {
-    const int i = vertex_index(m, t, v);
-    const Id across = m.tadj[3 * t + (i + 2) % 3];
+  do {
+    out.tris.push_back(t);
+    const Id across = m.tadj[3 * t + (vertex_index(m, t, v) + 1) % 3];
     if (across == kNoId) {
       out.closed = false;
       break;
     }
     t = across / 3;
-    if (t == t0) break;
-  }
-  const Id start = t;
-  do {
-    out.tris.push_back(t);
-    const int i = vertex_index(m, t, v);
-    const Id across = m.tadj[3 * t + (i + 1) % 3];
+  } while (t != t0);
+  if (out.closed) return;
+  const std::size_t ccw = out.tris.size();
+  t = t0;
+  for (;;) {
+    const Id across = m.tadj[3 * t + (vertex_index(m, t, v) + 2) % 3];
     if (across == kNoId) break;
     t = across / 3;
-  } while (t != start);
+    out.tris.push_back(t);
+  }
+  // Now [t0 .. ccw end) then the clockwise ones nearest first: rotate to clockwise-most first.
+  std::reverse(out.tris.begin() + static_cast<std::ptrdiff_t>(ccw), out.tris.end());
+  std::rotate(out.tris.begin(), out.tris.begin() + static_cast<std::ptrdiff_t>(ccw),
+              out.tris.end());
 }
 
 Id find_edge_slot(const TriMesh& m, Id a, Id b) {
-  thread_local Ball ball;
-  collect_ball(m, a, ball);
+  // Turn around a counter-clockwise from vtri, then clockwise if the boundary stops the turn,
+  // without building the ball.
   Id found = kNoId;
-  for (const Id t : ball.tris) {
+  auto test = [&](Id t) {
     const int i = vertex_index(m, t, a);
-    if (m.tv[3 * t + (i + 1) % 3] == b) return 3 * t + (i + 2) % 3;  // a -> b
-    if (m.tv[3 * t + (i + 2) % 3] == b) found = 3 * t + (i + 1) % 3;  // b -> a
+    if (m.tv[3 * t + (i + 1) % 3] == b) found = 3 * t + (i + 2) % 3;  // a -> b
+    else if (m.tv[3 * t + (i + 2) % 3] == b) found = 3 * t + (i + 1) % 3;  // b -> a
+    return i;
+  };
+  const Id t0 = m.vtri[a];
+  Id t = t0;
+  do {
+    const int i = test(t);
+    if (found != kNoId) return found;
+    const Id across = m.tadj[3 * t + (i + 1) % 3];
+    if (across == kNoId) break;
+    t = across / 3;
+    if (t == t0) return kNoId;
+  } while (true);
+  t = t0;
+  for (;;) {
+    const Id across = m.tadj[3 * t + (vertex_index(m, t, a) + 2) % 3];
+    if (across == kNoId) return kNoId;
+    t = across / 3;
+    test(t);
+    if (found != kNoId) return found;
   }
-  return found;
 }
 
 std::string check_tri_mesh(const TriMesh& m) {
