@@ -12,8 +12,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     riemesh::fuzz::run_reader([&] {
       riemesh::MeditReadOptions options;
       options.planar_as_2d = planar;
-      riemesh::fuzz::expect_writable(
-          riemesh::medit_detail::read_medit_binary("fuzz.meshb", bytes, options));
+      const riemesh::Mesh mesh =
+          riemesh::medit_detail::read_medit_binary("fuzz.meshb", bytes, options);
+      riemesh::fuzz::expect_writable(mesh);
+      riemesh::fuzz::expect_round_trip(mesh, "round_trip.mesh", options);
     });
   }
   return 0;
