@@ -14,20 +14,25 @@ PY
   then ok "$1"; else ko "$1: $2"; fi
 }
 
+# run NAME ARGS...: riemesh must succeed (a failure is reported, not skipped).
+run() { local name=$1; shift; "$R" "$@" || ko "$name: exit $?"; }
+
 naca=$SHARED/data/2d/naca0012.mesh
-"$R" render "$naca" -o "$TMP/q.png" --width 500 && expect_png render-quality-png "$TMP/q.png" 500
-"$R" render "$naca" -o "$TMP/s.png" --color size && expect_png render-size-png "$TMP/s.png" 800
-"$R" render "$naca" -o "$TMP/r.svg" --color ref &&
-  grep -q "</svg>" "$TMP/r.svg" && ok render-ref-svg || ko render-ref-svg
+run render-quality-png render "$naca" -o "$TMP/q.png" --width 500
+expect_png render-quality-png "$TMP/q.png" 500
+run render-size-png render "$naca" -o "$TMP/s.png" --color size
+expect_png render-size-png "$TMP/s.png" 800
+run render-ref-svg render "$naca" -o "$TMP/r.svg" --color ref
+grep -q "</svg>" "$TMP/r.svg" && ok render-ref-svg || ko render-ref-svg
 lshape=$SHARED/data/formats/lshape
-"$R" render "$lshape.mesh" --metric "${lshape}_metric.sol" -o "$TMP/m.svg" &&
-  grep -q "<svg" "$TMP/m.svg" && ok render-metric-svg || ko render-metric-svg
-"$R" render "$lshape.mesh" --metric "${lshape}_metric.sol" --color size -o "$TMP/ms.png" --width 300 &&
-  expect_png render-metric-size "$TMP/ms.png" 300
-"$R" render "$SHARED/data/surf/bunny.mesh" --view iso -o "$TMP/b.png" --width 400 &&
-  expect_png render-surface-iso "$TMP/b.png" 400
-"$R" render "$SHARED/data/vol/bunny_vol.mesh" --view y --color ref -o "$TMP/v.png" --width 400 &&
-  expect_png render-volume-boundary "$TMP/v.png" 400
+run render-metric-svg render "$lshape.mesh" --metric "${lshape}_metric.sol" -o "$TMP/m.svg"
+grep -q "<svg" "$TMP/m.svg" && ok render-metric-svg || ko render-metric-svg
+run render-metric-size render "$lshape.mesh" --metric "${lshape}_metric.sol" --color size -o "$TMP/ms.png" --width 300
+expect_png render-metric-size "$TMP/ms.png" 300
+run render-surface-iso render "$SHARED/data/surf/bunny.mesh" --view iso -o "$TMP/b.png" --width 400
+expect_png render-surface-iso "$TMP/b.png" 400
+run render-volume-boundary render "$SHARED/data/vol/bunny_vol.mesh" --view y --color ref -o "$TMP/v.png" --width 400
+expect_png render-volume-boundary "$TMP/v.png" 400
 
 # Bad requests: exit 2, one line, no picture.
 write_two_triangles "$TMP/two.mesh"
