@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "mesh/adjacency.hpp"
+#include "mesh/hilbert.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
 #include "remesh/remesh2d_context.hpp"
@@ -31,8 +32,9 @@ std::string num(double v) {
 }
 
 /// Validated, clipped to [hmin, hmax] and graded copy of the input metrics.
-std::vector<SymMat2> prepare_metrics(const Mesh& in, std::span<const SymMat2> metrics,
-                                     const Adapt2dOptions& o, Adapt2dReport& report) {
+std::vector<SymMat2> prepare_metrics(const Mesh& in, const Adjacency& adj,
+                                     std::span<const SymMat2> metrics, const Adapt2dOptions& o,
+                                     Adapt2dReport& report) {
   if (metrics.size() != in.num_vertices())
     throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
                      std::to_string(in.num_vertices()) + " vertices");
@@ -44,7 +46,6 @@ std::vector<SymMat2> prepare_metrics(const Mesh& in, std::span<const SymMat2> me
     if (lo > 0.0 || hi < std::numeric_limits<double>::max()) out[v] = project_spd(out[v], lo, hi);
   }
   if (o.hgrad > 0.0) {
-    const Adjacency adj = build_adjacency(in.triangles, 3, in.num_vertices());
     GradationOptions g;
     g.mode = GradationMode::kGrowthPhysical;
     g.threshold = o.hgrad;
@@ -154,16 +155,29 @@ long swap_sweep(TriMesh& m, PassStats& st) {
   return done;
 }
 
+/// Moves each vertex whose ball holds a triangle of quality below 0.9 toward its smoothing
+/// target. Vertices in good balls are skipped: on a converged mesh that is most of them, and the
+/// triangle qualities are cached for the sweep (updated after each move).
 long smooth_sweep(Remesh2dContext& ctx, PassStats& st) {
+  constexpr double kGoodBall = 0.9;
   TriMesh& m = ctx.mesh();
+  std::vector<float> quality(m.triangle_capacity(), 0.0f);
+  for (std::size_t t = 0; t < m.triangle_capacity(); ++t)
+    if (m.tri_alive(static_cast<Id>(t))) quality[t] = static_cast<float>(tri_quality(m, static_cast<Id>(t)));
+  thread_local Ball ball;
   long done = 0;
   for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
     const Id v = static_cast<Id>(vi);
     if (!m.vert_alive(v) || m.frozen(v)) continue;
+    collect_ball(m, v, ball);
+    float worst = 1.0f;
+    for (const Id t : ball.tris) worst = std::min(worst, quality[t]);
+    if (worst >= kGoodBall) continue;
     NewVertex target;
     if (!ctx.smoothing_target(v, target)) continue;
     if (move_vertex(m, v, target.p, target.metric, target.param, 0.6) == Outcome::kApplied) {
       ctx.inherit_hint(v, v);
+      for (const Id t : ball.tris) quality[t] = static_cast<float>(tri_quality(m, t));
       ++done;
     } else {
       ++st.rejected;
@@ -232,8 +246,18 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   if (input.dim != 2) throw InputError("2D remeshing needs a planar mesh (Dimension 2)");
   if (input.num_triangles() == 0) throw InputError("the mesh has no triangles");
   Adapt2dResult result;
-  const std::vector<SymMat2> prepared = prepare_metrics(input, metrics, options, result.report);
-  Remesh2dContext ctx(input, prepared, options);
+  // Work on a Hilbert-ordered copy: every adjacency build and walk below is cache-friendly.
+  Mesh ordered = input;
+  const Renumbering order = renumber_hilbert(ordered);
+  std::vector<SymMat2> permuted(metrics.size());
+  if (metrics.size() == input.num_vertices())
+    for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
+  else
+    permuted.assign(metrics.begin(), metrics.end());  // prepare_metrics reports the mismatch
+  const Adjacency adjacency = build_adjacency(ordered.triangles, 3, ordered.num_vertices());
+  const std::vector<SymMat2> prepared =
+      prepare_metrics(ordered, adjacency, permuted, options, result.report);
+  Remesh2dContext ctx(ordered, prepared, options, adjacency);
   TriMesh& m = ctx.mesh();
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();

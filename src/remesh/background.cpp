@@ -83,12 +83,14 @@ BackgroundMesh<D>::BackgroundMesh(std::span<const double> coords, std::span<cons
 
 template <int D>
 BackgroundMesh<D>::BackgroundMesh(const Mesh& mesh, std::span<const double> metrics,
-                                  InterpScheme scheme)
-    : BackgroundMesh(mesh.coords, mesh_simplices<D>(mesh), metrics, scheme) {}
+                                  InterpScheme scheme, const Adjacency* adjacency)
+    : scheme_(scheme) {
+  build(mesh.coords, mesh_simplices<D>(mesh), metrics, adjacency);
+}
 
 template <int D>
 void BackgroundMesh<D>::build(std::span<const double> coords, std::span<const Id> simplices,
-                              std::span<const double> metrics) {
+                              std::span<const double> metrics, const Adjacency* adjacency) {
   constexpr int kSize = SymMat<D>::kSize;
   if (coords.size() % D != 0 || simplices.size() % kVerts != 0 || simplices.empty())
     throw InputError(prefix() + "coordinate or simplex array of a bad size (" +
@@ -135,7 +137,7 @@ void BackgroundMesh<D>::build(std::span<const double> coords, std::span<const Id
     logs_.resize(nv);
     for (std::size_t v = 0; v < nv; ++v) logs_[v] = log_spd(metrics_[v]);
   }
-  elem2elem_ = build_adjacency(simplices_, kVerts, nv).elem2elem;
+  elem2elem_ = adjacency ? adjacency->elem2elem : build_adjacency(simplices_, kVerts, nv).elem2elem;
   // Walks from a hint crossing a uniform mesh take O(ns^(1/D)) steps; beyond a generous multiple
   // of that, the grid search is cheaper than walking on (and a cycle cannot run forever).
   max_walk_steps_ =

@@ -24,6 +24,7 @@
 
 #include "core/symmat.hpp"
 #include "core/vec.hpp"
+#include "mesh/adjacency.hpp"
 #include "mesh/mesh.hpp"
 #include "metric/interpolation.hpp"
 
@@ -64,8 +65,10 @@ class BackgroundMesh {
                  InterpScheme scheme = InterpScheme::kLogEuclidean);
 
   /// From a mesh: its triangles (D = 2, mesh.dim == 2) or tetrahedra (D = 3, a volume).
+  /// `adjacency`, when given, is build_adjacency of the same simplices (saves rebuilding it).
   BackgroundMesh(const Mesh& mesh, std::span<const double> metrics,
-                 InterpScheme scheme = InterpScheme::kLogEuclidean);
+                 InterpScheme scheme = InterpScheme::kLogEuclidean,
+                 const Adjacency* adjacency = nullptr);
 
   /// Locates p by walking from `hint` (a simplex id; kNoId, or a hint whose first vertex is
   /// farther than hint_reach() from p: from p's grid cell).
@@ -114,7 +117,7 @@ class BackgroundMesh {
   };
 
   void build(std::span<const double> coords, std::span<const Id> simplices,
-             std::span<const double> metrics);
+             std::span<const double> metrics, const Adjacency* adjacency = nullptr);
   void build_grid();
   /// Signed sub-volumes Vᵢ(p) (p replacing vertex i) divided by the simplex's volume.
   void barycentric(Id s, const Vec<D>& p, double b[kVerts]) const;

@@ -249,11 +249,12 @@ void fill_vertex_maps(BoundaryCurves& out, std::size_t nv) {
 
 }  // namespace
 
-BoundaryCurves build_boundary_curves(const Mesh& mesh, const CurveOptions& options) {
+BoundaryCurves build_boundary_curves(const Mesh& mesh, const CurveOptions& options,
+                                     const Adjacency* adjacency) {
   options.validate();
   check_input(mesh);
   const std::size_t nv = mesh.num_vertices();
-  const Adjacency adj = build_adjacency(mesh.triangles, 3, nv);
+  const Adjacency adj = adjacency ? *adjacency : build_adjacency(mesh.triangles, 3, nv);
 
   BoundaryCurves out;
   std::vector<Id> adj2feature;

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "mesh/adjacency.hpp"
 #include "mesh/mesh.hpp"
 
 namespace riemesh {
@@ -121,7 +122,9 @@ struct BoundaryCurves {
 /// triangle refs on either side, and a turning angle above options.angle_deg. Deterministic: the
 /// result depends on the vertex ids, edge refs and triangle refs only, not on the order of the
 /// triangles. Throws InputError for a non-planar mesh, bad ids or a zero-length feature edge.
-BoundaryCurves build_boundary_curves(const Mesh& mesh, const CurveOptions& options = {});
+/// `adjacency`, when given, is build_adjacency(mesh.triangles, 3, nv) (saves rebuilding it).
+BoundaryCurves build_boundary_curves(const Mesh& mesh, const CurveOptions& options = {},
+                                     const Adjacency* adjacency = nullptr);
 
 /// Sets c.bezier and c.arc_length from the positions of its n + 1 vertices (closed:
 /// points[n] == points[0]) and c.closed: the reconstruction described in the file comment.

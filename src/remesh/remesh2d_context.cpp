@@ -28,10 +28,10 @@ double metric_midpoint(double la, double lb) {
 }  // namespace
 
 Remesh2dContext::Remesh2dContext(const Mesh& input, std::span<const SymMat2> metrics,
-                                 const Adapt2dOptions& options)
+                                 const Adapt2dOptions& options, const Adjacency& adjacency)
     : options_(options),
-      curves_(build_boundary_curves(input, {options.angle_deg, options.detect_angles})),
-      background_(input, flatten(metrics), options.interp),
+      curves_(build_boundary_curves(input, {options.angle_deg, options.detect_angles}, &adjacency)),
+      background_(input, flatten(metrics), options.interp, &adjacency),
       num_input_vertices_(input.num_vertices()) {
   const std::size_t nv = input.num_vertices();
   std::vector<TriFeature> features;
@@ -54,7 +54,7 @@ Remesh2dContext::Remesh2dContext(const Mesh& input, std::span<const SymMat2> met
       vcurves[v] = {static_cast<std::int32_t>(at[0].curve), at[0].param};
     }
   }
-  mesh_ = build_tri_mesh(tagged, metrics, features, vcurves);
+  mesh_ = build_tri_mesh(tagged, metrics, features, vcurves, &adjacency);
   hint_.assign(nv, kNoId);
   for (std::size_t t = 0; t < input.num_triangles(); ++t)
     for (int i = 0; i < 3; ++i) {

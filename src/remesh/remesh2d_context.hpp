@@ -13,9 +13,10 @@ namespace riemesh {
 
 class Remesh2dContext {
  public:
-  /// Takes the (clipped, graded) input metrics; the mesh's vertex ids become TriMesh ids.
+  /// Takes the (clipped, graded) input metrics and the input's triangle adjacency; the mesh's
+  /// vertex ids become TriMesh ids.
   Remesh2dContext(const Mesh& input, std::span<const SymMat2> metrics,
-                  const Adapt2dOptions& options);
+                  const Adapt2dOptions& options, const Adjacency& adjacency);
 
   TriMesh& mesh() { return mesh_; }
   const TriMesh& mesh() const { return mesh_; }

@@ -32,8 +32,7 @@ void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics
   }
 }
 
-void add_triangles(TriMesh& m, const Mesh& mesh) {
-  const Adjacency adj = build_adjacency(mesh.triangles, 3, mesh.num_vertices());
+void add_triangles(TriMesh& m, const Mesh& mesh, const Adjacency& adj) {
   if (!adj.nonmanifold_faces.empty())
     throw InputError("non-manifold edge at " + tri_name(adj.nonmanifold_faces[0] / 3));
   for (std::size_t t = 0; t < mesh.num_triangles(); ++t) {
@@ -55,15 +54,17 @@ void add_triangles(TriMesh& m, const Mesh& mesh) {
 
 TriMesh build_tri_mesh(const Mesh& mesh, std::span<const SymMat2> metrics,
                        std::span<const TriFeature> features,
-                       std::span<const VertexCurve> vertex_curves) {
+                       std::span<const VertexCurve> vertex_curves,
+                       const Adjacency* adjacency) {
   if (mesh.dim != 2) throw InputError("2D remeshing needs a planar mesh (Dimension 2)");
   if (metrics.size() != mesh.num_vertices() || vertex_curves.size() != mesh.num_vertices())
     throw InputError("one metric and one curve record per vertex expected");
   TriMesh m;
   add_vertices(m, mesh, metrics, vertex_curves);
-  add_triangles(m, mesh);
+  const Adjacency own = adjacency ? Adjacency{} : build_adjacency(mesh.triangles, 3, mesh.num_vertices());
+  const Adjacency& adj = adjacency ? *adjacency : own;
+  add_triangles(m, mesh, adj);
   // Features: mark both sides of each listed edge, found through the triangles around a.
-  const Adjacency adj = build_adjacency(mesh.triangles, 3, mesh.num_vertices());
   for (const TriFeature& f : features) {
     for (const Id t : ball(adj, f.a)) {
       const Id s = find_slot(m, t, f.a, f.b);

@@ -3,6 +3,7 @@
 #include <span>
 #include <vector>
 
+#include "mesh/adjacency.hpp"
 #include "mesh/mesh.hpp"
 #include "remesh/tri_mesh.hpp"
 
@@ -25,9 +26,11 @@ struct VertexCurve {
 /// boundary edge of the triangulation must be among them) and the vertices' curve data.
 /// Vertex tags and refs are taken from the mesh. Throws InputError for a clockwise or degenerate
 /// triangle, a non-manifold edge or a boundary edge that is not a feature.
+/// `adjacency`, when given, is build_adjacency(mesh.triangles, 3, nv) (saves rebuilding it).
 TriMesh build_tri_mesh(const Mesh& mesh, std::span<const SymMat2> metrics,
                        std::span<const TriFeature> features,
-                       std::span<const VertexCurve> vertex_curves);
+                       std::span<const VertexCurve> vertex_curves,
+                       const Adjacency* adjacency = nullptr);
 
 /// The live part of a TriMesh as a compact Mesh (dim 2): vertices with refs and tags
 /// (corners, required), triangles with refs, feature edges once each as Edges with their refs.
