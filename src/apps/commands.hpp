@@ -23,5 +23,7 @@ void register_stats(CLI::App& app);
 void register_convert(CLI::App& app);
 /// `riemesh render FILE -o OUT.png|OUT.svg`: a picture of a mesh.
 void register_render(CLI::App& app);
+/// `riemesh adapt`: remeshing to a metric field.
+void register_adapt(CLI::App& app);
 
 }  // namespace riemesh::cli

@@ -1,0 +1,145 @@
+// `riemesh adapt`: remesh to a metric field (2D for now), with MMG-compatible spellings.
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "apps/commands.hpp"
+#include "core/error.hpp"
+#include "io/mesh_file.hpp"
+#include "io/sol.hpp"
+#include "metric/element.hpp"
+#include "metric/metric.hpp"
+#include "remesh/adapt2d.hpp"
+
+namespace riemesh::cli {
+namespace {
+
+struct AdaptArgs {
+  std::string input, output, metric, out_metric, interp = "log";
+  double hsiz = 0.0;
+  bool optim = false, noinsert = false, noswap = false, nomove = false, nr = false;
+  bool quiet = false;
+  int verbosity = 0;
+  Adapt2dOptions opt;
+};
+
+/// The metric field for the run: from --metric (tensor, or scalar sizes), --hsiz, or (--optim)
+/// the implied metric of the input mesh.
+std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
+  const std::size_t nv = mesh.num_vertices();
+  if (!a.metric.empty()) {
+    const std::vector<Field> fields = read_sol(a.metric, mesh);
+    for (const Field& f : fields) {
+      std::vector<SymMat2> out(nv);
+      if (f.kind == FieldKind::kSymTensor) {
+        for (std::size_t v = 0; v < nv; ++v) {
+          out[v] = SymMat2{{f.values[3 * v], f.values[3 * v + 1], f.values[3 * v + 2]}};
+          require_metric(out[v], a.metric + ": vertex " + std::to_string(v + 1));
+        }
+        return out;
+      }
+      if (f.kind == FieldKind::kScalar) {  // a size per vertex, as MMG accepts
+        for (std::size_t v = 0; v < nv; ++v) {
+          const double h = f.values[v];
+          if (!(h > 0.0) || !std::isfinite(h))
+            throw InputError(a.metric + ": size at vertex " + std::to_string(v + 1) +
+                             " is not a positive number");
+          out[v] = isotropic_metric<2>(h);
+        }
+        return out;
+      }
+    }
+    throw InputError(a.metric + ": no scalar or symmetric tensor field in SolAtVertices");
+  }
+  if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
+  return implied_metric<2>(mesh.coords, mesh.triangles);
+}
+
+void print_pass(const PassStats& s, int verbosity) {
+  std::fprintf(stderr, "pass %2d: %zu vertices %zu triangles, lengths in [1/√2, √2] %.1f%%, q_min %.3f (%.2f s)\n",
+               s.pass, s.vertices, s.triangles, 100.0 * s.len_in, s.q_min, s.seconds);
+  if (verbosity > 0)
+    std::fprintf(stderr,
+                 "         %ld splits %ld collapses %ld swaps %ld moves %ld refused; length "
+                 "min %.3f mean %.3f max %.3f; q mean %.3f\n",
+                 s.splits, s.collapses, s.swaps, s.moves, s.rejected, s.len_min, s.len_mean,
+                 s.len_max, s.q_mean);
+}
+
+void run(AdaptArgs& a) {
+  if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
+  if (a.hsiz > 0.0 && !a.metric.empty())
+    throw InputError("--hsiz and --metric contradict: give one of them");
+  if (a.optim && (!a.metric.empty() || a.hsiz > 0.0))
+    throw InputError("--optim keeps the current sizes: it cannot be combined with --metric or --hsiz");
+  if (a.metric.empty() && a.hsiz <= 0.0 && !a.optim)
+    throw InputError("no size field: give --metric M.sol, --hsiz H or --optim");
+  a.opt.insert = !a.noinsert;
+  a.opt.swap = !a.noswap;
+  a.opt.move = !a.nomove;
+  a.opt.detect_angles = !a.nr;
+  a.opt.interp = parse_interp_scheme(a.interp);
+  if (a.optim && a.opt.hgrad > 0.0) a.opt.hgrad = 0.0;  // the implied sizes are kept as they are
+  a.opt.validate();
+  const Mesh mesh = read_mesh(a.input);
+  if (mesh.dim != 2 || !mesh.tets.empty())
+    throw InputError(a.input + ": only planar (2D) meshes can be adapted so far; surface and "
+                     "volume remeshing are issues #6 and #7");
+  const std::vector<SymMat2> metrics = load_metric(a, mesh);
+  const bool progress = !a.quiet;
+  const Adapt2dResult r = adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
+    if (progress) print_pass(s, a.verbosity);
+  });
+  if (!r.report.converged && !a.quiet)
+    std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
+                 r.report.passes.size(), r.report.stall_reason.c_str());
+  write_mesh(r.mesh, a.output);
+  if (!a.out_metric.empty()) {
+    Field f{"metric", FieldKind::kSymTensor, {}};
+    for (const SymMat2& m : r.metrics) f.values.insert(f.values.end(), {m.c[0], m.c[1], m.c[2]});
+    write_sol(a.out_metric, {f}, 2);
+  }
+}
+
+}  // namespace
+
+void register_adapt(CLI::App& app) {
+  auto a = std::make_shared<AdaptArgs>();
+  auto* cmd = app.add_subcommand(
+      "adapt", "Remesh a planar triangle mesh to a metric field (unit mesh in the metric)");
+  cmd->add_option("input,--in", a->input, "Input mesh (.mesh, .meshb, .msh)")->required();
+  cmd->add_option("-o,--output,--out", a->output, "Output mesh (.mesh, .meshb, .msh, .vtu)");
+  cmd->add_option("--metric,--met,--sol", a->metric,
+                  "Metric field (.sol/.solb: symmetric tensors m11 m12 m22, or sizes)");
+  cmd->add_option("--out-metric", a->out_metric, "Write the metric at the output vertices (.sol)");
+  cmd->add_option("--hsiz", a->hsiz, "Uniform size instead of a metric");
+  cmd->add_option("--hmin", a->opt.hmin, "Smallest size")->capture_default_str();
+  cmd->add_option("--hmax", a->opt.hmax, "Largest size");
+  cmd->add_option("--hgrad", a->opt.hgrad, "Gradation: growth ratio between neighbours (0: off)")
+      ->capture_default_str();
+  cmd->add_option("--hausd", a->opt.hausd, "Largest distance of boundary chords to the boundary curve")
+      ->capture_default_str();
+  cmd->add_option("--angle,--ar", a->opt.angle_deg, "Corner angle threshold (degrees)")
+      ->capture_default_str();
+  cmd->add_flag("--nr", a->nr, "No corner detection by angle");
+  cmd->add_flag("--optim", a->optim, "Improve quality at the current sizes (implied metric)");
+  cmd->add_flag("--noinsert", a->noinsert, "No vertex insertion or removal");
+  cmd->add_flag("--noswap", a->noswap, "No edge swaps");
+  cmd->add_flag("--nomove", a->nomove, "No vertex moves");
+  cmd->add_option("--interp", a->interp,
+                  "Metric interpolation for new vertices: log, linear, simred-geometric, ...")
+      ->capture_default_str();
+  cmd->add_option("--passes", a->opt.max_passes, "Largest number of passes")->capture_default_str();
+  cmd->add_option("-v,--verbose", a->verbosity, "Verbosity (MMG's -v N; 1: per-pass statistics)")
+      ->expected(0, 1)
+      ->default_str("0");
+  cmd->add_flag("--quiet,-q", a->quiet, "No progress lines");
+  cmd->footer(
+      "MMG spellings are accepted: -in -out -met -sol -hmin -hmax -hsiz -hgrad -hausd -ar -nr "
+      "-noinsert -noswap -nomove -optim -v N.");
+  cmd->callback([a] { run(*a); });
+}
+
+}  // namespace riemesh::cli

@@ -1,0 +1,43 @@
+#include "apps/mmg_spellings.hpp"
+
+#include <array>
+#include <cstdlib>
+#include <string_view>
+
+namespace riemesh::cli {
+namespace {
+
+constexpr std::array<std::string_view, 15> kLongWithOneDash = {
+    "-in",    "-out",   "-met",   "-sol",  "-hmin",     "-hmax",   "-hsiz",  "-hgrad",
+    "-hausd", "-ar",    "-nr",    "-optim", "-noinsert", "-noswap", "-nomove"};
+
+bool is_integer(const std::string& s) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  std::strtol(s.c_str(), &end, 10);
+  return *end == '\0';
+}
+
+}  // namespace
+
+void translate_mmg_spellings(std::vector<std::string>& args) {
+  std::vector<std::string> out;
+  out.reserve(args.size());
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    bool long_one_dash = false;
+    for (std::string_view k : kLongWithOneDash) long_one_dash = long_one_dash || a == k;
+    if (long_one_dash) {
+      out.push_back("-" + a);
+    } else if (a == "-v" && i + 1 < args.size() && is_integer(args[i + 1])) {
+      out.push_back("--verbose=" + args[++i]);
+    } else if (a == "-v") {
+      out.push_back("--verbose=1");
+    } else {
+      out.push_back(a);
+    }
+  }
+  args.swap(out);
+}
+
+}  // namespace riemesh::cli

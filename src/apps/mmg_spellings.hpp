@@ -1,0 +1,13 @@
+#pragma once
+// MMG's single-dash long options (-in, -met, -hmax, -v 5, ...) rewritten to Riemesh's spellings
+// before parsing, so that scripts written for mmg2d/mmgs/mmg3d run unchanged.
+#include <string>
+#include <vector>
+
+namespace riemesh::cli {
+
+/// Rewrites args (argv[1..], in order) in place: "-hmax" -> "--hmax", "-v N" -> "--verbose=N",
+/// a lone "-v" -> "--verbose=1". Other arguments are left as they are.
+void translate_mmg_spellings(std::vector<std::string>& args);
+
+}  // namespace riemesh::cli

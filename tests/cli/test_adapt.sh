@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# riemesh adapt: runs on real 2D domains with a metric file, --hsiz and --optim; MMG spellings;
+# the output is valid (riemesh check), keeps the boundary refs; bad inputs exit 2 with one line
+# and leave no output file.
+set -u
+source "$(dirname "$0")/cli_lib.sh"
+D=$SHARED/data
+
+# The L-shape of the FreeFem client with its metric: valid output with the 6 edge refs.
+"$R" adapt "$D/formats/lshape.mesh" --metric "$D/formats/lshape_metric.sol" -o "$TMP/l.mesh" \
+  --out-metric "$TMP/l.sol" -q && ok adapt-lshape || ko adapt-lshape
+"$R" check "$TMP/l.mesh" >/dev/null && ok lshape-valid || ko lshape-valid
+refs=$("$R" stats "$TMP/l.mesh" --json | /usr/bin/python3 -c \
+  'import json,sys; j=json.load(sys.stdin); print(sorted(int(k) for k in j["refs"]["edges"]))' 2>/dev/null)
+want=$("$R" stats "$D/formats/lshape.mesh" --json | /usr/bin/python3 -c \
+  'import json,sys; j=json.load(sys.stdin); print(sorted(int(k) for k in j["refs"]["edges"]))' 2>/dev/null)
+[ -n "$refs" ] && [ "$refs" = "$want" ] && ok lshape-edge-refs || ko "lshape-edge-refs: $refs vs $want"
+[ -s "$TMP/l.sol" ] && ok out-metric || ko out-metric
+
+# MMG spellings, a uniform size on the NACA domain.
+"$R" adapt -in "$D/2d/naca0012.mesh" -hsiz 2 -out "$TMP/n.meshb" -v 0 2>/dev/null &&
+  "$R" check "$TMP/n.meshb" >/dev/null && ok mmg-spellings || ko mmg-spellings
+
+# --optim keeps the sizes of the lake mesh: vertex count within 20%.
+"$R" adapt "$D/2d/lac-leman.mesh" --optim -o "$TMP/lake.mesh" -q && ok optim || ko optim
+nv_in=$("$R" stats "$D/2d/lac-leman.mesh" --json | /usr/bin/python3 -c 'import json,sys; print(json.load(sys.stdin)["counts"]["vertices"])')
+nv_out=$("$R" stats "$TMP/lake.mesh" --json | /usr/bin/python3 -c 'import json,sys; print(json.load(sys.stdin)["counts"]["vertices"])')
+/usr/bin/python3 -c "import sys; sys.exit(0 if abs($nv_out-$nv_in) <= 0.2*$nv_in else 1)" &&
+  ok "optim-count ($nv_in -> $nv_out)" || ko "optim-count ($nv_in -> $nv_out)"
+
+# Bad inputs.
+expect_error no-size adapt "$D/2d/aile.mesh" -o "$TMP/x.mesh"
+expect_no_file no-size-file "$TMP/x.mesh"
+expect_error contradiction adapt "$D/2d/aile.mesh" --hsiz 0.1 --metric "$D/formats/lshape_metric.sol" -o "$TMP/x.mesh"
+expect_error hmin-hmax adapt "$D/2d/aile.mesh" --hsiz 0.1 --hmin 1 --hmax 0.5 -o "$TMP/x.mesh"
+expect_error wrong-metric adapt "$D/2d/aile.mesh" --metric "$D/formats/lshape_metric.sol" -o "$TMP/x.mesh"
+expect_error missing adapt "$TMP/nope.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
+expect_error volume adapt "$D/vol/bunny_vol.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
+expect_error hgrad adapt "$D/2d/aile.mesh" --hsiz 0.1 --hgrad 0.5 -o "$TMP/x.mesh"
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nTriangles\n1\n1 2 3 0\nEnd\n' > "$TMP/t.mesh"
+printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n3\n1 3\n1 2 1\n1 0 1\n1 0 1\nEnd\n' > "$TMP/bad.sol"
+expect_error non-spd adapt "$TMP/t.mesh" --metric "$TMP/bad.sol" -o "$TMP/x.mesh"
+expect_no_file non-spd-file "$TMP/x.mesh"
+exit $fail
