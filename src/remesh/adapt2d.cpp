@@ -259,6 +259,8 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
       prepare_metrics(ordered, adjacency, permuted, options, result.report);
   Remesh2dContext ctx(ordered, prepared, options, adjacency);
   TriMesh& m = ctx.mesh();
+  long best_ops = std::numeric_limits<long>::max();
+  int best_pass = 0;
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();
     PassStats st;
@@ -275,11 +277,15 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);
     if (on_pass) on_pass(st);
-    // Converged when fewer than 0.5% of the vertices were inserted or removed.
-    if (st.splits + st.collapses <= static_cast<long>(st.vertices / 200)) {
+    // Converged when fewer than 0.5% of the vertices were inserted or removed, or when the
+    // count of insertions and removals has not reached a new low for 3 passes (a few edges
+    // then only cycle between split and collapse).
+    const long ops = st.splits + st.collapses;
+    if (ops <= static_cast<long>(st.vertices / 200) || pass - best_pass >= 3) {
       result.report.converged = true;
       break;
     }
+    if (ops < best_ops) best_ops = ops, best_pass = pass;
   }
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
   result.mesh = to_mesh(m, &result.metrics);
