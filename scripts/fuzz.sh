@@ -8,13 +8,14 @@
 # touched); keep a crasher under tests/io/crashers/<target>/ once fixed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds="${1:-${FUZZ_SECONDS:-30}}"
-shift || true
+seconds="${FUZZ_SECONDS:-30}"
+if [[ "${1:-}" =~ ^[0-9]+$ ]]; then seconds="$1"; shift; fi
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DRIEMESH_FUZZ=ON -DRIEMESH_WERROR=OFF -DRIEMESH_BUILD_TESTS=OFF -DRIEMESH_BUILD_BENCH=OFF \
   -DRIEMESH_BUILD_APPS=OFF >/dev/null
-cmake --build build-fuzz -j "$(nproc)" >/dev/null
+cmake --build build-fuzz -j "$(nproc)" >build-fuzz/build.log 2>&1 ||
+  { tail -n 40 build-fuzz/build.log; echo "fuzz: build failed (build-fuzz/build.log)"; exit 1; }
 
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
