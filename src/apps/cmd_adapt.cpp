@@ -12,12 +12,13 @@
 #include "metric/element.hpp"
 #include "metric/metric.hpp"
 #include "remesh/adapt2d.hpp"
+#include "remesh/transfer.hpp"
 
 namespace riemesh::cli {
 namespace {
 
 struct AdaptArgs {
-  std::string input, output, metric, out_metric, interp = "log";
+  std::string input, output, metric, out_metric, fields, out_fields, interp = "log";
   double hsiz = 0.0;
   bool optim = false, noinsert = false, noswap = false, nomove = false, nr = false;
   bool quiet = false;
@@ -74,6 +75,8 @@ void run(AdaptArgs& a) {
     throw InputError("--hsiz and --metric contradict: give one of them");
   if (a.optim && (!a.metric.empty() || a.hsiz > 0.0))
     throw InputError("--optim keeps the current sizes: it cannot be combined with --metric or --hsiz");
+  if (!a.fields.empty() && a.out_fields.empty())
+    throw InputError("--fields needs --out-fields OUT.sol for the transferred fields");
   if (a.metric.empty() && a.hsiz <= 0.0 && !a.optim)
     throw InputError("no size field: give --metric M.sol, --hsiz H or --optim");
   a.opt.insert = !a.noinsert;
@@ -88,14 +91,19 @@ void run(AdaptArgs& a) {
     throw InputError(a.input + ": only planar (2D) meshes can be adapted so far; surface and "
                      "volume remeshing are issues #6 and #7");
   const std::vector<SymMat2> metrics = load_metric(a, mesh);
+  const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
   const bool progress = !a.quiet;
   const Adapt2dResult r = adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
     if (progress) print_pass(s, a.verbosity);
   });
+  if (!a.quiet)
+    for (const std::string& note : r.report.notes)
+      std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
   if (!r.report.converged && !a.quiet)
     std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
                  r.report.passes.size(), r.report.stall_reason.c_str());
   write_mesh(r.mesh, a.output);
+  if (!a.fields.empty()) write_sol(a.out_fields, transfer_p1(mesh, fields, r.mesh), 2);
   if (!a.out_metric.empty()) {
     Field f{"metric", FieldKind::kSymTensor, {}};
     for (const SymMat2& m : r.metrics) f.values.insert(f.values.end(), {m.c[0], m.c[1], m.c[2]});
@@ -114,6 +122,8 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--metric,--met,--sol", a->metric,
                   "Metric field (.sol/.solb: symmetric tensors m11 m12 m22, or sizes)");
   cmd->add_option("--out-metric", a->out_metric, "Write the metric at the output vertices (.sol)");
+  cmd->add_option("--fields", a->fields, "Vertex fields (.sol) to transfer to the output (P1)");
+  cmd->add_option("--out-fields", a->out_fields, "Where to write the transferred fields (.sol)");
   cmd->add_option("--hsiz", a->hsiz, "Uniform size instead of a metric");
   cmd->add_option("--hmin", a->opt.hmin, "Smallest size")->capture_default_str();
   cmd->add_option("--hmax", a->opt.hmax, "Largest size");

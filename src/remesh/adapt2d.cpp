@@ -41,10 +41,24 @@ std::vector<SymMat2> prepare_metrics(const Mesh& in, const Adjacency& adj,
   std::vector<SymMat2> out(metrics.begin(), metrics.end());
   const double lo = std::isfinite(o.hmax) ? 1.0 / (o.hmax * o.hmax) : 0.0;
   const double hi = o.hmin > 0.0 ? 1.0 / (o.hmin * o.hmin) : std::numeric_limits<double>::max();
+  std::size_t below_hmin = 0, above_hmax = 0, first_below = 0;
   for (std::size_t v = 0; v < out.size(); ++v) {
     require_metric(out[v], "vertex " + std::to_string(v + 1));
-    if (lo > 0.0 || hi < std::numeric_limits<double>::max()) out[v] = project_spd(out[v], lo, hi);
+    if (lo > 0.0 || hi < std::numeric_limits<double>::max()) {
+      const SymEigen<2> e = eigen(out[v]);
+      if (e.values[1] > hi && below_hmin++ == 0) first_below = v;
+      above_hmax += e.values[0] < lo ? 1 : 0;
+      out[v] = project_spd(out[v], lo, hi);
+    }
   }
+  if (below_hmin > 0)
+    report.notes.push_back("the metric asks for sizes below --hmin " + num(o.hmin) + " at " +
+                           std::to_string(below_hmin) + " vertices, e.g. near (" +
+                           num(in.coords[2 * first_below]) + ", " +
+                           num(in.coords[2 * first_below + 1]) + "): clipped to --hmin");
+  if (above_hmax > 0)
+    report.notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
+                           std::to_string(above_hmax) + " vertices");
   if (o.hgrad > 0.0) {
     GradationOptions g;
     g.mode = GradationMode::kGrowthPhysical;

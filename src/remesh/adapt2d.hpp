@@ -55,6 +55,8 @@ struct Adapt2dReport {
   /// they converged.
   std::string stall_reason;
   double gradation_before = 0, gradation_after = 0;  ///< max growth factor over input edges
+  /// Things the caller should tell the user, one line each (e.g. sizes clipped by hmin).
+  std::vector<std::string> notes;
 };
 
 struct Adapt2dResult {

@@ -17,6 +17,27 @@ want=$("$R" stats "$D/formats/lshape.mesh" --json | /usr/bin/python3 -c \
 [ -n "$refs" ] && [ "$refs" = "$want" ] && ok lshape-edge-refs || ko "lshape-edge-refs: $refs vs $want"
 [ -s "$TMP/l.sol" ] && ok out-metric || ko out-metric
 
+# --fields: a field linear in x and y comes back exact (P1 transfer) at every output vertex.
+/usr/bin/python3 - "$D/formats/lshape.mesh" "$TMP/u.sol" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+i = toks.index('Vertices'); n = int(toks[i + 1])
+xy = [(float(toks[i + 2 + 3 * k]), float(toks[i + 3 + 3 * k])) for k in range(n)]
+open(sys.argv[2], 'w').write('MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n%d\n1 1\n' % n +
+                             ''.join('%r\n' % (x + 2 * y) for x, y in xy) + 'End\n')
+PY
+"$R" adapt "$D/formats/lshape.mesh" --metric "$D/formats/lshape_metric.sol" --fields "$TMP/u.sol" \
+  --out-fields "$TMP/uo.sol" -o "$TMP/lf.mesh" -q && /usr/bin/python3 - "$TMP/lf.mesh" "$TMP/uo.sol" <<'PY' && ok fields-transfer || ko fields-transfer
+import sys
+toks = open(sys.argv[1]).read().split()
+i = toks.index('Vertices'); n = int(toks[i + 1])
+xy = [(float(toks[i + 2 + 3 * k]), float(toks[i + 3 + 3 * k])) for k in range(n)]
+s = open(sys.argv[2]).read().split()
+j = s.index('SolAtVertices'); vals = [float(v) for v in s[j + 4:j + 4 + n]]
+sys.exit(0 if len(vals) == n and max(abs(v - (x + 2 * y)) for v, (x, y) in zip(vals, xy)) < 1e-9 else 1)
+PY
+expect_error fields-without-out adapt "$D/formats/lshape.mesh" --metric "$D/formats/lshape_metric.sol" --fields "$TMP/u.sol" -o "$TMP/x.mesh"
+
 # MMG spellings, a uniform size on the NACA domain.
 "$R" adapt -in "$D/2d/naca0012.mesh" -hsiz 2 -out "$TMP/n.meshb" -v 0 2>/dev/null &&
   "$R" check "$TMP/n.meshb" >/dev/null && ok mmg-spellings || ko mmg-spellings
