@@ -90,7 +90,10 @@ SymMat2 Remesh2dContext::metric_for(const Vec2& p, std::int32_t curve, double s,
   last_found_ = found;
   if (curve == kNoCurve || !(options_.hausd > 0.0)) return m;
   const BoundaryCurve& c = curves_.curves[curve];
-  const double h = std::max(hausd_size(c, s, options_.hausd), options_.hmin);
+  // Unit edges may reach √2 in length and the sagitta grows as the square of the chord, so the
+  // size along the curve is the hausd chord divided by √2: chords of metric length √2 then
+  // still stay within hausd.
+  const double h = std::max(hausd_size(c, s, options_.hausd) * 0.7071067811865476, options_.hmin);
   if (!std::isfinite(h)) return m;
   // Rank-one tightening along the unit tangent T: M + (1/h² − TᵀMT) TTᵀ when the metric allows
   // more than h along the curve; lengths across the curve are unchanged.
@@ -180,6 +183,10 @@ bool Remesh2dContext::smoothing_target(Id v, NewVertex& out) const {
   // Metric length per unit arc on each side; balance the two metric lengths.
   const double d1 = edge_length(mesh_, prev, v) / a1, d2 = edge_length(mesh_, v, next) / a2;
   const double snew = param_at_fraction(curve, sp, sn, d2 / (d1 + d2));
+  // Sliding along the curve lengthens one of the two chords: keep both within hausd.
+  if (options_.hausd > 0.0 && (chord_deviation(curve, sp, snew) > options_.hausd ||
+                               chord_deviation(curve, snew, sn) > options_.hausd))
+    return false;
   out.p = point(curve, snew);
   out.curve = c;
   out.param = wrap_param(curve, snew);
