@@ -11,6 +11,7 @@ packages=(
   libcairo2-dev                                   # PNG/SVG rendering
   python3-numpy python3-meshio time               # independent checks (shared/bench, validators)
   gmsh                                            # independent .msh/.mesh reader in the io tests
+  freefem++                                       # FreeFem reads our 2D/3D .mesh (validators, client)
 )
 
 SUDO=""
