@@ -15,12 +15,6 @@ using namespace riemesh;
 
 namespace {
 
-std::vector<SymMat2> evaluate(const AnalyticCase& c, const Mesh& m) {
-  std::vector<SymMat2> out;
-  for (std::size_t v = 0; v < m.num_vertices(); ++v)
-    out.push_back(analytic_metric(c, Vec2{{m.coords[2 * v], m.coords[2 * v + 1]}}));
-  return out;
-}
 
 Adapt2dOptions options() {
   Adapt2dOptions o;
@@ -30,8 +24,8 @@ Adapt2dOptions options() {
 
 void run(benchmark::State& state, const AnalyticCase& c, int setup_runs) {
   Mesh m = unit_square(20, 20);
-  for (int i = 0; i < setup_runs; ++i) m = adapt2d(m, evaluate(c, m), options()).mesh;
-  const std::vector<SymMat2> met = evaluate(c, m);
+  for (int i = 0; i < setup_runs; ++i) m = adapt2d(m, analytic_metrics(c, m), options()).mesh;
+  const std::vector<SymMat2> met = analytic_metrics(c, m);
   std::size_t triangles = 0;
   for (auto _ : state) {
     const Adapt2dResult r = adapt2d(m, met, options());

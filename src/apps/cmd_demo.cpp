@@ -23,12 +23,6 @@
 namespace riemesh::cli {
 namespace {
 
-std::vector<SymMat2> evaluate(const AnalyticCase& c, const Mesh& m) {
-  std::vector<SymMat2> out;
-  for (std::size_t v = 0; v < m.num_vertices(); ++v)
-    out.push_back(analytic_metric(c, Vec2{{m.coords[2 * v], m.coords[2 * v + 1]}}));
-  return out;
-}
 
 void adaptation_demo(const std::string& dir) {
   const AnalyticCase c{AnalyticField::kPolar2, 0.004};
@@ -39,7 +33,7 @@ void adaptation_demo(const std::string& dir) {
   Adapt2dOptions o;
   o.hgrad = 0.0;  // the analytic field is prescribed exactly
   for (int run = 1; run <= 4; ++run) {
-    const Adapt2dResult r = adapt2d(m, evaluate(c, m), o);
+    const Adapt2dResult r = adapt2d(m, analytic_metrics(c, m), o);
     const PassStats& s = r.report.passes.back();
     std::printf("  run %d: %6zu vertices %6zu triangles, %5.1f%% of edges of metric length in "
                 "[1/√2, √2], quality min %.2f mean %.3f (%zu passes)\n",
@@ -50,7 +44,7 @@ void adaptation_demo(const std::string& dir) {
   std::filesystem::create_directories(dir);
   write_medit(m, dir + "/square.mesh");
   Field f{"metric", FieldKind::kSymTensor, {}};
-  for (const SymMat2& x : evaluate(c, m)) f.values.insert(f.values.end(), {x.c[0], x.c[1], x.c[2]});
+  for (const SymMat2& x : analytic_metrics(c, m)) f.values.insert(f.values.end(), {x.c[0], x.c[1], x.c[2]});
   write_sol(dir + "/square.sol", {f}, 2);
   RenderOptions ro;
   ro.title = "riemesh demo: polar-2 metric";

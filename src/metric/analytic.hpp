@@ -4,8 +4,10 @@
 // the shared Python harness (../shared/bench/metrics.py) defines the same fields.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
+#include "mesh/mesh.hpp"
 #include "metric/metric.hpp"
 
 namespace riemesh {
@@ -48,6 +50,15 @@ inline SymMat2 analytic_metric(const AnalyticCase& c, const Vec2& p) {
     ht = c.scale * (c.hmax * d0 + 0.025 * (1.0 - d0));
   }
   return metric_from_sizes(Mat2{{{co, -si}, {si, co}}}, Vec2{{hvar(r), ht}});
+}
+
+/// The case's metric at every vertex of a planar mesh.
+inline std::vector<SymMat2> analytic_metrics(const AnalyticCase& c, const Mesh& m) {
+  std::vector<SymMat2> out;
+  out.reserve(m.num_vertices());
+  for (std::size_t v = 0; v < m.num_vertices(); ++v)
+    out.push_back(analytic_metric(c, Vec2{{m.coords[2 * v], m.coords[2 * v + 1]}}));
+  return out;
 }
 
 }  // namespace riemesh

@@ -219,15 +219,13 @@ bool intersect_into(SymMat<D>& a, const SymMat<D>& b) {
   return true;
 }
 
-/// Metric-space growth (Alauzet 2010): M_B grown to A is η² M_B with η = (1 + ℓ_{M_B}(AB) ln β)⁻¹
-/// (sizes grow linearly in the metric length of the edge); then M_A ← M_A ∩ grown, both ways.
-template <int D>
-bool correct_growth(const EdgeGeom<D>& e, std::span<SymMat<D>> m, const GradationOptions& o,
-                    std::vector<char>& touched) {
-  const double log_beta = std::log(o.threshold);
+/// M_A ← M_A ∩ grown(M_B) and M_B ← M_B ∩ grown(M_A) for edge e, where grown(M) is the metric
+/// of a neighbour carried across the edge by the growth law. True when either changed.
+template <int D, class Grown>
+bool intersect_grown_both_ways(const EdgeGeom<D>& e, std::span<SymMat<D>> m,
+                               std::vector<char>& touched, Grown grown) {
   auto grow = [&](int32_t to, int32_t from) {
-    const double eta = 1.0 / (1.0 + e.len * length(m[from], e.u) * log_beta);
-    if (!intersect_into(m[to], (eta * eta) * m[from])) return false;
+    if (!intersect_into(m[to], grown(m[from]))) return false;
     touched[to] = 1;
     return true;
   };
@@ -236,22 +234,29 @@ bool correct_growth(const EdgeGeom<D>& e, std::span<SymMat<D>> m, const Gradatio
   return into_a || into_b;
 }
 
+/// Metric-space growth (Alauzet 2010): M_B grown to A is η² M_B with η = (1 + ℓ_{M_B}(AB) ln β)⁻¹
+/// (sizes grow linearly in the metric length of the edge).
+template <int D>
+bool correct_growth(const EdgeGeom<D>& e, std::span<SymMat<D>> m, const GradationOptions& o,
+                    std::vector<char>& touched) {
+  const double log_beta = std::log(o.threshold);
+  return intersect_grown_both_ways<D>(e, m, touched, [&](const SymMat<D>& from) {
+    const double eta = 1.0 / (1.0 + e.len * length(from, e.u) * log_beta);
+    return (eta * eta) * from;
+  });
+}
+
 /// Physical-space growth: M_B grown to A keeps B's directions with sizes h_i + |AB| ln β, i.e.
-/// η_i = (1 + |AB| ln β / h_i)⁻² per principal direction; then M_A ← M_A ∩ grown, both ways.
+/// η_i = (1 + |AB| ln β / h_i)⁻² per principal direction.
 template <int D>
 bool correct_growth_physical(const EdgeGeom<D>& e, std::span<SymMat<D>> m,
                              const GradationOptions& o, std::vector<char>& touched) {
   const double add = e.len * std::log(o.threshold);
-  auto grow = [&](int32_t to, int32_t from) {
-    MetricSizes<D> s = sizes(m[from]);
+  return intersect_grown_both_ways<D>(e, m, touched, [add](const SymMat<D>& from) {
+    MetricSizes<D> s = sizes(from);
     for (int i = 0; i < D; ++i) s.sizes[i] += add;
-    if (!intersect_into(m[to], metric_from_sizes(s.directions, s.sizes))) return false;
-    touched[to] = 1;
-    return true;
-  };
-  const bool into_a = grow(e.a, e.b);
-  const bool into_b = grow(e.b, e.a);
-  return into_a || into_b;
+    return metric_from_sizes(s.directions, s.sizes);
+  });
 }
 
 /// Max over edges of the H-variation (hv) or H-shock of the field.
