@@ -1,0 +1,37 @@
+#pragma once
+// Derivative recovery from P1 vertex fields (BOOK.md §2 "Derivative recovery"): gradient and
+// Hessian at every vertex of a triangle mesh (D = 2) or tetrahedral mesh (D = 3).
+//   kL2Projection: area/volume-weighted average of the element gradients (the L2 projection of the
+//                  piecewise-constant gradient onto P1 with a lumped mass matrix), applied twice.
+//   kGreen:        weak Hessian by Green's formula, ∫ H φ_i = −∫ ∇u ∇φ_i + boundary term, lumped,
+//                  with a boundary correction.
+//   kLeastSquares: quadratic Taylor fit of u over the vertex ball (second ring where the ball is
+//                  too small, e.g. on the boundary). The documented default: exact for quadratics.
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "core/symmat.hpp"
+#include "core/vec.hpp"
+#include "mesh/mesh.hpp"
+
+namespace riemesh {
+
+enum class RecoveryMethod { kL2Projection, kGreen, kLeastSquares };
+
+/// "l2", "green" or "lsq"; throws InputError listing the valid names otherwise.
+RecoveryMethod parse_recovery_method(std::string_view name);
+
+/// The gradient of the P1 field u (one value per vertex) at every vertex. D = 2: mesh.dim == 2
+/// with triangles; D = 3: a tetrahedral volume. Throws InputError for a size mismatch or another
+/// kind of mesh.
+template <int D>
+std::vector<Vec<D>> recover_gradient(const Mesh& mesh, std::span<const double> u,
+                                     RecoveryMethod method = RecoveryMethod::kLeastSquares);
+
+/// The Hessian of the P1 field u at every vertex (symmetric, packed as SymMat<D>).
+template <int D>
+std::vector<SymMat<D>> recover_hessian(const Mesh& mesh, std::span<const double> u,
+                                       RecoveryMethod method = RecoveryMethod::kLeastSquares);
+
+}  // namespace riemesh
