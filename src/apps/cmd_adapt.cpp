@@ -92,6 +92,7 @@ void run(AdaptArgs& a) {
                      "volume remeshing are issues #6 and #7");
   const std::vector<SymMat2> metrics = load_metric(a, mesh);
   const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
+  if (a.verbosity < 0) a.quiet = true;  // MMG's -v -1: silent
   const bool progress = !a.quiet;
   const Adapt2dResult r = adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
     if (progress) print_pass(s, a.verbosity);
