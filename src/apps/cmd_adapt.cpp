@@ -26,6 +26,26 @@ struct AdaptArgs {
   Adapt2dOptions opt;
 };
 
+/// The implied metric of the mesh at the vertices of its triangles; vertices in no triangle
+/// (geometry points some writers keep) get the identity, and the remesher drops them.
+std::vector<SymMat2> implied_metric_of_used(const Mesh& mesh) {
+  std::vector<Id> new_id(mesh.num_vertices(), kNoId);
+  std::vector<double> coords;
+  std::vector<Id> tris;
+  for (const Id v : mesh.triangles) {
+    if (new_id[v] == kNoId) {
+      new_id[v] = static_cast<Id>(coords.size() / 2);
+      coords.insert(coords.end(), {mesh.coords[2 * v], mesh.coords[2 * v + 1]});
+    }
+    tris.push_back(new_id[v]);
+  }
+  const std::vector<SymMat2> used = implied_metric<2>(coords, tris);
+  std::vector<SymMat2> out(mesh.num_vertices(), SymMat2::identity());
+  for (std::size_t v = 0; v < out.size(); ++v)
+    if (new_id[v] != kNoId) out[v] = used[new_id[v]];
+  return out;
+}
+
 /// The metric field for the run: from --metric (tensor, or scalar sizes), --hsiz, or (--optim)
 /// the implied metric of the input mesh.
 std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
@@ -55,7 +75,7 @@ std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
     throw InputError(a.metric + ": no scalar or symmetric tensor field in SolAtVertices");
   }
   if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
-  return implied_metric<2>(mesh.coords, mesh.triangles);
+  return implied_metric_of_used(mesh);
 }
 
 void print_pass(const PassStats& s, int verbosity) {
