@@ -43,4 +43,25 @@ std::vector<SymMat<D>> hessian_metric(const Mesh& mesh, std::span<const SymMat<D
 template <int D>
 double field_complexity(const Mesh& mesh, std::span<const SymMat<D>> metrics);
 
+/// The complexity of a vertex metric field and the counts it predicts (see MetricReport).
+template <int D>
+MetricReport metric_report(const Mesh& mesh, std::span<const SymMat<D>> metrics);
+
+/// Relative normalisation of a field before its metric is combined with others: divides the
+/// Hessians by max |u| over the vertices, so that the tolerance of an L∞ metric is an error
+/// relative to the field's magnitude and fields of different units weigh alike in an
+/// intersection. Absolute normalisation is to leave the Hessians as they are. A field that is
+/// zero everywhere is left unchanged. (The Lp metric for a complexity is invariant under scaling
+/// of u, so this matters for --tolerance and for combining.)
+template <int D>
+void normalize_hessians_relative(std::span<SymMat<D>> hessians, std::span<const double> u);
+
+/// Several metric fields on the same vertices combined by intersection at every vertex: the
+/// metric that asks, in every direction, for the smallest size of any input (BOOK.md §2 "Several
+/// fields"). Two fields: intersect() (simultaneous reduction); more: intersect_max_volume()
+/// (order-independent). Throws InputError for an empty list, fields of different sizes or a
+/// tensor that is not SPD.
+template <int D>
+std::vector<SymMat<D>> combine_metrics(std::span<const std::vector<SymMat<D>>> fields);
+
 }  // namespace riemesh
