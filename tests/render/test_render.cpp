@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "mesh/fixtures.hpp"
 #include "metric/mesh_quality.hpp"
+#include "render/line_plot.hpp"
 #include "render/render.hpp"
 
 using namespace riemesh;
@@ -114,4 +115,26 @@ TEST(Render, HistogramPlot) {
   EXPECT_EQ(png_size(b).first, 600);
   EXPECT_THROW(plot_histograms({}, (d / "x.png").string()), InputError);
   EXPECT_THROW(plot_histograms(panels, (d / "x.txt").string()), InputError);
+}
+
+TEST(PlotLogLog, WritesPngAndSvgAndRejectsBadInput) {
+  const fs::path d = temp_dir("loglog");
+  LogLogPlot p;
+  p.title = "errors";
+  p.x_label = "vertices";
+  p.y_label = "L2 error";
+  p.series.push_back({"adapted, slope -1.00", {500, 1000, 2000, 4000}, {1e-2, 5e-3, 2.5e-3, 1.25e-3}, 0, false});
+  p.series.push_back({"uniform", {500, 1000, 2000, 4000}, {1e-1, 7e-2, 5e-2, 0.0}, 1, true});
+  plot_loglog(p, (d / "e.png").string(), 640);
+  const std::string png = slurp(d / "e.png");
+  ASSERT_GT(png.size(), 1000u);
+  EXPECT_EQ(png_size(png), std::make_pair(640, 480));
+  plot_loglog(p, (d / "e.svg").string(), 640);
+  EXPECT_NE(slurp(d / "e.svg").find("<svg"), std::string::npos);
+  EXPECT_THROW(plot_loglog(p, (d / "e.bmp").string()), InputError);
+  EXPECT_THROW(plot_loglog(LogLogPlot{}, (d / "x.png").string()), InputError);
+  LogLogPlot empty = p;
+  for (PlotSeries& s : empty.series) s.y.assign(s.y.size(), -1.0);
+  EXPECT_THROW(plot_loglog(empty, (d / "x.png").string()), InputError);
+  EXPECT_FALSE(fs::exists(d / "x.png"));
 }

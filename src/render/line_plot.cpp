@@ -1,0 +1,177 @@
+// plot_loglog: curves on log-log axes with decade grid lines and a legend.
+#include "render/line_plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "core/error.hpp"
+#include "render/canvas.hpp"
+
+namespace riemesh {
+namespace {
+
+using render_detail::Align;
+using render_detail::Canvas;
+
+bool drawable(double x, double y) { return x > 0 && y > 0 && std::isfinite(x) && std::isfinite(y); }
+
+/// log10 range of the data, widened to at least one decade and padded by 5%.
+struct Range {
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  void add(double v) {
+    lo = std::min(lo, std::log10(v));
+    hi = std::max(hi, std::log10(v));
+  }
+  void pad() {
+    if (hi - lo < 1.0) {
+      const double mid = 0.5 * (lo + hi);
+      lo = mid - 0.5;
+      hi = mid + 0.5;
+    }
+    const double m = 0.05 * (hi - lo);
+    lo -= m;
+    hi += m;
+  }
+};
+
+/// "10^k" as text for the decade labels (1, 10, 100, 1000 written out; others as 1e-3).
+std::string decade_label(int k) {
+  if (k >= 0 && k <= 4) return std::to_string(static_cast<long>(std::lround(std::pow(10.0, k))));
+  return "1e" + std::to_string(k);
+}
+
+struct Frame {
+  double x0, y0, w, h;  // plot area in pixels (y0 at the top)
+  Range rx, ry;
+  double px(double x) const { return x0 + w * (std::log10(x) - rx.lo) / (rx.hi - rx.lo); }
+  double py(double y) const { return y0 + h * (1.0 - (std::log10(y) - ry.lo) / (ry.hi - ry.lo)); }
+};
+
+void draw_axes(const Canvas& cv, const Frame& f, const LogLogPlot& plot) {
+  cairo_t* cr = cv.cr();
+  cairo_set_line_width(cr, 1.0);
+  // Grid and labels at each decade, light lines at 2..9 times it.
+  for (int axis = 0; axis < 2; ++axis) {
+    const Range& r = axis == 0 ? f.rx : f.ry;
+    for (int k = static_cast<int>(std::floor(r.lo)); k <= static_cast<int>(std::ceil(r.hi)); ++k) {
+      for (int m = 1; m <= 9; ++m) {
+        const double v = m * std::pow(10.0, k), lv = std::log10(v);
+        if (lv < r.lo || lv > r.hi) continue;
+        cv.set_color({0.5, 0.5, 0.5}, m == 1 ? 0.45 : 0.15);
+        if (axis == 0) {
+          cairo_move_to(cr, f.px(v), f.y0);
+          cairo_line_to(cr, f.px(v), f.y0 + f.h);
+        } else {
+          cairo_move_to(cr, f.x0, f.py(v));
+          cairo_line_to(cr, f.x0 + f.w, f.py(v));
+        }
+        cairo_stroke(cr);
+        if (m != 1) continue;
+        cv.set_color({0, 0, 0});
+        if (axis == 0)
+          cv.text(f.px(v), f.y0 + f.h + 16, decade_label(k), 11, Align::kCenter);
+        else
+          cv.text(f.x0 - 6, f.py(v) + 4, decade_label(k), 11, Align::kRight);
+      }
+    }
+  }
+  cv.set_color({0, 0, 0});
+  cairo_rectangle(cr, f.x0, f.y0, f.w, f.h);
+  cairo_stroke(cr);
+  cv.text(f.x0 + 0.5 * f.w, 22, plot.title, 14, Align::kCenter, true);
+  cv.text(f.x0 + 0.5 * f.w, f.y0 + f.h + 36, plot.x_label, 12, Align::kCenter);
+  cairo_save(cr);
+  cairo_translate(cr, 18, f.y0 + 0.5 * f.h);
+  cairo_rotate(cr, -std::numbers::pi / 2);
+  cv.text(0, 0, plot.y_label, 12, Align::kCenter);
+  cairo_restore(cr);
+}
+
+void draw_series(const Canvas& cv, const Frame& f, const PlotSeries& s) {
+  cairo_t* cr = cv.cr();
+  cv.set_color(render_detail::category_color(static_cast<std::size_t>(s.color)));
+  cairo_set_line_width(cr, 2.0);
+  const double dash[2] = {6.0, 4.0};
+  cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+  bool started = false;
+  for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+    if (!drawable(s.x[i], s.y[i])) continue;
+    if (started)
+      cairo_line_to(cr, f.px(s.x[i]), f.py(s.y[i]));
+    else
+      cairo_move_to(cr, f.px(s.x[i]), f.py(s.y[i]));
+    started = true;
+  }
+  cairo_stroke(cr);
+  cairo_set_dash(cr, dash, 0, 0);
+  for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+    if (!drawable(s.x[i], s.y[i])) continue;
+    cairo_arc(cr, f.px(s.x[i]), f.py(s.y[i]), 3.5, 0, 2 * std::numbers::pi);
+    cairo_fill(cr);
+  }
+}
+
+void draw_legend(const Canvas& cv, const Frame& f, const LogLogPlot& plot) {
+  cairo_t* cr = cv.cr();
+  double text_w = 0;
+  for (const PlotSeries& s : plot.series) text_w = std::max(text_w, cv.text_width(s.label, 11));
+  const double row = 17, bw = text_w + 46, bh = row * plot.series.size() + 8;
+  const double bx = f.x0 + 10, by = f.y0 + f.h - bh - 10;
+  cv.set_color({1, 1, 1}, 0.85);
+  cairo_rectangle(cr, bx, by, bw, bh);
+  cairo_fill(cr);
+  for (std::size_t i = 0; i < plot.series.size(); ++i) {
+    const PlotSeries& s = plot.series[i];
+    const double y = by + 4 + row * (i + 0.5);
+    cv.set_color(render_detail::category_color(static_cast<std::size_t>(s.color)));
+    cairo_set_line_width(cr, 2.0);
+    const double dash[2] = {6.0, 4.0};
+    cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+    cairo_move_to(cr, bx + 6, y);
+    cairo_line_to(cr, bx + 34, y);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, dash, 0, 0);
+    cv.set_color({0, 0, 0});
+    cv.text(bx + 40, y + 4, s.label, 11);
+  }
+}
+
+}  // namespace
+
+void plot_loglog(const LogLogPlot& plot, const std::string& path, int width) {
+  const render_detail::ImageFormat format = render_detail::image_format(path);
+  if (plot.series.empty()) throw InputError("plot: no series to draw");
+  if (width < 64 || width > 8192)
+    throw InputError("plot: width must be in 64..8192 pixels, got " + std::to_string(width));
+  Frame f{};
+  f.rx = Range{};
+  f.ry = Range{};
+  for (const PlotSeries& s : plot.series)
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+      if (drawable(s.x[i], s.y[i])) {
+        f.rx.add(s.x[i]);
+        f.ry.add(s.y[i]);
+      }
+  if (!(f.rx.lo <= f.rx.hi)) throw InputError("plot: no positive finite point to draw");
+  f.rx.pad();
+  f.ry.pad();
+  const int height = static_cast<int>(0.75 * width);
+  f.x0 = 70;
+  f.y0 = 36;
+  f.w = width - f.x0 - 20;
+  f.h = height - f.y0 - 50;
+  Canvas cv(format, width, height);
+  draw_axes(cv, f, plot);
+  cairo_save(cv.cr());
+  cairo_rectangle(cv.cr(), f.x0, f.y0, f.w, f.h);
+  cairo_clip(cv.cr());
+  for (const PlotSeries& s : plot.series) draw_series(cv, f, s);
+  cairo_restore(cv.cr());
+  draw_legend(cv, f, plot);
+  cv.save(path);
+}
+
+}  // namespace riemesh
