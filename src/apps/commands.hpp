@@ -13,6 +13,8 @@ struct ExitStatus {
 
 /// `riemesh metric ...` (the metric calculator and, later, metric construction).
 void register_metric(CLI::App& app);
+/// `riemesh metric hessian|combine ...` on the `metric` command (cmd_metric_hessian.cpp).
+void register_metric_hessian(CLI::App& metric);
 /// `riemesh demo`: a short tour on embedded inputs.
 void register_demo(CLI::App& app);
 /// `riemesh check FILE`: validity report (exit 0 valid, 1 invalid, 2 unreadable).
@@ -25,5 +27,7 @@ void register_convert(CLI::App& app);
 void register_render(CLI::App& app);
 /// `riemesh adapt`: remeshing to a metric field.
 void register_adapt(CLI::App& app);
+/// `riemesh transfer OLD.mesh OLD.sol NEW.mesh -o NEW.sol`: P1 transfer of vertex fields.
+void register_transfer(CLI::App& app);
 
 }  // namespace riemesh::cli
