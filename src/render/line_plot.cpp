@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -43,6 +44,13 @@ std::string decade_label(int k) {
   return "1e" + std::to_string(k);
 }
 
+/// A 2·10^k or 5·10^k label: whole numbers written out (2000, not 2e+03).
+std::string tick_label(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, v >= 1.0 && v < 1e6 ? "%.0f" : "%.3g", v);
+  return buf;
+}
+
 struct Frame {
   double x0, y0, w, h;  // plot area in pixels (y0 at the top)
   Range rx, ry;
@@ -69,12 +77,15 @@ void draw_axes(const Canvas& cv, const Frame& f, const LogLogPlot& plot) {
           cairo_line_to(cr, f.x0 + f.w, f.py(v));
         }
         cairo_stroke(cr);
-        if (m != 1) continue;
+        // Labels at the decades, and at 2 and 5 times them on an axis of under two decades.
+        const bool label = m == 1 || (r.hi - r.lo < 2.0 && (m == 2 || m == 5));
+        if (!label) continue;
+        const std::string text = m == 1 ? decade_label(k) : tick_label(v);
         cv.set_color({0, 0, 0});
         if (axis == 0)
-          cv.text(f.px(v), f.y0 + f.h + 16, decade_label(k), 11, Align::kCenter);
+          cv.text(f.px(v), f.y0 + f.h + 16, text, 11, Align::kCenter);
         else
-          cv.text(f.x0 - 6, f.py(v) + 4, decade_label(k), 11, Align::kRight);
+          cv.text(f.x0 - 6, f.py(v) + 4, text, 11, Align::kRight);
       }
     }
   }
@@ -114,15 +125,10 @@ void draw_series(const Canvas& cv, const Frame& f, const PlotSeries& s) {
   }
 }
 
+/// Legend in a column right of the plot area (it never hides a curve).
 void draw_legend(const Canvas& cv, const Frame& f, const LogLogPlot& plot) {
   cairo_t* cr = cv.cr();
-  double text_w = 0;
-  for (const PlotSeries& s : plot.series) text_w = std::max(text_w, cv.text_width(s.label, 11));
-  const double row = 17, bw = text_w + 46, bh = row * plot.series.size() + 8;
-  const double bx = f.x0 + 10, by = f.y0 + f.h - bh - 10;
-  cv.set_color({1, 1, 1}, 0.85);
-  cairo_rectangle(cr, bx, by, bw, bh);
-  cairo_fill(cr);
+  const double row = 17, bx = f.x0 + f.w + 10, by = f.y0;
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const PlotSeries& s = plot.series[i];
     const double y = by + 4 + row * (i + 0.5);
@@ -164,6 +170,10 @@ void plot_loglog(const LogLogPlot& plot, const std::string& path, int width) {
   f.w = width - f.x0 - 20;
   f.h = height - f.y0 - 50;
   Canvas cv(format, width, height);
+  double legend_w = 0;
+  for (const PlotSeries& s : plot.series)
+    legend_w = std::max(legend_w, cv.text_width(s.label, 11) + 56);
+  f.w = std::max(0.5 * f.w, f.w - legend_w);
   draw_axes(cv, f, plot);
   cairo_save(cv.cr());
   cairo_rectangle(cv.cr(), f.x0, f.y0, f.w, f.h);

@@ -20,7 +20,7 @@ struct LogLogPlot {
   std::vector<PlotSeries> series;
 };
 
-/// Draws the series on log-log axes (decade grid lines and labels, legend in the lower left) and
+/// Draws the series on log-log axes (decade grid lines and labels, legend on the right) and
 /// writes `path` (.png or .svg). Non-positive or non-finite points are skipped. Throws InputError
 /// for an unknown extension, a bad width, no series, or no drawable point.
 void plot_loglog(const LogLogPlot& plot, const std::string& path, int width = 800);
