@@ -1,0 +1,198 @@
+// Least-squares Taylor fit (BOOK.md §2): at each vertex i, the quadratic
+//   u(x) ≈ u_i + g·(x−x_i) + ½ (x−x_i)ᵀ H (x−x_i)
+// (D + D(D+1)/2 unknowns: 5 in 2D, 9 in 3D; u_i is kept, so a quadratic is reproduced exactly)
+// is fitted to the values at the vertices of the ball. Ring 1 is used alone only when it has at
+// least twice as many points as unknowns and the fit is well conditioned; otherwise ring 2 (and at
+// most ring 3, for tiny meshes) is added. In practice interior vertices of 2D meshes (valence ≈ 6)
+// and of tetrahedral meshes (valence ≈ 14) use two rings, which also makes the fit robust on the
+// boundary, where the ball is one-sided.
+//
+// Weights 1/|x_j − x_i|²: the Taylor remainder grows as |x−x_i|³, so farther ring-2 points count
+// less. Coordinates are scaled by the mean ring-1 edge length h first, so the normal equations are
+// O(1) whatever the mesh size; they are solved by Cholesky after symmetric diagonal equilibration,
+// a pivot below kPivotTol (relative) marking the fit as ill-conditioned. If no ring up to 3
+// determines a quadratic, the gradient comes from the linear fit and the Hessian is zero.
+#include <cmath>
+#include <cstddef>
+
+#include "core/error.hpp"
+#include "metric/recovery_detail.hpp"
+
+namespace riemesh::detail {
+
+namespace {
+
+constexpr int kMaxRings = 3;
+constexpr double kPivotTol = 1e-10;
+
+/// Normal equations of the weighted quadratic fit at one vertex (fixed size: no allocation).
+template <int D>
+struct QuadraticFit {
+  static constexpr int kUnknowns = D + D * (D + 1) / 2;
+  double a[kUnknowns][kUnknowns];  // upper triangle used
+  double b[kUnknowns];
+  int count;
+
+  void clear() {
+    for (int r = 0; r < kUnknowns; ++r) {
+      b[r] = 0.0;
+      for (int s = 0; s < kUnknowns; ++s) a[r][s] = 0.0;
+    }
+    count = 0;
+  }
+  /// Adds the point at scaled offset dx (non-zero) with value difference du.
+  void add(const Vec<D>& dx, double du) {
+    double p[kUnknowns];
+    for (int i = 0; i < D; ++i) p[i] = dx[i];
+    for (int j = 0; j < D; ++j)
+      for (int i = 0; i <= j; ++i) p[D + sym_index(i, j)] = (i == j ? 0.5 : 1.0) * dx[i] * dx[j];
+    const double dist2 = dot(dx, dx);
+    if (!(dist2 > 0.0)) throw InputError("coincident vertices in least-squares recovery");
+    const double w = 1.0 / dist2;
+    for (int r = 0; r < kUnknowns; ++r) {
+      const double wp = w * p[r];
+      b[r] += wp * du;
+      for (int s = r; s < kUnknowns; ++s) a[r][s] += wp * p[s];
+    }
+    ++count;
+  }
+  /// Solves the leading n x n system (n = kUnknowns: quadratic, n = D: linear fit) into c.
+  /// False when a pivot of the equilibrated matrix falls below kPivotTol.
+  bool solve(int n, double* c) const {
+    double l[kUnknowns][kUnknowns], scale[kUnknowns], y[kUnknowns];
+    for (int r = 0; r < n; ++r) {
+      if (!(a[r][r] > 0.0)) return false;
+      scale[r] = 1.0 / std::sqrt(a[r][r]);
+    }
+    for (int j = 0; j < n; ++j) {  // Cholesky L Lᵀ of S A S, column by column
+      double d = a[j][j] * scale[j] * scale[j];
+      for (int k = 0; k < j; ++k) d -= l[j][k] * l[j][k];
+      if (!(d > kPivotTol)) return false;
+      l[j][j] = std::sqrt(d);
+      for (int i = j + 1; i < n; ++i) {
+        double s = a[j][i] * scale[i] * scale[j];
+        for (int k = 0; k < j; ++k) s -= l[i][k] * l[j][k];
+        l[i][j] = s / l[j][j];
+      }
+    }
+    for (int i = 0; i < n; ++i) {  // L y = S b
+      double s = b[i] * scale[i];
+      for (int k = 0; k < i; ++k) s -= l[i][k] * y[k];
+      y[i] = s / l[i][i];
+    }
+    for (int i = n - 1; i >= 0; --i) {  // Lᵀ z = y, c = S z
+      double s = y[i];
+      for (int k = i + 1; k < n; ++k) s -= l[k][i] * c[k];
+      c[i] = s / l[i][i];
+    }
+    for (int i = 0; i < n; ++i) c[i] *= scale[i];
+    return true;
+  }
+};
+
+/// Scratch reused across vertices: a stamp per vertex (the last vertex that collected it) and the
+/// list of collected neighbours, ring after ring.
+struct RingScratch {
+  std::vector<Id> stamp;
+  std::vector<Id> ring;
+};
+
+/// Appends to scratch.ring the vertices of the elements around `centre_of` not yet stamped with
+/// `owner`, adding each to the fit.
+template <int D>
+void collect_ring(const Mesh& mesh, std::span<const double> u, const Adjacency& adj,
+                  const std::vector<Id>& simplices, Id owner, Id around, double inv_h,
+                  RingScratch& scratch, QuadraticFit<D>& fit) {
+  const Vec<D> xo = vertex_position<D>(mesh, owner);
+  const double uo = u[static_cast<std::size_t>(owner)];
+  for (const Id e : ball(adj, around)) {
+    const Id* s = &simplices[static_cast<std::size_t>(e) * (D + 1)];
+    for (int k = 0; k <= D; ++k) {
+      const Id w = s[k];
+      if (scratch.stamp[static_cast<std::size_t>(w)] == owner) continue;
+      scratch.stamp[static_cast<std::size_t>(w)] = owner;
+      scratch.ring.push_back(w);
+      fit.add(inv_h * (vertex_position<D>(mesh, w) - xo), u[static_cast<std::size_t>(w)] - uo);
+    }
+  }
+}
+
+/// Mean distance from v to its ring-1 neighbours (0 for an isolated vertex); fills scratch.ring.
+template <int D>
+double ring1_scale(const Mesh& mesh, const Adjacency& adj, const std::vector<Id>& simplices, Id v,
+                   RingScratch& scratch) {
+  scratch.ring.clear();
+  scratch.stamp[static_cast<std::size_t>(v)] = v;
+  const Vec<D> xv = vertex_position<D>(mesh, v);
+  double sum = 0.0;
+  for (const Id e : ball(adj, v)) {
+    const Id* s = &simplices[static_cast<std::size_t>(e) * (D + 1)];
+    for (int k = 0; k <= D; ++k) {
+      if (scratch.stamp[static_cast<std::size_t>(s[k])] == v) continue;
+      scratch.stamp[static_cast<std::size_t>(s[k])] = v;
+      scratch.ring.push_back(s[k]);
+      sum += norm(vertex_position<D>(mesh, s[k]) - xv);
+    }
+  }
+  return scratch.ring.empty() ? 0.0 : sum / static_cast<double>(scratch.ring.size());
+}
+
+/// The fit at vertex v: coefficients in c (scaled by h), and whether the quadratic part is valid.
+template <int D>
+int fit_vertex(const Mesh& mesh, std::span<const double> u, const Adjacency& adj,
+               const std::vector<Id>& simplices, Id v, RingScratch& scratch, QuadraticFit<D>& fit,
+               double* c, double& h) {
+  constexpr int kN = QuadraticFit<D>::kUnknowns;
+  h = ring1_scale<D>(mesh, adj, simplices, v, scratch);
+  if (h == 0.0) return 0;
+  const double inv_h = 1.0 / h;
+  const Vec<D> xv = vertex_position<D>(mesh, v);
+  const double uv = u[static_cast<std::size_t>(v)];
+  fit.clear();
+  for (const Id w : scratch.ring)
+    fit.add(inv_h * (vertex_position<D>(mesh, w) - xv), u[static_cast<std::size_t>(w)] - uv);
+  std::size_t begin = 0;
+  for (int rings = 1;; ++rings) {
+    if (fit.count >= (rings == 1 ? 2 * kN : kN) && fit.solve(kN, c)) return kN;
+    const std::size_t end = scratch.ring.size();
+    if (rings == kMaxRings || begin == end) break;
+    for (std::size_t k = begin; k < end; ++k)
+      collect_ring<D>(mesh, u, adj, simplices, v, scratch.ring[k], inv_h, scratch, fit);
+    begin = end;
+  }
+  return fit.solve(D, c) ? D : 0;
+}
+
+}  // namespace
+
+template <int D>
+void lsq_recover(const Mesh& mesh, std::span<const double> u, std::vector<Vec<D>>* gradient,
+                 std::vector<SymMat<D>>* hessian) {
+  const std::size_t nv = mesh.num_vertices();
+  const std::vector<Id>& simplices = recovery_simplices<D>(mesh);
+  const Adjacency adj = build_adjacency(simplices, D + 1, nv);
+  if (gradient) gradient->assign(nv, Vec<D>::zero());
+  if (hessian) hessian->assign(nv, SymMat<D>::zero());
+  RingScratch scratch;
+  scratch.stamp.assign(nv, kNoId);
+  scratch.ring.reserve(256);
+  QuadraticFit<D> fit;
+  double c[QuadraticFit<D>::kUnknowns];
+  for (std::size_t v = 0; v < nv; ++v) {
+    double h = 0.0;
+    const int solved =
+        fit_vertex<D>(mesh, u, adj, simplices, static_cast<Id>(v), scratch, fit, c, h);
+    if (solved == 0) continue;
+    if (gradient)
+      for (int i = 0; i < D; ++i) (*gradient)[v][i] = c[i] / h;
+    if (hessian && solved > D)
+      for (int k = 0; k < SymMat<D>::kSize; ++k) (*hessian)[v].c[k] = c[D + k] / (h * h);
+  }
+}
+
+template void lsq_recover<2>(const Mesh&, std::span<const double>, std::vector<Vec2>*,
+                             std::vector<SymMat2>*);
+template void lsq_recover<3>(const Mesh&, std::span<const double>, std::vector<Vec3>*,
+                             std::vector<SymMat3>*);
+
+}  // namespace riemesh::detail
