@@ -178,6 +178,8 @@ void register_metric(CLI::App& app) {
   len->add_option("--metric", args->metric, "The metric (packed coefficients)")->required();
   len->add_option("vector", args->operands, "X,Y or X,Y,Z")->required();
   len->callback([args] { length_cmd(*args); });
+
+  register_metric_hessian(*metric);
 }
 
 }  // namespace riemesh::cli

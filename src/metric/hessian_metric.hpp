@@ -32,8 +32,13 @@ struct MetricReport {
 };
 
 /// The metric at every vertex from the vertex Hessians of a field: |H| (absolute eigenvalues) made
-/// SPD, scaled as the options say, clipped to [hmin, hmax] and aniso_max. The Lp normalisation
-/// integrates det|H|^{p/(2p+D)} over the mesh (P1 quadrature per element).
+/// SPD (absolute eigenvalues floored at 1e-12 of the largest over the mesh; a Hessian zero
+/// everywhere gives a uniform Lp metric, and an L∞ metric of size hmax), scaled as the options
+/// say, clipped to sizes in [hmin, hmax] and then to anisotropy <= aniso_max (smallest sizes
+/// shrunk). The Lp normalisation starts from the BOOK formula with ∫ det|H|^{p/(2p+D)} by P1
+/// quadrature per element, then is refined so that field_complexity of the clipped result is N
+/// (to 1e-12 relative when the bounds allow it). Throws InputError for bad options, a size
+/// mismatch, non-finite Hessians or another kind of mesh.
 template <int D>
 std::vector<SymMat<D>> hessian_metric(const Mesh& mesh, std::span<const SymMat<D>> hessians,
                                       const HessianMetricOptions& options,
