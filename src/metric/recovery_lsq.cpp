@@ -5,7 +5,9 @@
 // least twice as many points as unknowns and the fit is well conditioned; otherwise ring 2 (and at
 // most ring 3, for tiny meshes) is added. In practice interior vertices of 2D meshes (valence ≈ 6)
 // and of tetrahedral meshes (valence ≈ 14) use two rings, which also makes the fit robust on the
-// boundary, where the ball is one-sided.
+// boundary, where the ball is one-sided. (Measured: accepting ring 1 at 1.5x the unknowns makes 3D
+// interior fits use ring 1 alone, twice as fast, but the max error on perturbed meshes then stops
+// converging: observed order 0.2 instead of 1.2.)
 //
 // Weights 1/|x_j − x_i|²: the Taylor remainder grows as |x−x_i|³, so farther ring-2 points count
 // less. Coordinates are scaled by the mean ring-1 edge length h first, so the normal equations are
