@@ -27,6 +27,8 @@ void register_convert(CLI::App& app);
 void register_render(CLI::App& app);
 /// `riemesh adapt`: remeshing to a metric field.
 void register_adapt(CLI::App& app);
+/// `riemesh loop`: the adaptation loop on analytic functions, errors and slopes (cmd_loop.cpp).
+void register_loop(CLI::App& app);
 /// `riemesh transfer OLD.mesh OLD.sol NEW.mesh -o NEW.sol`: P1 transfer of vertex fields.
 void register_transfer(CLI::App& app);
 

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   riemesh::cli::register_convert(app);
   riemesh::cli::register_render(app);
   riemesh::cli::register_adapt(app);
+  riemesh::cli::register_loop(app);
   riemesh::cli::register_transfer(app);
   std::vector<std::string> args(argv + 1, argv + argc);
   riemesh::cli::translate_mmg_spellings(args);
