@@ -1,15 +1,19 @@
 // `riemesh adapt`: remesh to a metric field (2D for now), with MMG-compatible spellings.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <string>
 
 #include "apps/commands.hpp"
+#include "apps/field_args.hpp"
 #include "core/error.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
 #include "metric/element.hpp"
+#include "metric/hessian_metric.hpp"
+#include "metric/recovery.hpp"
 #include "metric/metric.hpp"
 #include "remesh/adapt2d.hpp"
 #include "remesh/transfer.hpp"
@@ -19,7 +23,8 @@ namespace {
 
 struct AdaptArgs {
   std::string input, output, metric, out_metric, fields, out_fields, interp = "log";
-  double hsiz = 0.0;
+  std::string field, field_name, norm = "2", recovery = "lsq";
+  double hsiz = 0.0, complexity = 0.0, aniso_max = std::numeric_limits<double>::infinity();
   bool optim = false, noinsert = false, noswap = false, nomove = false, nr = false;
   bool quiet = false;
   int verbosity = 0;
@@ -75,6 +80,21 @@ std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
     throw InputError(a.metric + ": no scalar or symmetric tensor field in SolAtVertices");
   }
   if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
+  if (!a.field.empty()) {
+    // Metric from the solution: recovered Hessian, Lp-optimal metric of complexity N.
+    const std::vector<Field> fields = read_sol(a.field, mesh);
+    const Field& u = select_field(fields, a.field_name, a.field);
+    const std::vector<SymMat2> hessians =
+        recover_hessian<2>(mesh, u.values, parse_recovery_method(a.recovery));
+    HessianMetricOptions h;
+    h.norm = parse_norm(a.norm);
+    h.complexity = a.complexity;
+    h.hmin = a.opt.hmin;
+    h.hmax = a.opt.hmax;
+    h.aniso_max = a.aniso_max;
+    h.validate();
+    return hessian_metric<2>(mesh, hessians, h);
+  }
   return implied_metric_of_used(mesh);
 }
 
@@ -91,14 +111,26 @@ void print_pass(const PassStats& s, int verbosity) {
 
 void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
-  if (a.hsiz > 0.0 && !a.metric.empty())
-    throw InputError("--hsiz and --metric contradict: give one of them");
-  if (a.optim && (!a.metric.empty() || a.hsiz > 0.0))
-    throw InputError("--optim keeps the current sizes: it cannot be combined with --metric or --hsiz");
+  const int sources = (a.hsiz > 0.0) + !a.metric.empty() + !a.field.empty() + a.optim;
+  if (sources > 1)
+    throw InputError("--metric, --hsiz, --field and --optim contradict: give one of them");
+  if (!a.field.empty() && !(a.complexity > 0.0))
+    throw InputError("--field needs the target complexity --complexity N (> 0)");
+  if (a.field.empty() && a.complexity > 0.0)
+    throw InputError("--complexity applies to --field: give the solution with --field F.sol");
+  if (!a.field.empty() && a.fields.empty()) {
+    // The solution itself is transferred to the new mesh, next to it by default.
+    a.fields = a.field;
+    if (a.out_fields.empty())
+      a.out_fields = std::filesystem::path(a.output).replace_extension(".sol").string();
+    if (a.out_fields == a.out_metric)
+      throw InputError("--out-metric and the transferred solution would both be written to " +
+                       a.out_fields + ": give --out-fields");
+  }
   if (!a.fields.empty() && a.out_fields.empty())
     throw InputError("--fields needs --out-fields OUT.sol for the transferred fields");
-  if (a.metric.empty() && a.hsiz <= 0.0 && !a.optim)
-    throw InputError("no size field: give --metric M.sol, --hsiz H or --optim");
+  if (sources == 0)
+    throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");
   a.opt.insert = !a.noinsert;
   a.opt.swap = !a.noswap;
   a.opt.move = !a.nomove;
@@ -143,6 +175,16 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--metric,--met,--sol", a->metric,
                   "Metric field (.sol/.solb: symmetric tensors m11 m12 m22, or sizes)");
   cmd->add_option("--out-metric", a->out_metric, "Write the metric at the output vertices (.sol)");
+  cmd->add_option("--field", a->field,
+                  "Solution (.sol): adapt to its Lp-optimal Hessian metric of complexity N and "
+                  "transfer it (to --out-fields, default OUT.sol)");
+  cmd->add_option("--field-name", a->field_name, "Scalar field of --field by name or 0-based index");
+  cmd->add_option("--complexity", a->complexity, "Target complexity N with --field");
+  cmd->add_option("--norm", a->norm, "Lp norm of the metric with --field (1, 2, ..., inf)")
+      ->capture_default_str();
+  cmd->add_option("--recovery", a->recovery, "Hessian recovery with --field: lsq, l2, green")
+      ->capture_default_str();
+  cmd->add_option("--aniso-max", a->aniso_max, "Largest anisotropy ratio with --field");
   cmd->add_option("--fields", a->fields, "Vertex fields (.sol) to transfer to the output (P1)");
   cmd->add_option("--out-fields", a->out_fields, "Where to write the transferred fields (.sol)");
   cmd->add_option("--hsiz", a->hsiz, "Uniform size instead of a metric");

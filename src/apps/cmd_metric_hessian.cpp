@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/field_args.hpp"
 #include "apps/mesh_args.hpp"
 #include "apps/parse.hpp"
 #include "core/error.hpp"
@@ -42,31 +43,6 @@ int metric_dim(const Mesh& mesh, const std::string& path) {
 }
 
 /// "inf" (or "infinity") for the L∞ norm, else a number.
-double parse_norm(const std::string& text) {
-  if (text == "inf" || text == "infinity" || text == "Inf") return std::numeric_limits<double>::infinity();
-  const std::vector<double> v = parse_numbers(text, "--norm '" + text + "'");
-  if (v.size() != 1) throw InputError("--norm '" + text + "': expected one number or inf");
-  return v[0];
-}
-
-/// The scalar field chosen by --field: a name (sol0, sol1, ... as read_sol names them) or a
-/// 0-based index; by default the first scalar field of the file.
-const Field& select_field(const std::vector<Field>& fields, const std::string& choice,
-                          const std::string& path) {
-  std::string names;
-  for (const Field& f : fields) names += (names.empty() ? "" : ", ") + f.name;
-  const Field* found = nullptr;
-  for (std::size_t i = 0; i < fields.size() && !found; ++i)
-    if (choice.empty() ? fields[i].kind == FieldKind::kScalar
-                       : fields[i].name == choice || std::to_string(i) == choice)
-      found = &fields[i];
-  if (!found && choice.empty()) throw InputError(path + ": holds no scalar field (fields: " + names + ")");
-  if (!found) throw InputError(path + ": no field '" + choice + "' (fields: " + names + ")");
-  if (found->kind != FieldKind::kScalar)
-    throw InputError(path + ": field '" + found->name + "' is not a scalar field");
-  return *found;
-}
-
 /// Gradation as riemesh adapt does it (physical-space growth, Alauzet 2010), when hgrad > 0.
 void require_hgrad(double hgrad) {
   if (hgrad != 0.0 && !(hgrad > 1.0)) throw InputError("--hgrad must be 0 (off) or a ratio > 1");

@@ -38,6 +38,15 @@ sys.exit(0 if len(vals) == n and max(abs(v - (x + 2 * y)) for v, (x, y) in zip(v
 PY
 expect_error fields-without-out adapt "$D/formats/lshape.mesh" --metric "$D/formats/lshape_metric.sol" --fields "$TMP/u.sol" -o "$TMP/x.mesh"
 
+# --field: metric from the solution (Hessian, L2-optimal, N = 1500), adapted, solution transferred.
+"$R" adapt "$D/formats/lshape.mesh" --field "$D/formats/lshape.sol" --complexity 1500 \
+  -o "$TMP/sol.mesh" -q && "$R" check "$TMP/sol.mesh" >/dev/null && [ -s "$TMP/sol.sol" ] &&
+  ok field-complexity || ko field-complexity
+expect_error field-no-complexity adapt "$D/formats/lshape.mesh" --field "$D/formats/lshape.sol" -o "$TMP/x.mesh"
+expect_error field-and-metric adapt "$D/formats/lshape.mesh" --field "$D/formats/lshape.sol" \
+  --complexity 100 --metric "$D/formats/lshape_metric.sol" -o "$TMP/x.mesh"
+expect_error complexity-alone adapt "$D/formats/lshape.mesh" --hsiz 0.1 --complexity 100 -o "$TMP/x.mesh"
+
 # MMG spellings, a uniform size on the NACA domain.
 "$R" adapt -in "$D/2d/naca0012.mesh" -hsiz 2 -out "$TMP/n.meshb" -v 0 2>/dev/null &&
   "$R" check "$TMP/n.meshb" >/dev/null && ok mmg-spellings || ko mmg-spellings
