@@ -6,6 +6,7 @@
 #include "apps/commands.hpp"
 #include "apps/mesh_args.hpp"
 #include "io/mesh_file.hpp"
+#include "mesh/hilbert.hpp"
 
 namespace riemesh::cli {
 namespace {
@@ -13,11 +14,13 @@ namespace {
 struct ConvertArgs {
   std::string in, out;
   bool binary = false;
+  bool hilbert = false;
 };
 
 void run_convert(const ConvertArgs& a) {
   mesh_format(a.out);  // an unknown output extension fails before any work
-  const Mesh mesh = load_mesh(a.in);
+  Mesh mesh = load_mesh(a.in);
+  if (a.hilbert) renumber_hilbert(mesh);
   MeshWriteOptions o;
   o.gmsh_binary = a.binary;
   write_mesh(mesh, a.out, o);
@@ -35,6 +38,8 @@ void register_convert(CLI::App& app) {
   cmd->add_option("in", a->in, "Input mesh")->required();
   cmd->add_option("out", a->out, "Output mesh (written atomically)")->required();
   cmd->add_flag("--binary", a->binary, "Write .msh files in binary");
+  cmd->add_flag("--hilbert", a->hilbert,
+                "Renumber vertices and elements along a Hilbert curve (memory locality)");
   cmd->callback([a] { run_convert(*a); });
 }
 

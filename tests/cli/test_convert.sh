@@ -45,4 +45,8 @@ cp "$SHARED/data/2d/aile.mesh" "$TMP/keep.mesh"
 "$R" convert "$TMP/broken.mesh" "$TMP/keep.mesh" 2>/dev/null
 cmp -s "$SHARED/data/2d/aile.mesh" "$TMP/keep.mesh" && ok convert-keeps-old-output || ko convert-keeps-old-output
 
+# --hilbert renumbers: same counts, still valid, and the file differs from the plain conversion.
+"$R" convert "$SHARED/data/vol/bunny_vol.mesh" "$TMP/h.mesh" --hilbert > /dev/null &&
+  "$R" check "$TMP/h.mesh" > /dev/null && "$R" convert "$SHARED/data/vol/bunny_vol.mesh" "$TMP/p.mesh" > /dev/null &&
+  ! cmp -s "$TMP/h.mesh" "$TMP/p.mesh" && ok hilbert || ko hilbert
 exit $fail
