@@ -100,9 +100,13 @@ void validate_metric_field(const Mesh& mesh, std::span<const double> metric) {
   }
 }
 
-std::vector<double> element_qualities(const Mesh& mesh, std::span<const double> metric) {
+namespace {
+
+/// f<D, N>(vertex ids) for every element of the mesh's kind (planar triangles, surface
+/// triangles or tetrahedra), in element order.
+template <class F>
+std::vector<double> per_element(const Mesh& mesh, F f) {
   std::vector<double> out(mesh.kind() == MeshKind::kEmpty ? 0 : num_elements(mesh));
-  auto f = [&]<int D, int N>(std::span<const Id> v) { return quality_of<D, N>(mesh, v, metric); };
   switch (mesh.kind()) {
     case MeshKind::kPlanar:
       for_elements<2, 3>(mesh, out, f);
@@ -119,6 +123,14 @@ std::vector<double> element_qualities(const Mesh& mesh, std::span<const double> 
   return out;
 }
 
+}  // namespace
+
+std::vector<double> element_qualities(const Mesh& mesh, std::span<const double> metric) {
+  return per_element(mesh, [&]<int D, int N>(std::span<const Id> v) {
+    return quality_of<D, N>(mesh, v, metric);
+  });
+}
+
 std::vector<double> element_sizes(const Mesh& mesh, std::span<const double> metric) {
   if (metric.empty()) {
     // Regular triangle: |K| = √3/4 h²; regular tetrahedron: |K| = h³ / (6√2).
@@ -129,22 +141,9 @@ std::vector<double> element_sizes(const Mesh& mesh, std::span<const double> metr
                  : std::sqrt(4.0 * std::abs(m) / std::sqrt(3.0));
     return out;
   }
-  std::vector<double> out(mesh.kind() == MeshKind::kEmpty ? 0 : num_elements(mesh));
-  auto f = [&]<int D, int N>(std::span<const Id> v) { return size_of<D, N>(v, metric); };
-  switch (mesh.kind()) {
-    case MeshKind::kPlanar:
-      for_elements<2, 3>(mesh, out, f);
-      break;
-    case MeshKind::kSurface:
-      for_elements<3, 3>(mesh, out, f);
-      break;
-    case MeshKind::kVolume:
-      for_elements<3, 4>(mesh, out, f);
-      break;
-    case MeshKind::kEmpty:
-      break;
-  }
-  return out;
+  return per_element(mesh, [&]<int D, int N>(std::span<const Id> v) {
+    return size_of<D, N>(v, metric);
+  });
 }
 
 std::vector<double> metric_edge_lengths(const Mesh& mesh, const Adjacency& adj,
