@@ -134,6 +134,8 @@ struct GmshAssembler {
   Id node(std::uint64_t tag, const GmshInput& input) const;
   /// Adds an element of a kept type (kPoint, kLine, kTriangle, kTetrahedron).
   void add(int type, const Id* v, int ref);
+  /// Closes a $Nodes section (both versions): the node tags, in file order, become vertex ids.
+  void end_nodes(const std::vector<std::uint64_t>& tags, GmshInput& input);
   Mesh finish(const GmshReadOptions& options, GmshReadInfo* info);
 };
 

@@ -52,6 +52,15 @@ void GmshAssembler::add(int type, const Id* v, int ref) {
   }
 }
 
+void GmshAssembler::end_nodes(const std::vector<std::uint64_t>& tags, GmshInput& input) {
+  input.end_data();
+  input.expect_end("Nodes");
+  nodes.build(tags, input);
+  mesh.vert_ref.assign(tags.size(), 0);
+  mesh.vert_tag.assign(tags.size(), kTagNone);
+  have_nodes = true;
+}
+
 Mesh GmshAssembler::finish(const GmshReadOptions& options, GmshReadInfo* info) {
   mesh.edge_tag.assign(mesh.num_edges(), kTagNone);
   mesh.tri_tag.assign(mesh.num_triangles(), kTagNone);
@@ -146,12 +155,7 @@ void read_nodes_41(GmshInput& in, GmshAssembler& out) {
   if (tags.size() != num_nodes)
     in.fail("the blocks hold " + std::to_string(tags.size()) + " nodes, not the " +
             std::to_string(num_nodes) + " announced");
-  in.end_data();
-  in.expect_end("Nodes");
-  out.nodes.build(tags, in);
-  out.mesh.vert_ref.assign(tags.size(), 0);
-  out.mesh.vert_tag.assign(tags.size(), kTagNone);
-  out.have_nodes = true;
+  out.end_nodes(tags, in);
 }
 
 void read_elements_41(GmshInput& in, GmshAssembler& out) {

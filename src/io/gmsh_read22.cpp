@@ -56,12 +56,7 @@ void read_nodes_22(GmshInput& in, GmshAssembler& out) {
     tags[i] = static_cast<std::uint64_t>(tag);
     for (int k = 0; k < 3; ++k) coords[3 * i + k] = in.real("a coordinate");
   }
-  in.end_data();
-  in.expect_end("Nodes");
-  out.nodes.build(tags, in);
-  out.mesh.vert_ref.assign(tags.size(), 0);
-  out.mesh.vert_tag.assign(tags.size(), kTagNone);
-  out.have_nodes = true;
+  out.end_nodes(tags, in);
 }
 
 void read_elements_22(GmshInput& in, GmshAssembler& out) {
