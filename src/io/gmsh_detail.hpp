@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/byte_order.hpp"
 #include "io/gmsh.hpp"
 #include "io/text_scanner.hpp"
 #include "mesh/mesh.hpp"
@@ -75,13 +76,8 @@ class GmshInput {
   void need(std::size_t bytes, const char* what);
   template <class T>
   T raw() {
-    T value;
-    std::memcpy(&value, bytes_.data() + pos_, sizeof(T));
+    const T value = io_detail::load_value<T>(bytes_.data() + pos_, swap_);
     pos_ += sizeof(T);
-    if (swap_) {
-      unsigned char* b = reinterpret_cast<unsigned char*>(&value);
-      for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
-    }
     return value;
   }
   std::string_view value_token(const char* what);

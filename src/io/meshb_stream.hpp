@@ -12,6 +12,8 @@
 #include <string>
 #include <string_view>
 
+#include "io/byte_order.hpp"
+
 namespace riemesh::medit_detail {
 
 class MeshbReader {
@@ -53,13 +55,8 @@ class MeshbReader {
   void need(std::size_t bytes);
   template <class T>
   T raw() {
-    T value;
-    std::memcpy(&value, bytes_.data() + pos_, sizeof(T));
+    const T value = io_detail::load_value<T>(bytes_.data() + pos_, swap_);
     pos_ += sizeof(T);
-    if (swap_) {
-      unsigned char* b = reinterpret_cast<unsigned char*>(&value);
-      for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
-    }
     return value;
   }
 
