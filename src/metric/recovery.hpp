@@ -5,10 +5,13 @@
 //                  piecewise-constant gradient onto P1 with a lumped mass matrix), applied twice.
 //   kGreen:        weak Hessian by Green's formula, ∫ H φ_i = −∫ ∇u ∇φ_i + boundary term, lumped,
 //                  with a boundary correction.
-//   kLeastSquares: quadratic Taylor fit of u over the vertex ball (second ring where the ball is
-//                  too small, e.g. on the boundary). The documented default: exact for quadratics.
+//   kLeastSquares: Taylor fit of u over two rings of vertices (a third where they are too few,
+//                  e.g. at boundary corners) in coordinates whitened by the ring's second moments;
+//                  cubic in 2D (quadratic where the cubic fit is ill-conditioned), quadratic in
+//                  3D. The documented default: exact for quadratics, and robust on stretched
+//                  anisotropic meshes (see recovery_lsq.cpp).
 // Accuracy (tests/metric/test_recovery.cpp): least squares is exact for quadratics at every vertex
-// of any mesh and converges at order 1 (max norm) on unstructured meshes. L2 and Green are exact
+// of any mesh and converges on unstructured meshes (max norm: order 2 in 2D, order > 1 in 3D). L2 and Green are exact
 // for quadratics only where the mesh is structured (L2: 2 layers away from the boundary; Green: at
 // every vertex of unit_square/unit_cube) and do not converge on unstructured meshes (errors of
 // 15-40% of |H| that do not decrease). All three are exact for the gradient of linear fields; the

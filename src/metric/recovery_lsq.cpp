@@ -1,23 +1,35 @@
-// Least-squares Taylor fit (BOOK.md §2): at each vertex i, the quadratic
-//   u(x) ≈ u_i + g·(x−x_i) + ½ (x−x_i)ᵀ H (x−x_i)
-// (D + D(D+1)/2 unknowns: 5 in 2D, 9 in 3D; u_i is kept, so a quadratic is reproduced exactly)
-// is fitted to the values at the vertices of the ball. Ring 1 is used alone only when it has at
-// least twice as many points as unknowns and the fit is well conditioned; otherwise ring 2 (and at
-// most ring 3, for tiny meshes) is added. In practice interior vertices of 2D meshes (valence ≈ 6)
-// and of tetrahedral meshes (valence ≈ 14) use two rings, which also makes the fit robust on the
-// boundary, where the ball is one-sided. (Measured: accepting ring 1 at 1.5x the unknowns makes 3D
-// interior fits use ring 1 alone, twice as fast, but the max error on perturbed meshes then stops
-// converging: observed order 0.2 instead of 1.2.)
+// Least-squares Taylor fit (BOOK.md §2): at each vertex i, the polynomial
+//   u(x) ≈ u_i + g·(x−x_i) + ½ (x−x_i)ᵀ H (x−x_i) [+ cubic terms in 2D]
+// (D + D(D+1)/2 unknowns: 5 in 2D, 9 in 3D, plus 4 cubic ones in 2D; u_i is kept, so a quadratic
+// is reproduced exactly) is fitted to the values at the vertices of the ball. Ring 1 is used alone
+// only when it has at least twice as many points as unknowns and the fit is well conditioned;
+// otherwise ring 2 (and at most ring 3, for tiny meshes) is added. In practice interior vertices
+// of 2D meshes (valence ≈ 6) and of tetrahedral meshes (valence ≈ 14) use two rings, which also
+// makes the fit robust on the boundary, where the ball is one-sided. (Measured: accepting ring 1
+// at 1.5x the unknowns makes 3D interior fits use ring 1 alone, twice as fast, but the max error
+// on perturbed meshes then stops converging: observed order 0.2 instead of 1.2.)
 //
-// Weights 1/|x_j − x_i|²: the Taylor remainder grows as |x−x_i|³, so farther ring-2 points count
-// less. Coordinates are scaled by the mean ring-1 edge length h first, so the normal equations are
-// O(1) whatever the mesh size; they are solved by Cholesky after symmetric diagonal equilibration,
-// a pivot below kPivotTol (relative) marking the fit as ill-conditioned. If no ring up to 3
-// determines a quadratic, the gradient comes from the linear fit and the Hessian is zero.
+// Why cubic terms in 2D: on meshes adapted to a front (anisotropy 1:100 and more), the Hessian
+// across the front is large and along it nearly zero; a quadratic fit folds the third derivative
+// across the front into the small along-front curvature, and the metric built from it asks for
+// sizes that swing by 10x between neighbours (the adaptation loop on the tanh front then stalled
+// at N = 64000 with edges of metric length 0.001; with the cubic terms it converges, see README).
+// Where the cubic fit is ill-conditioned (pivot below kCubicPivotTol) the quadratic block of the
+// same normal equations is solved instead. (In 3D the cubic fit needs 19 unknowns: not done yet.)
+//
+// Coordinates are whitened by the ring-1 second-moment tensor C (x' = C^{-1/2} (x − x_i)), so the
+// stencil is round in the fit's frame whatever the mesh's anisotropy and the normal equations
+// stay O(1) conditioned; weights 1/|x'_j − x'_i|² (the Taylor remainder grows with distance, so
+// farther ring-2 points count less). They are solved by Cholesky after symmetric diagonal
+// equilibration, a pivot below kPivotTol (relative) marking the fit as ill-conditioned. If no
+// ring up to 3 determines a quadratic, the gradient comes from the linear fit and the Hessian is
+// zero. Gradient and Hessian map back as g = A g', H = A H' A with A = C^{-1/2}.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
 #include "core/error.hpp"
+#include "core/spd.hpp"
 #include "metric/recovery_detail.hpp"
 
 namespace riemesh::detail {
@@ -26,11 +38,18 @@ namespace {
 
 constexpr int kMaxRings = 3;
 constexpr double kPivotTol = 1e-10;
+/// A cubic fit whose equilibrated pivots fall below this is replaced by the quadratic one: the
+/// normal equations square the condition number, so a cubic fit on a thin stencil (a boundary
+/// corner) would lose more digits than the third-order terms gain.
+constexpr double kCubicPivotTol = 1e-6;
 
-/// Normal equations of the weighted quadratic fit at one vertex (fixed size: no allocation).
-template <int D>
+/// Normal equations of the weighted polynomial fit at one vertex (fixed size: no allocation):
+/// Order 2 fits the quadratic Taylor polynomial, Order 3 adds the cubic terms (their
+/// coefficients are discarded; they keep the third derivatives out of the Hessian).
+template <int D, int Order = 2>
 struct QuadraticFit {
-  static constexpr int kUnknowns = D + D * (D + 1) / 2;
+  static constexpr int kCubic = Order == 3 ? D * (D + 1) * (D + 2) / 6 : 0;
+  static constexpr int kUnknowns = D + D * (D + 1) / 2 + kCubic;
   double a[kUnknowns][kUnknowns];  // upper triangle used
   double b[kUnknowns];
   int count;
@@ -48,6 +67,12 @@ struct QuadraticFit {
     for (int i = 0; i < D; ++i) p[i] = dx[i];
     for (int j = 0; j < D; ++j)
       for (int i = 0; i <= j; ++i) p[D + sym_index(i, j)] = (i == j ? 0.5 : 1.0) * dx[i] * dx[j];
+    if constexpr (Order == 3) {
+      int k = D + D * (D + 1) / 2;
+      for (int i = 0; i < D; ++i)
+        for (int j = i; j < D; ++j)
+          for (int l = j; l < D; ++l) p[k++] = dx[i] * dx[j] * dx[l];
+    }
     const double dist2 = dot(dx, dx);
     if (!(dist2 > 0.0)) throw InputError("coincident vertices in least-squares recovery");
     const double w = 1.0 / dist2;
@@ -60,7 +85,7 @@ struct QuadraticFit {
   }
   /// Solves the leading n x n system (n = kUnknowns: quadratic, n = D: linear fit) into c.
   /// False when a pivot of the equilibrated matrix falls below kPivotTol.
-  bool solve(int n, double* c) const {
+  bool solve(int n, double* c, double pivot_tol = kPivotTol) const {
     double l[kUnknowns][kUnknowns], inv_diag[kUnknowns], scale[kUnknowns], y[kUnknowns];
     for (int r = 0; r < n; ++r) {
       if (!(a[r][r] > 0.0)) return false;
@@ -69,7 +94,7 @@ struct QuadraticFit {
     for (int j = 0; j < n; ++j) {  // Cholesky L Lᵀ of S A S, column by column
       double d = a[j][j] * scale[j] * scale[j];
       for (int k = 0; k < j; ++k) d -= l[j][k] * l[j][k];
-      if (!(d > kPivotTol)) return false;
+      if (!(d > pivot_tol)) return false;
       l[j][j] = std::sqrt(d);
       inv_diag[j] = 1.0 / l[j][j];
       for (int i = j + 1; i < n; ++i) {
@@ -145,32 +170,53 @@ struct RingScratch {
   std::vector<Id> ring;
 };
 
-/// The fit at vertex v: coefficients in c (for coordinates scaled by h); returns the number of
-/// coefficients solved for (kUnknowns, D for the linear fallback, 0 for an isolated vertex).
+/// The whitening map of the ring-1 offsets: A = C^{-1/2}, C = their second-moment tensor, so the
+/// fit runs in coordinates x' = A (x − x_v) where the stencil is as round as the mesh is in its
+/// own metric. On stretched meshes (anisotropy 1:1000 along a front at 45°) fitting in plain
+/// coordinates makes the x and y columns nearly equal and the normal equations lose 6 to 12 digits;
+/// whitened, they stay O(1) conditioned. Eigenvalues of C are floored at 1e-12 of the largest
+/// (a ring along one line).
 template <int D>
+SymMat<D> whitening(const Mesh& mesh, std::span<const Id> ring1, const Vec<D>& xv) {
+  SymMat<D> c = SymMat<D>::zero();
+  for (const Id w : ring1) c = c + outer(vertex_position<D>(mesh, w) - xv);
+  c = (1.0 / static_cast<double>(ring1.size())) * c;
+  double trace = 0.0;
+  for (int i = 0; i < D; ++i) trace += c(i, i);
+  return map_eigenvalues(c, [floor = 1e-12 * trace](double l) {
+    return 1.0 / std::sqrt(std::max(l, floor));
+  });
+}
+
+/// The fit at vertex v: coefficients in c for the whitened coordinates x' = A (x − x_v); returns
+/// the number of coefficients solved for (kUnknowns, D for the linear fallback, 0 for an isolated
+/// vertex).
+template <int D, int Order>
 int fit_vertex(const Mesh& mesh, std::span<const double> u, const VertexGraph& graph, Id v,
-               RingScratch& scratch, QuadraticFit<D>& fit, double* c, double& h) {
-  constexpr int kN = QuadraticFit<D>::kUnknowns;
+               RingScratch& scratch, QuadraticFit<D, Order>& fit, double* c, SymMat<D>& a) {
+  constexpr int kN = QuadraticFit<D, Order>::kUnknowns;
+  constexpr int kQ = QuadraticFit<D, 2>::kUnknowns;
   const std::span<const Id> ring1 = graph.of(v);
   if (ring1.empty()) return 0;
   const Vec<D> xv = vertex_position<D>(mesh, v);
   const double uv = u[static_cast<std::size_t>(v)];
-  h = 0.0;
-  for (const Id w : ring1) h += norm(vertex_position<D>(mesh, w) - xv);
-  h /= static_cast<double>(ring1.size());
-  const double inv_h = 1.0 / h;
+  a = whitening<D>(mesh, ring1, xv);
   fit.clear();
   scratch.ring.clear();
   scratch.stamp[static_cast<std::size_t>(v)] = v;
   auto take = [&](Id w) {
     scratch.stamp[static_cast<std::size_t>(w)] = v;
     scratch.ring.push_back(w);
-    fit.add(inv_h * (vertex_position<D>(mesh, w) - xv), u[static_cast<std::size_t>(w)] - uv);
+    fit.add(a * (vertex_position<D>(mesh, w) - xv), u[static_cast<std::size_t>(w)] - uv);
   };
   for (const Id w : ring1) take(w);
   std::size_t begin = 0;
   for (int rings = 1;; ++rings) {
-    if (fit.count >= (rings == 1 ? 2 * kN : kN) && fit.solve(kN, c)) return kN;
+    if (Order == 3 && 2 * fit.count >= 3 * kN && fit.solve(kN, c, kCubicPivotTol)) return kN;
+    // The quadratic fit is the leading block of the same normal equations; with the cubic
+    // terms available it is taken from ring 2 on (ring 1 alone cannot hold a cubic).
+    const bool quadratic_ok = (Order == 2 || rings >= 2) && fit.count >= (rings == 1 ? 2 * kQ : kQ);
+    if (quadratic_ok && fit.solve(kQ, c)) return kQ;
     const std::size_t end = scratch.ring.size();
     if (rings == kMaxRings || begin == end) break;
     for (std::size_t k = begin; k < end; ++k)
@@ -195,16 +241,24 @@ void lsq_recover(const Mesh& mesh, std::span<const double> u, std::vector<Vec<D>
   const VertexGraph graph = vertex_graph(simplices, D + 1, nv, scratch.stamp);
   scratch.stamp.assign(nv, kNoId);  // fit_vertex's stamps mean "collected for this vertex"
   scratch.ring.reserve(256);
-  QuadraticFit<D> fit;
-  double c[QuadraticFit<D>::kUnknowns];
+  constexpr int kOrder = D == 2 ? 3 : 2;
+  QuadraticFit<D, kOrder> fit;
+  double c[QuadraticFit<D, kOrder>::kUnknowns];
   for (std::size_t v = 0; v < nv; ++v) {
-    double h = 0.0;
-    const int solved = fit_vertex<D>(mesh, u, graph, static_cast<Id>(v), scratch, fit, c, h);
+    SymMat<D> a;
+    const int solved = fit_vertex<D, kOrder>(mesh, u, graph, static_cast<Id>(v), scratch, fit, c, a);
     if (solved == 0) continue;
-    if (gradient)
-      for (int i = 0; i < D; ++i) (*gradient)[v][i] = c[i] / h;
-    if (hessian && solved > D)
-      for (int k = 0; k < SymMat<D>::kSize; ++k) (*hessian)[v].c[k] = c[D + k] / (h * h);
+    // u ≈ g'·x' + ½ x'ᵀ H' x' with x' = A dx: g = A g', H = A H' A.
+    if (gradient) {
+      Vec<D> g;
+      for (int i = 0; i < D; ++i) g[i] = c[i];
+      (*gradient)[v] = a * g;
+    }
+    if (hessian && solved > D) {
+      SymMat<D> hw;
+      for (int k = 0; k < SymMat<D>::kSize; ++k) hw.c[k] = c[D + k];
+      (*hessian)[v] = congruence(a.to_mat(), hw);
+    }
   }
 }
 

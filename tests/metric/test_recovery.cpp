@@ -336,9 +336,10 @@ TEST(Recovery, GreenQuadratics3D) { check_green_quadratics<3>(6, 0.3); }
 //            structured 2D   3D          perturbed 0.2h 2D   3D
 //   l2       2.00 0.51   1.96 0.63      −0.70 0.41  −0.04 0.59   (O(1) at the boundary)
 //   green    2.00 1.48   1.97 1.37       0.10 −0.06 −0.51 0.60   (inconsistent off-structure)
-//   lsq      2.00 1.49   1.94 1.41       0.93 1.32   1.23 1.37
-// Structured interiors superconverge (order 2); only the least-squares fit keeps order 1 on
-// unstructured meshes; the RMS order ≈ 1.5 reflects O(h) errors on the boundary layer of vertices.
+//   lsq      2.00 1.49   1.93 1.39       1.99 1.46   1.36 1.35
+// Structured interiors superconverge (order 2); only the least-squares fit converges on
+// unstructured meshes (order 2 in 2D, where the fit includes the cubic terms; ≥ 1 in 3D); the
+// RMS order ≈ 1.5 reflects O(h) errors on the boundary layer of vertices.
 TEST(Recovery, ObservedOrdersOnASmoothFunction) {
   for (const RecoveryMethod m : kMethods) {
     const Orders s2 = observed_orders<2>(m, false, 8, 4), s3 = observed_orders<3>(m, false, 4, 3);
@@ -346,7 +347,7 @@ TEST(Recovery, ObservedOrdersOnASmoothFunction) {
     EXPECT_GT(s3.interior_max, 1.7) << method_name(m);
     const Orders p2 = observed_orders<2>(m, true, 8, 4), p3 = observed_orders<3>(m, true, 4, 3);
     if (m == RecoveryMethod::kLeastSquares) {
-      EXPECT_GT(p2.interior_max, 0.7);
+      EXPECT_GT(p2.interior_max, 1.7);  // the cubic terms of the 2D fit
       EXPECT_GT(p3.interior_max, 0.8);
       EXPECT_GT(p2.rms, 1.1);
       EXPECT_GT(p3.rms, 1.1);
