@@ -27,7 +27,7 @@ struct HessianMetricOptions {
 
 struct MetricReport {
   double complexity = 0.0;          ///< C(M) = ∫ sqrt(det M) over the mesh
-  double predicted_vertices = 0.0;  ///< ≈ C(M) in 2D (a unit mesh's vertex count)
+  double predicted_vertices = 0.0;  ///< (2/√3) C(M) in 2D, √2 C(M) in 3D (a unit mesh's vertices)
   double predicted_elements = 0.0;  ///< (4/√3) C(M) triangles in 2D; 6√2 C(M) tetrahedra in 3D
 };
 
