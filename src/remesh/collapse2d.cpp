@@ -18,16 +18,17 @@ void ball_vertices(const TriMesh& m, const Ball& b, Id v, std::vector<Id>& out) 
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
-/// Topology: the feature rules and the link condition (the common neighbours of `from` and `to`
-/// are exactly the apexes of the triangles on the edge), so the result stays a manifold mesh.
-bool topology_ok(const TriMesh& m, Id slot, Id from, Id to, const Ball& bfrom, const Ball& bto) {
+/// The feature rules (no ball needed): frozen vertices stay, a curve vertex slides along its own
+/// curve only, and a vertex off any curve keeps feature edges and the open boundary.
+bool features_ok(const TriMesh& m, Id slot, Id from) {
   if (m.frozen(from)) return false;
-  if (m.on_curve(from)) {
-    // A curve vertex slides along its own curve only.
-    if (m.ecurve[slot] != m.vcurve[from]) return false;
-  } else if (m.is_feature(slot)) {
-    return false;
-  }
+  if (m.on_curve(from)) return m.ecurve[slot] == m.vcurve[from];
+  return !m.is_feature(slot);
+}
+
+/// The link condition: the common neighbours of `from` and `to` are exactly the apexes of the
+/// triangles on the edge, so the result stays a manifold mesh.
+bool link_ok(const TriMesh& m, Id slot, Id from, Id to, const Ball& bfrom, const Ball& bto) {
   if (!m.on_curve(from) && !bfrom.closed) return false;  // boundary vertex off any curve: keep
   thread_local std::vector<Id> nf, nt, common;  // scratch, reused; never shared between threads
   ball_vertices(m, bfrom, from, nf);
@@ -38,7 +39,24 @@ bool topology_ok(const TriMesh& m, Id slot, Id from, Id to, const Ball& bfrom, c
   return common.size() == on_edge;
 }
 
-/// Geometry and quality of the triangles that keep `from` (now `to`), and lengths of new edges.
+/// The new edges (to, x) for the vertices x of from's ball: none longer than lim.max_length.
+/// The cheapest check, and on a converged mesh the one that refuses most candidates, so it runs
+/// before the other ball, the link condition and the qualities.
+bool lengths_ok(const TriMesh& m, const Ball& bfrom, Id from, Id to, const CollapseLimits& lim) {
+  for (const Id t : bfrom.tris) {
+    const int i = vertex_index(m, t, from);
+    const Id a = m.tv[3 * t + (i + 1) % 3];  // each neighbour is the "a" of one triangle
+    if (a != to && edge_length(m, to, a) > lim.max_length) return false;
+  }
+  if (!bfrom.closed) {  // the last neighbour of an open ball is only ever a "b"
+    const Id t = bfrom.tris.back();
+    const Id b = m.tv[3 * t + (vertex_index(m, t, from) + 2) % 3];
+    if (b != to && edge_length(m, to, b) > lim.max_length) return false;
+  }
+  return true;
+}
+
+/// Geometry and quality of the triangles that keep `from` (now `to`).
 /// A triangle may fall below lim.min_quality only when the ball was already worse (so collapses
 /// can clean up a bad region without being blocked by it).
 Outcome shape_check(const TriMesh& m, const Ball& bfrom, Id from, Id to,
@@ -54,8 +72,6 @@ Outcome shape_check(const TriMesh& m, const Ball& bfrom, Id from, Id to,
     const double old_area = signed_area(m.xy[from], m.xy[a], m.xy[b]);
     if (!(signed_area(pt, m.xy[a], m.xy[b]) > 1e-9 * old_area)) return Outcome::kRejectedGeometry;
     if (tri_quality(m, to, a, b) < floor) return Outcome::kRejectedQuality;
-    if (edge_length(m, to, a) > lim.max_length || edge_length(m, to, b) > lim.max_length)
-      return Outcome::kRejectedQuality;
   }
   return Outcome::kApplied;
 }
@@ -77,9 +93,11 @@ struct Side {
 
 Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& lim) {
   thread_local Ball bfrom, bto;  // scratch reused across calls; never shared between threads
+  if (!features_ok(m, slot, from)) return Outcome::kRejectedTopology;
   collect_ball(m, from, bfrom);
+  if (!lengths_ok(m, bfrom, from, to, lim)) return Outcome::kRejectedQuality;
   collect_ball(m, to, bto);
-  if (!topology_ok(m, slot, from, to, bfrom, bto)) return Outcome::kRejectedTopology;
+  if (!link_ok(m, slot, from, to, bfrom, bto)) return Outcome::kRejectedTopology;
 
   Side sides[2];
   int nsides = 0;
