@@ -139,6 +139,10 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
 long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
   TriMesh& m = ctx.mesh();
   const CollapseLimits limits{0.3, 1.45};
+  // Edges far below unit length (clusters of near-duplicate vertices left where a first run
+  // from a coarse mesh overshot) may be removed even if a triangle gets up to 2x worse.
+  CollapseLimits tiny = limits;
+  tiny.relative_floor = 0.5;
   long done = 0;
   for (const Candidate& c : candidates(m, [](double l) { return l < kCollapseBelow; }, false)) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
@@ -147,7 +151,7 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
     bool applied = false;
     for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}}) {
       if (m.frozen(from) || (m.on_curve(from) && !ctx.collapse_keeps_hausd(from, to))) continue;
-      if (collapse_edge(m, s, from, to, limits) == Outcome::kApplied) {
+      if (collapse_edge(m, s, from, to, c.length < 0.25 ? tiny : limits) == Outcome::kApplied) {
         applied = true;
         break;
       }

@@ -64,7 +64,7 @@ Outcome shape_check(const TriMesh& m, const Ball& bfrom, Id from, Id to,
   const Vec2& pt = m.xy[to];
   double old_min = 1.0;
   for (const Id t : bfrom.tris) old_min = std::min(old_min, tri_quality(m, t));
-  const double floor = std::min(lim.min_quality, old_min);
+  const double floor = std::min(lim.min_quality, lim.relative_floor * old_min);
   for (const Id t : bfrom.tris) {
     const int i = vertex_index(m, t, from);
     const Id a = m.tv[3 * t + (i + 1) % 3], b = m.tv[3 * t + (i + 2) % 3];

@@ -54,6 +54,10 @@ Outcome split_edge(TriMesh& m, Id slot, const NewVertex& nv, double min_quality,
 struct CollapseLimits {
   double min_quality = 0.3;   // no changed triangle below this
   double max_length = 1.5;    // no new edge longer than this in the metric
+  /// Below min_quality, a changed triangle must stay at least this fraction of the ball's worst
+  /// quality (1: never worse than before; lower values let collapses clear clusters of
+  /// near-duplicate vertices whose every collapse makes some sliver slightly worse).
+  double relative_floor = 1.0;
 };
 
 /// Removes vertex `from` by merging it into `to` along the edge at `slot` (which joins them).

@@ -16,13 +16,17 @@ std::vector<double> flatten(std::span<const SymMat2> metrics) {
   return out;
 }
 
-/// Fraction t of the way from a to b where half the metric length lies on each side, for sizes
-/// varying geometrically along the edge: length density l_a q^s with q = l_b/l_a, so
-/// q^t = (q + 1)/2.
-double metric_midpoint(double la, double lb) {
+/// Where to split an edge of metric length L running from density la to lb: at the fraction of
+/// its length k/n, n = max(2, round(L)), k = ⌊n/2⌋, so that repeated splits cut it into n pieces
+/// of length L/n ≈ 1 rather than into 2^j pieces (bisection refines a uniform coarse mesh to the
+/// power of two below the target size: 1.6x the triangles of a unit mesh).
+double split_fraction(double la, double lb) {
   const double q = lb / la;
-  if (std::abs(q - 1.0) < 1e-9) return 0.5;
-  return std::log(0.5 * (q + 1.0)) / std::log(q);
+  const double total = std::abs(q - 1.0) < 1e-9 ? la : la * (q - 1.0) / std::log(q);
+  const long n = std::max(2L, std::lround(total));
+  const double f = static_cast<double>(n / 2) / static_cast<double>(n);
+  if (std::abs(q - 1.0) < 1e-9) return f;
+  return std::log(1.0 + f * (q - 1.0)) / std::log(q);
 }
 
 }  // namespace
@@ -111,7 +115,7 @@ void Remesh2dContext::inherit_hint(Id v, Id /*near*/) {
 NewVertex Remesh2dContext::split_point(Id slot) const {
   const Id a = mesh_.edge_from(slot), b = mesh_.edge_to(slot);
   const Vec2 ab = mesh_.xy[b] - mesh_.xy[a];
-  const double t = metric_midpoint(length(mesh_.metric[a], ab), length(mesh_.metric[b], ab));
+  const double t = split_fraction(length(mesh_.metric[a], ab), length(mesh_.metric[b], ab));
   const Id near = t < 0.5 ? a : b;
   NewVertex nv;
   const std::int32_t c = mesh_.ecurve[slot];
