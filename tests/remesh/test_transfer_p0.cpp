@@ -16,12 +16,13 @@ using namespace riemesh;
 
 namespace {
 
-/// unit_square(n, m) with interior vertices moved at random by up to 0.3 cell (triangles stay
-/// valid: each vertex moves less than half its distance to the opposite edges).
+/// unit_square(n, m) with interior vertices moved at random by up to 0.2 cell (triangles stay
+/// valid: a vertex and the line through the opposite edge move towards each other by at most
+/// 2 · 0.2√2 ≈ 0.57 cell, less than the 0.71 cell between them).
 Mesh perturbed_square(int n, int m, unsigned seed) {
   Mesh mesh = unit_square(n, m);
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-0.3, 0.3);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
     double& x = mesh.coords[2 * v];
     double& y = mesh.coords[2 * v + 1];
