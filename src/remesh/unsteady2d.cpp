@@ -16,12 +16,13 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// A straight front of width ~1/40 normal to (cos 30°, sin 30°), crossing the square at constant
-// speed: its position s(t) = −1 + 2t runs over most of the square's extent ±1.37 in that
-// direction, so one mesh for all time must refine a band sweeping most of the square.
+// A straight front of width ~1/20 normal to (cos 30°, sin 30°), crossing the square at constant
+// speed: its position s(t) = −0.6 + 1.2t sweeps most of the square, so one mesh for all time
+// must refine the whole band it sweeps. (Samples must follow the front closely enough that
+// consecutive sample fronts' refined bands touch: a few per front width of travel.)
 double tanh_front(double x, double y, double t) {
   const double c = std::cos(kPi / 6.0), s = std::sin(kPi / 6.0);
-  return std::tanh(40.0 * (c * x + s * y - (-1.0 + 2.0 * t)));
+  return std::tanh(20.0 * (c * x + s * y - (-0.6 + 1.2 * t)));
 }
 
 // A disc of radius 0.3 with a tanh rim whose centre goes once round the circle of radius 0.5.
@@ -31,7 +32,7 @@ double moving_circle(double x, double y, double t) {
 }
 
 constexpr std::array<MovingFunction, 2> kMoving = {{
-    {"tanh-front", "tanh(40 (x cos30 + y sin30 - (2t - 1))), t in [0, 1]", tanh_front},
+    {"tanh-front", "tanh(20 (x cos30 + y sin30 - (1.2 t - 0.6))), t in [0, 1]", tanh_front},
     {"moving-circle",
      "tanh(30 (|(x, y) - 0.5 (cos 2 pi t, sin 2 pi t)| - 0.3)), t in [0, 1]", moving_circle},
 }};
@@ -189,7 +190,17 @@ UnsteadyResult unsteady_loop(const MovingFunction& f, const UnsteadyOptions& o,
   run_all(o.intervals, r.multi);
   r.multi_slope = slope(r.multi);
   if (o.single && o.intervals > 1) {
-    run_all(1, r.single);
+    // The same sample times (hence the same time resolution) for the one mesh of [0, 1].
+    UnsteadyOptions one = o;
+    one.samples = o.intervals * std::max(o.samples - 1, 1) + (o.samples > 1 ? 1 : 0);
+    auto single_all = [&](std::vector<UnsteadyStep>& steps) {
+      std::vector<Mesh> meshes;
+      for (double n : o.complexities) {
+        steps.push_back(unsteady_run(f, n, 1, one, meshes));
+        if (on_step) on_step(steps.back());
+      }
+    };
+    single_all(r.single);
     r.single_slope = slope(r.single);
   }
   return r;

@@ -44,7 +44,7 @@ enum class UnsteadyCombine {
 struct UnsteadyOptions {
   std::vector<double> complexities = {1000, 2000, 4000, 8000};  ///< mean complexities N̄
   int intervals = 4;   ///< sub-intervals of [0, 1]
-  int samples = 3;     ///< Hessian samples per sub-interval (equally spaced, ends included)
+  int samples = 5;     ///< Hessian samples per sub-interval (equally spaced, ends included)
   int iterations = 3;  ///< fixed-point iterations over the whole time span per N̄
   UnsteadyCombine combine = UnsteadyCombine::kLp;
   TimeCombination time = TimeCombination::kMax;  ///< for kLp: how samples make H_i
@@ -85,7 +85,8 @@ UnsteadyStep unsteady_run(const MovingFunction& f, double complexity, int interv
                           const UnsteadyOptions& options, std::vector<Mesh>& meshes);
 
 /// unsteady_run at every N̄ (each from the previous meshes), for options.intervals and, with
-/// options.single, for one interval. Throws InputError for bad options.
+/// options.single, for one interval sampled at the same times (n (K − 1) + 1 samples). Throws
+/// InputError for bad options.
 UnsteadyResult unsteady_loop(const MovingFunction& f, const UnsteadyOptions& options,
                              const UnsteadyCallback& on_step = {});
 
