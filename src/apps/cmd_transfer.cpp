@@ -49,7 +49,7 @@ void print_report(const P0TransferReport& r, bool json) {
     std::printf("  component %zu: integral old %.15g, new %.15g, relative change %.2e\n", k,
                 r.old_integral[k], r.new_integral[k], scale > 0 ? d / scale : d);
   }
-  std::printf("  area old %.15g, new %.15g; uncovered: new %.3g, old %.3g (%zu new elements "
+  std::printf("  measure old %.15g, new %.15g; uncovered: new %.3g, old %.3g (%zu new elements "
               "outside the old mesh)\n",
               r.old_measure, r.new_measure, r.uncovered_new, r.uncovered_old,
               r.unmatched_elements);
@@ -68,13 +68,14 @@ void run(const TransferArgs& a) {
     write_sol(a.output, transfer_p1(from, in.fields, to), to.dim);
     return;
   }
-  if (in.location != SolLocation::kTriangles || from.kind() != MeshKind::kPlanar)
+  const bool planar = from.kind() == MeshKind::kPlanar;
+  if (in.location != (planar ? SolLocation::kTriangles : SolLocation::kTetrahedra))
     throw InputError(a.old_sol + ": conservative transfer of " + sol_keyword(in.location) +
-                     " is only implemented for SolAtTriangles of planar meshes");
+                     " needs SolAtTriangles on a planar mesh or SolAtTetrahedra on a volume");
   P0TransferReport report;
   const std::vector<Field> out = transfer_p0(from, in.fields, to, &report);
   SolWriteOptions o;
-  o.location = SolLocation::kTriangles;
+  o.location = in.location;
   write_sol(a.output, out, to.dim, o);
   if (!a.quiet) print_report(report, a.json);
 }
@@ -88,7 +89,7 @@ void register_transfer(CLI::App& app) {
                   "interpolation, element fields conservatively");
   cmd->add_option("old_mesh", a->old_mesh, "Mesh the fields live on")->required();
   cmd->add_option("old_sol", a->old_sol,
-                  "Fields (.sol/.solb): SolAtVertices (P1) or SolAtTriangles (P0)")
+                  "Fields (.sol/.solb): SolAtVertices (P1), SolAtTriangles or SolAtTetrahedra (P0)")
       ->required();
   cmd->add_option("new_mesh", a->new_mesh, "Mesh to carry them to")->required();
   cmd->add_option("-o,--output", a->output, "Output fields (.sol/.solb), same section as the input");
@@ -99,13 +100,13 @@ void register_transfer(CLI::App& app) {
       "SolAtVertices: each new vertex is located in the old mesh by walking and takes the linear "
       "interpolant; vertices outside the old mesh (curved boundaries) take the value at their "
       "projection. Planar triangle meshes and tetrahedral volumes.\n"
-      "SolAtTriangles (planar meshes): conservative transfer. Each new triangle is intersected "
-      "with the old triangles it overlaps (exact convex clipping) and takes "
+      "SolAtTriangles (planar meshes) and SolAtTetrahedra (volumes): conservative transfer. Each "
+      "new element is intersected with the old elements it overlaps (convex clipping) and takes "
       "sum(v_old |old ∩ new|) / sum(|old ∩ new|), so the integral sum(v |K|) is conserved to "
       "round-off when the meshes cover the same domain. When they do not (a curved boundary "
-      "remeshed), the mean is over the covered part of each new triangle, new triangles entirely "
-      "outside take the nearest old value, and the printed report gives the uncovered areas and "
-      "the integrals before and after. SolAtTetrahedra is not implemented yet.");
+      "remeshed), the mean is over the covered part of each new element, new elements entirely "
+      "outside take the nearest old value, and the printed report gives the uncovered areas "
+      "(volumes) and the integrals before and after.");
   cmd->callback([a] { run(*a); });
 }
 

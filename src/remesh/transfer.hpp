@@ -15,7 +15,7 @@ namespace riemesh {
 /// does not match `from` or meshes of different kinds.
 std::vector<Field> transfer_p1(const Mesh& from, const std::vector<Field>& fields, const Mesh& to);
 
-/// What a conservative transfer measured. Areas are sums of element measures; integrals are
+/// What a conservative transfer measured (measures are areas in 2D, volumes in 3D). Integrals are
 /// Σ value × measure per field component (fields in order, components in order).
 struct P0TransferReport {
   double old_measure = 0.0;      ///< Σ |old element|
@@ -32,16 +32,16 @@ struct P0TransferReport {
 };
 
 /// Conservative transfer of per-element (P0) fields of `from` (one value set per triangle of a
-/// planar mesh) to the triangles of `to`: each new element gets
+/// planar mesh, or per tetrahedron of a volume) to the elements of `to`: each new element gets
 ///   v_new = Σ_old v_old |old ∩ new| / Σ_old |old ∩ new|,
-/// the intersections computed exactly by convex clipping (remesh/polygon_clip.hpp), candidates
+/// the intersections computed exactly by convex clipping (remesh/polygon_clip.hpp,
+/// remesh/polyhedron_clip.hpp: exact up to round-off), candidates
 /// found by locating the new element's centroid in the old mesh (walk) and then crossing to
 /// neighbours while they overlap, so the cost is linear in the number of overlapping pairs. When
 /// both meshes cover the same domain, Σ v_new |new| = Σ v_old |old| to round-off and constants are
 /// kept; otherwise the mean is over the covered part of each new element (constants still kept)
 /// and the report says how much area, hence mass, was not matched. Throws InputError for fields
-/// whose size does not match `from`, meshes of different kinds, or tetrahedral meshes (not
-/// implemented yet).
+/// whose size does not match `from`, or meshes of different kinds or of another kind (surfaces).
 std::vector<Field> transfer_p0(const Mesh& from, const std::vector<Field>& fields, const Mesh& to,
                                P0TransferReport* report = nullptr);
 

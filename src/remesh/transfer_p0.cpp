@@ -1,13 +1,14 @@
-// Conservative transfer of P0 fields between planar triangle meshes (BOOK.md §8): every new
-// triangle is intersected with the old triangles it overlaps.
+// Conservative transfer of P0 fields between planar triangle meshes or tetrahedral volumes
+// (BOOK.md §8): every new element is intersected with the old elements it overlaps.
 //
-// Candidates: the new triangle's centroid is located in the old mesh by walking from the
-// previous answer (remesh/background.hpp), then old triangles are visited across edges while
-// their overlap with the new one is not empty. The pieces old ∩ new tile the new triangle, and
-// two pieces with a common boundary of positive length come from old triangles sharing an edge,
-// so the search reaches every overlapping old triangle (the tiling of a convex set is connected
-// through its edges). If rounding hides a piece, or the domains differ, the vertices and edge
-// midpoints of the new triangle are located too and the search restarts from them.
+// Candidates: the new element's centroid is located in the old mesh by walking from the
+// previous answer (remesh/background.hpp), then old elements are visited across faces while
+// their overlap with the new one is not empty. The pieces old ∩ new tile the new element, and
+// two pieces with a common boundary of positive (D−1)-measure come from old elements sharing a
+// face, so the search reaches every overlapping old element (the tiling of a convex set is
+// connected through its faces). If rounding hides a piece, or the domains differ, points near
+// the vertices and the edge midpoints of the new element are located too and the search restarts
+// from them.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -15,19 +16,41 @@
 #include "core/error.hpp"
 #include "remesh/background.hpp"
 #include "remesh/polygon_clip.hpp"
+#include "remesh/polyhedron_clip.hpp"
 #include "remesh/simplex_geometry.hpp"
 #include "remesh/transfer.hpp"
 
 namespace riemesh {
 namespace {
 
-/// The corners of triangle t of a mesh, translated by −origin, counter-clockwise.
-void corners(const std::vector<double>& coords, const Id* t, const Vec2& origin, Vec2 x[3]) {
-  for (int i = 0; i < 3; ++i) {
+/// The corners of simplex t of a mesh, translated by −origin, positively oriented.
+template <int D>
+void corners(const std::vector<double>& coords, const Id* t, const Vec<D>& origin,
+             Vec<D> x[D + 1]) {
+  for (int i = 0; i <= D; ++i) {
     const auto v = static_cast<std::size_t>(t[i]);
-    x[i] = Vec2{coords[2 * v] - origin[0], coords[2 * v + 1] - origin[1]};
+    for (int a = 0; a < D; ++a) x[i][a] = coords[D * v + a] - origin[a];
   }
   if (simplex::signed_volume(x) < 0.0) std::swap(x[1], x[2]);
+}
+
+template <int D>
+const std::vector<Id>& elements(const Mesh& m) {
+  return D == 2 ? m.triangles : m.tets;
+}
+
+constexpr double kFactorial[4] = {1.0, 1.0, 2.0, 6.0};
+
+/// The measure of the intersection; `touching` is false when the two are apart.
+inline double overlap(const Vec2 t[3], const Vec2 s[3], bool& touching) {
+  const clip::Polygon piece = clip::intersect_triangles(t, s);
+  touching = piece.n >= 3;
+  return touching ? std::max(0.0, 0.5 * clip::twice_area(piece)) : 0.0;
+}
+inline double overlap(const Vec3 t[4], const Vec3 s[4], bool& touching) {
+  const clip::Polyhedron piece = clip::intersect_tetrahedra(t, s);
+  touching = piece.n >= 4;
+  return touching ? clip::volume(piece) : 0.0;
 }
 
 struct Components {
@@ -35,14 +58,16 @@ struct Components {
   int total = 0;
 };
 
+template <int D>
 Components check_fields(const Mesh& from, const std::vector<Field>& fields) {
   Components c;
+  const std::size_t ne = elements<D>(from).size() / (D + 1);
   for (const Field& f : fields) {
     const int n = field_components(f.kind, from.dim);
-    if (f.values.size() != from.num_triangles() * static_cast<std::size_t>(n))
-      throw InputError("field '" + f.name + "' does not have one value set per triangle (" +
-                       std::to_string(f.values.size()) + " values for " +
-                       std::to_string(from.num_triangles()) + " triangles)");
+    if (f.values.size() != ne * static_cast<std::size_t>(n))
+      throw InputError("field '" + f.name + "' does not have one value set per element (" +
+                       std::to_string(f.values.size()) + " values for " + std::to_string(ne) +
+                       (D == 2 ? " triangles)" : " tetrahedra)"));
     c.per_field.push_back(n);
     c.total += n;
   }
@@ -58,40 +83,44 @@ void gather(const std::vector<Field>& fields, const Components& c, std::size_t s
 }
 
 /// The walk needs a background mesh; its metric is not used here (identity).
+template <int D>
 std::vector<double> identity_metrics(std::size_t n) {
   std::vector<double> m;
-  m.reserve(3 * n);
-  for (std::size_t v = 0; v < n; ++v) m.insert(m.end(), {1.0, 0.0, 1.0});
+  m.reserve(SymMat<D>::kSize * n);
+  const SymMat<D> id = SymMat<D>::identity();
+  for (std::size_t v = 0; v < n; ++v) m.insert(m.end(), id.c, id.c + SymMat<D>::kSize);
   return m;
 }
 
+template <int D>
 class P0Transfer {
  public:
   P0Transfer(const Mesh& from, const std::vector<Field>& fields, const Mesh& to)
-      : from_(from), fields_(fields), to_(to), comps_(check_fields(from, fields)),
-        bg_(from, identity_metrics(from.num_vertices()), InterpScheme::kLinear),
-        stamp_(from.num_triangles(), -1) {}
+      : from_(from), fields_(fields), to_(to), comps_(check_fields<D>(from, fields)),
+        bg_(from, identity_metrics<D>(from.num_vertices()), InterpScheme::kLinear),
+        stamp_(elements<D>(from).size() / (D + 1), -1) {}
 
   std::vector<Field> run(P0TransferReport& r);
 
  private:
-  /// Visits the old triangles reachable from `seed` through overlapping neighbours; adds the
-  /// overlaps with new triangle e (corners x, translated by origin) to acc and covered.
-  void search(Id seed, Id e, const Vec2 x[3], const Vec2& origin, std::vector<double>& acc,
-              double& covered, P0TransferReport& r);
+  /// Visits the old elements reachable from `seed` through overlapping neighbours; adds the
+  /// overlaps with new element e (corners x, translated by origin) to acc and covered.
+  void search(Id seed, Id e, const Vec<D> x[D + 1], const Vec<D>& origin,
+              std::vector<double>& acc, double& covered, P0TransferReport& r);
 
   const Mesh& from_;
   const std::vector<Field>& fields_;
   const Mesh& to_;
   Components comps_;
-  BackgroundMesh<2> bg_;
+  BackgroundMesh<D> bg_;
   std::vector<Id> stamp_;  // the last new triangle that visited each old one
   std::vector<Id> stack_;
   std::vector<double> values_;
 };
 
-void P0Transfer::search(Id seed, Id e, const Vec2 x[3], const Vec2& origin,
-                        std::vector<double>& acc, double& covered, P0TransferReport& r) {
+template <int D>
+void P0Transfer<D>::search(Id seed, Id e, const Vec<D> x[D + 1], const Vec<D>& origin,
+                           std::vector<double>& acc, double& covered, P0TransferReport& r) {
   if (stamp_[static_cast<std::size_t>(seed)] == e) return;
   stamp_[static_cast<std::size_t>(seed)] = e;
   stack_.assign(1, seed);
@@ -99,18 +128,19 @@ void P0Transfer::search(Id seed, Id e, const Vec2 x[3], const Vec2& origin,
   while (!stack_.empty()) {
     const Id s = stack_.back();
     stack_.pop_back();
-    Vec2 y[3];
-    corners(from_.coords, &from_.triangles[3 * static_cast<std::size_t>(s)], origin, y);
-    const clip::Polygon piece = clip::intersect_triangles(x, y);
-    if (piece.n < 3) continue;  // apart, or touching along an edge or at a vertex
-    const double area = std::max(0.0, 0.5 * clip::twice_area(piece));
+    Vec<D> y[D + 1];
+    corners<D>(from_.coords, &elements<D>(from_)[(D + 1) * static_cast<std::size_t>(s)], origin,
+               y);
+    bool touching = false;
+    const double area = overlap(x, y, touching);
+    if (!touching) continue;  // apart, or touching along a face, an edge or at a vertex
     if (area > 0.0) {
       ++r.pairs;
       covered += area;
       gather(fields_, comps_, static_cast<std::size_t>(s), values_.data());
       for (std::size_t k = 0; k < acc.size(); ++k) acc[k] += area * values_[k];
     }
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i <= D; ++i) {
       const Id n = bg_.neighbour(s, i);
       if (n == kNoId || stamp_[static_cast<std::size_t>(n)] == e) continue;
       stamp_[static_cast<std::size_t>(n)] = e;
@@ -119,33 +149,39 @@ void P0Transfer::search(Id seed, Id e, const Vec2 x[3], const Vec2& origin,
   }
 }
 
-std::vector<Field> P0Transfer::run(P0TransferReport& r) {
-  const std::size_t nt = to_.num_triangles();
+template <int D>
+std::vector<Field> P0Transfer<D>::run(P0TransferReport& r) {
+  const std::vector<Id>& elems = elements<D>(to_);
+  const std::size_t nt = elems.size() / (D + 1);
   const auto total = static_cast<std::size_t>(comps_.total);
   std::vector<double> out(nt * total, 0.0);
   std::vector<double> acc(total);
   Id hint = kNoId;
   for (std::size_t t = 0; t < nt; ++t) {
-    const Id* tv = &to_.triangles[3 * t];
-    const Vec2 origin{to_.coords[2 * static_cast<std::size_t>(tv[0])],
-                      to_.coords[2 * static_cast<std::size_t>(tv[0]) + 1]};
-    Vec2 x[3];
-    corners(to_.coords, tv, origin, x);
-    const double area = 0.5 * simplex::signed_volume(x);
+    const Id* tv = &elems[(D + 1) * t];
+    Vec<D> origin{};
+    for (int a = 0; a < D; ++a) origin[a] = to_.coords[D * static_cast<std::size_t>(tv[0]) + a];
+    Vec<D> x[D + 1];
+    corners<D>(to_.coords, tv, origin, x);
+    const double area = simplex::signed_volume(x) / kFactorial[D];
     std::fill(acc.begin(), acc.end(), 0.0);
     double covered = 0.0;
     const Id e = static_cast<Id>(t);
-    const Vec2 centroid = origin + (1.0 / 3.0) * (x[0] + x[1] + x[2]);
-    const Location<2> loc = bg_.locate(centroid, hint);
+    Vec<D> centroid = Vec<D>::zero();
+    for (int i = 0; i <= D; ++i) centroid += x[i];
+    centroid *= 1.0 / (D + 1);
+    const Location<D> loc = bg_.locate(origin + centroid, hint);
     hint = loc.simplex;
     search(loc.simplex, e, x, origin, acc, covered, r);
     if (covered < area * (1.0 - 1e-12)) {
-      // Rounding hid a piece, or the domains differ: more seeds, from the corners inwards.
-      for (int k = 0; k < 6; ++k) {
-        const Vec2 p = k < 3 ? 0.999 * x[k] + 0.0005 * (x[(k + 1) % 3] + x[(k + 2) % 3])
-                             : 0.5 * (x[k - 3] + x[(k - 2) % 3]);
-        const Location<2> l = bg_.locate(origin + p, loc.simplex);
-        if (l.inside) search(l.simplex, e, x, origin, acc, covered, r);
+      // Rounding hid a piece, or the domains differ: more seeds, near the corners (a thousandth
+      // of the way to the centroid) and at the edge midpoints.
+      for (int i = 0; i <= D; ++i) {
+        for (int j = i; j <= D; ++j) {
+          const Vec<D> p = i == j ? x[i] + 0.001 * (centroid - x[i]) : 0.5 * (x[i] + x[j]);
+          const Location<D> l = bg_.locate(origin + p, loc.simplex);
+          if (l.inside) search(l.simplex, e, x, origin, acc, covered, r);
+        }
       }
     }
     r.overlap_measure += covered;
@@ -170,13 +206,16 @@ std::vector<Field> P0Transfer::run(P0TransferReport& r) {
   return result;
 }
 
-/// Σ value × area per component of the fields on a mesh's triangles; adds the areas to *measure.
+/// Σ value × measure per component of the fields on a mesh's elements; adds the measures to
+/// *measure.
+template <int D>
 std::vector<double> integrals(const Mesh& m, const std::vector<Field>& fields, double* measure) {
   std::vector<double> out;
-  for (std::size_t t = 0; t < m.num_triangles(); ++t) {
-    Vec2 x[3];
-    corners(m.coords, &m.triangles[3 * t], Vec2{0.0, 0.0}, x);
-    const double area = 0.5 * simplex::signed_volume(x);
+  const std::vector<Id>& elems = elements<D>(m);
+  for (std::size_t t = 0; t < elems.size() / (D + 1); ++t) {
+    Vec<D> x[D + 1];
+    corners<D>(m.coords, &elems[(D + 1) * t], Vec<D>::zero(), x);
+    const double area = simplex::signed_volume(x) / kFactorial[D];
     if (measure) *measure += area;
     std::size_t k = 0;
     for (const Field& f : fields) {
@@ -190,24 +229,31 @@ std::vector<double> integrals(const Mesh& m, const std::vector<Field>& fields, d
   return out;
 }
 
+template <int D>
+std::vector<Field> transfer(const Mesh& from, const std::vector<Field>& fields, const Mesh& to,
+                            P0TransferReport& r) {
+  std::vector<Field> out;
+  {
+    P0Transfer<D> transfer(from, fields, to);
+    out = transfer.run(r);
+  }
+  r.old_integral = integrals<D>(from, fields, &r.old_measure);
+  r.new_integral = integrals<D>(to, out, &r.new_measure);
+  return out;
+}
+
 }  // namespace
 
 std::vector<Field> transfer_p0(const Mesh& from, const std::vector<Field>& fields, const Mesh& to,
                                P0TransferReport* report) {
   if (from.dim != to.dim || from.kind() != to.kind())
     throw InputError("field transfer needs two meshes of the same kind");
-  if (from.kind() == MeshKind::kVolume)
-    throw InputError("conservative transfer of tetrahedral P0 fields is not implemented yet");
-  if (from.kind() != MeshKind::kPlanar)
-    throw InputError("conservative transfer works on planar triangle meshes");
+  if (from.kind() != MeshKind::kPlanar && from.kind() != MeshKind::kVolume)
+    throw InputError("conservative transfer works on planar triangle meshes and tetrahedral "
+                     "volumes");
   P0TransferReport r;
-  std::vector<Field> out;
-  {
-    P0Transfer transfer(from, fields, to);
-    out = transfer.run(r);
-  }
-  r.old_integral = integrals(from, fields, &r.old_measure);
-  r.new_integral = integrals(to, out, &r.new_measure);
+  std::vector<Field> out = from.kind() == MeshKind::kPlanar ? transfer<2>(from, fields, to, r)
+                                                            : transfer<3>(from, fields, to, r);
   r.uncovered_new = r.new_measure - r.overlap_measure;
   r.uncovered_old = r.old_measure - r.overlap_measure;
   if (report) *report = std::move(r);

@@ -62,6 +62,30 @@ r = json.load(sys.stdin)
 assert r["uncovered_new"] > 1e-4 and r["new_measure"] > r["old_measure"], r
 ' && ok uncovered-reported || ko "uncovered-reported: $out"
 
+# Tetrahedra: the bunny's SolAtTetrahedra onto the same mesh, renumbered by riemesh convert
+# --hilbert (the identity up to numbering): conserved, one value per tetrahedron.
+"$R" convert "$D/bunny_vol.meshb" "$TMP/bunny_h.meshb" --hilbert >/dev/null && ok convert-bunny ||
+  ko convert-bunny
+$PY - "$D/bunny_vol.msh" "$TMP/t.sol" <<'PYEOF' && ok write-tets || ko write-tets
+import sys, meshio
+m = meshio.read(sys.argv[1])
+tets = m.cells_dict["tetra"]
+with open(sys.argv[2], "w") as f:
+    f.write("MeshVersionFormatted 2\nDimension 3\nSolAtTetrahedra\n%d\n1 1\n" % len(tets))
+    for i, t in enumerate(tets):
+        f.write("%.17g\n" % (1 + (i % 3) + m.points[t, 2].mean()))
+    f.write("End\n")
+PYEOF
+out=$("$R" transfer "$D/bunny_vol.meshb" "$TMP/t.sol" "$TMP/bunny_h.meshb" -o "$TMP/th.sol" --json)
+printf '%s' "$out" | $PY -c '
+import json, sys
+r = json.load(sys.stdin)
+o, n = r["old_integral"][0], r["new_integral"][0]
+assert abs(n - o) <= 1e-12 * abs(o), (o, n)
+assert abs(r["uncovered_new"]) <= 1e-12 * r["new_measure"], r
+' && ok tets-conserved || ko "tets-conserved: $out"
+grep -q "SolAtTetrahedra" "$TMP/th.sol" && ok tets-section || ko tets-section
+
 "$R" transfer -h | grep -q "SolAtTriangles" && ok help-documents-p0 || ko help-documents-p0
 expect_error p0-on-vertex-file transfer "$D/lshape.mesh" "$D/lshape.sol" "$TMP/a.mesh" --p0 -o "$TMP/x.sol"
 expect_no_file p0-no-output "$TMP/x.sol"
