@@ -29,9 +29,15 @@ std::string json_number(double v) {
 }
 
 void print_step(const UnsteadyStep& s) {
-  std::printf("  %8.0f %9d %10.0f %10zu %10zu %9.0f %11.4e %7.2fs\n", s.complexity, s.intervals,
+  std::string note;
+  if (!s.converged) {
+    note = " (adapt2d did not converge: ";
+    note += s.stall_reason;
+    note += ")";
+  }
+  std::printf("  %8.0f %9d %10.0f %10zu %10zu %9.0f %11.4e %7.2fs%s\n", s.complexity, s.intervals,
               s.mean_vertices, s.total_vertices, s.max_vertices, s.metric_complexity, s.error,
-              s.seconds);
+              s.seconds, note.c_str());
   std::fflush(stdout);
 }
 
@@ -47,6 +53,7 @@ std::string json_steps(const std::vector<UnsteadyStep>& steps) {
     o += ", \"max_vertices\": " + std::to_string(s.max_vertices);
     o += ", \"metric_complexity\": " + json_number(s.metric_complexity);
     o += ", \"error\": " + json_number(s.error);
+    o += s.converged ? ", \"converged\": true" : ", \"converged\": false";
     o += ", \"seconds\": " + json_number(s.seconds);
     o += "}";
   }

@@ -4,7 +4,8 @@
 //
 // The polyhedron is kept as its face polygons (cyclic order, any orientation). Clipping by a
 // plane clips every face (Sutherland–Hodgman, as in polygon_clip.hpp) and closes the cut with a
-// cap: the points on the plane, in angular order about their mean. The volume is
+// cap: the points on the plane, in angular order about their mean, repeated points merged. The
+// volume is
 // Σ_faces Σ_fan |det(p0 − c, pi − c, pi+1 − c)| / 6 with c the mean of the vertices, which lies in
 // the convex polyhedron, so no face orientation is needed. Signed distances within 1e-14 of the
 // scale of the tetrahedra count as 0 (a shared face or vertex is then kept, not cut into
@@ -16,7 +17,10 @@
 
 namespace riemesh::clip {
 
-inline constexpr int kMaxFaceVerts = 48;  // each clip at most doubles a face; 3·2⁴
+// A triangle clipped by 4 planes has at most 7 vertices (one more per plane, the polygon being
+// convex); with distances snapped to 0 near the plane rounding does not add sign changes. The
+// capacity is a guard: points beyond it are dropped (never written out of bounds).
+inline constexpr int kMaxFaceVerts = 12;
 inline constexpr int kMaxFaces = 8;       // 4 faces of a tetrahedron + 4 caps
 
 struct Face {
@@ -40,8 +44,19 @@ inline Polyhedron tetrahedron(const Vec3 x[4]) {
   return t;
 }
 
-/// Keeps the part of `poly` where dot(normal, p − a) >= 0 (|value| <= tol counts as 0).
-inline void clip_plane(Polyhedron& poly, const Vec3& a, const Vec3& normal, double tol) {
+/// A monotone stand-in for atan2(y, x) in (−2, 2] (the "diamond angle"), enough to sort.
+inline double pseudo_angle(double y, double x) {
+  const double l1 = std::abs(x) + std::abs(y);
+  if (l1 == 0.0) return 0.0;
+  const double p = x / l1;
+  return y < 0.0 ? p - 1.0 : 1.0 - p;
+}
+
+/// `out` = the part of `poly` where dot(normal, p − a) >= 0 (|value| <= tol counts as 0).
+/// Returns false, leaving `out` untouched, when nothing lies beyond the plane (then the answer
+/// is `poly` itself).
+inline bool clip_plane(const Polyhedron& poly, const Vec3& a, const Vec3& normal, double tol,
+                       Polyhedron& out) {
   // Nothing on the negative side: nothing to cut (and no cap, which would double a face lying
   // on the plane).
   bool cut = false;
@@ -51,10 +66,10 @@ inline void clip_plane(Polyhedron& poly, const Vec3& a, const Vec3& normal, doub
         cut = true;
         break;
       }
-  if (!cut) return;
+  if (!cut) return false;
   Vec3 cap[kMaxFaces * kMaxFaceVerts];
   int nc = 0;
-  Polyhedron out;
+  out.n = 0;
   for (int fi = 0; fi < poly.n; ++fi) {
     const Face& in = poly.f[fi];
     double d[kMaxFaceVerts];
@@ -62,7 +77,9 @@ inline void clip_plane(Polyhedron& poly, const Vec3& a, const Vec3& normal, doub
       d[i] = dot(normal, in.p[i] - a);
       if (std::abs(d[i]) <= tol) d[i] = 0.0;
     }
-    Face g;
+    if (out.n == kMaxFaces - 1) break;  // keep room for the cap
+    Face& g = out.f[out.n];
+    g.n = 0;
     for (int i = 0; i < in.n; ++i) {
       const int j = i + 1 == in.n ? 0 : i + 1;
       if (d[i] >= 0.0 && g.n < kMaxFaceVerts) g.p[g.n++] = in.p[i];
@@ -73,11 +90,11 @@ inline void clip_plane(Polyhedron& poly, const Vec3& a, const Vec3& normal, doub
         if (nc < kMaxFaces * kMaxFaceVerts) cap[nc++] = q;
       }
     }
-    if (g.n >= 3 && out.n < kMaxFaces - 1) out.f[out.n++] = g;
+    if (g.n >= 3) ++out.n;
   }
   if (nc >= 3 && out.n > 0) {
-    // The cap: points on the plane sorted by angle about their mean, duplicates kept (they only
-    // add empty fan triangles). Its polygon is convex, so the order is its cyclic order.
+    // The cap: points on the plane sorted by angle about their mean. Its polygon is convex, so
+    // the angular order is its cyclic order.
     Vec3 m = Vec3::zero();
     for (int i = 0; i < nc; ++i) m += cap[i];
     m *= 1.0 / nc;
@@ -86,15 +103,21 @@ inline void clip_plane(Polyhedron& poly, const Vec3& a, const Vec3& normal, doub
     double angle[kMaxFaces * kMaxFaceVerts];
     int order[kMaxFaces * kMaxFaceVerts];
     for (int i = 0; i < nc; ++i) {
-      angle[i] = std::atan2(dot(v, cap[i] - m), dot(u, cap[i] - m));
+      angle[i] = pseudo_angle(dot(v, cap[i] - m), dot(u, cap[i] - m));
       order[i] = i;
     }
     std::sort(order, order + nc, [&angle](int i, int j) { return angle[i] < angle[j]; });
+    // Each point comes once per face through it (twice for a cut edge, three times for a vertex
+    // on the plane): neighbours in angular order closer than 1e-12 of the cap's radius merge.
+    double radius = 0.0;
+    for (int i = 0; i < nc; ++i) radius = std::max(radius, norm(cap[i] - m));
+    const double merge = 1e-12 * radius;
     Face& c = out.f[out.n++];
-    c.n = std::min(nc, kMaxFaceVerts);
-    for (int i = 0; i < c.n; ++i) c.p[i] = cap[order[i]];
+    c.n = 0;
+    for (int i = 0; i < nc && c.n < kMaxFaceVerts; ++i)
+      if (c.n == 0 || norm(cap[order[i]] - c.p[c.n - 1]) > merge) c.p[c.n++] = cap[order[i]];
   }
-  poly = out;
+  return true;
 }
 
 /// Volume of a convex polyhedron given by its faces (>= 0).
@@ -117,19 +140,21 @@ inline double volume(const Polyhedron& poly) {
 /// The intersection of tetrahedra t and s (each with positive signed volume) as a polyhedron:
 /// t clipped by the four faces of s. Empty (n == 0) when they are apart.
 inline Polyhedron intersect_tetrahedra(const Vec3 t[4], const Vec3 s[4]) {
-  Polyhedron p = tetrahedron(t);
+  Polyhedron buf[2];  // ping-pong: no copies of the (2 kB) polyhedra between clips
+  buf[0] = tetrahedron(t);
+  int cur = 0;
   double scale = 0.0;
   for (int i = 1; i < 4; ++i) scale = std::max({scale, norm(s[i] - s[0]), norm(t[i] - t[0])});
-  for (int i = 0; i < 4 && p.n > 0; ++i) {
+  for (int i = 0; i < 4 && buf[cur].n > 0; ++i) {
     // Face opposite s[i]; the normal points towards s[i] (inside).
     const Vec3& a = s[(i + 1) % 4];
     const Vec3& b = s[(i + 2) % 4];
     const Vec3& c = s[(i + 3) % 4];
     Vec3 n = cross(b - a, c - a);
     if (dot(n, s[i] - a) < 0.0) n = -1.0 * n;
-    clip_plane(p, a, n, 1e-14 * norm(n) * scale);
+    if (clip_plane(buf[cur], a, n, 1e-14 * norm(n) * scale, buf[1 - cur])) cur = 1 - cur;
   }
-  return p;
+  return buf[cur];
 }
 
 /// Volume of the intersection of two positively oriented tetrahedra.

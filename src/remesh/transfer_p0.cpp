@@ -48,6 +48,17 @@ inline double overlap(const Vec2 t[3], const Vec2 s[3], bool& touching) {
   return touching ? std::max(0.0, 0.5 * clip::twice_area(piece)) : 0.0;
 }
 inline double overlap(const Vec3 t[4], const Vec3 s[4], bool& touching) {
+  // Bounding boxes first: most neighbours visited by the search only touch or are apart.
+  for (int a = 0; a < 3; ++a) {
+    const double t_lo = std::min({t[0][a], t[1][a], t[2][a], t[3][a]});
+    const double t_hi = std::max({t[0][a], t[1][a], t[2][a], t[3][a]});
+    const double s_lo = std::min({s[0][a], s[1][a], s[2][a], s[3][a]});
+    const double s_hi = std::max({s[0][a], s[1][a], s[2][a], s[3][a]});
+    if (t_hi < s_lo || s_hi < t_lo) {
+      touching = false;
+      return 0.0;
+    }
+  }
   const clip::Polyhedron piece = clip::intersect_tetrahedra(t, s);
   touching = piece.n >= 4;
   return touching ? clip::volume(piece) : 0.0;

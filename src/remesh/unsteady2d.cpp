@@ -150,7 +150,16 @@ UnsteadyStep unsteady_run(const MovingFunction& f, double complexity, int interv
   for (int it = 0; it < o.iterations; ++it) {
     const std::vector<std::vector<SymMat2>> metrics =
         interval_metrics(f, complexity, o, meshes, s.metric_complexity);
-    for (std::size_t i = 0; i < n; ++i) meshes[i] = adapt2d(meshes[i], metrics[i], ao).mesh;
+    s.converged = true;
+    s.stall_reason.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      Adapt2dResult a = adapt2d(meshes[i], metrics[i], ao);
+      if (!a.report.converged && s.converged) {
+        s.converged = false;
+        s.stall_reason = "sub-interval " + std::to_string(i + 1) + ": " + a.report.stall_reason;
+      }
+      meshes[i] = std::move(a.mesh);
+    }
   }
   // Error times: the samples and the midpoints between them (ends of every interval included).
   const double dt = 1.0 / static_cast<double>(n);

@@ -13,6 +13,7 @@
 #include <functional>
 #include <limits>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -67,6 +68,8 @@ struct UnsteadyStep {
   std::size_t total_vertices = 0, max_vertices = 0;
   double metric_complexity = 0;  ///< Σ n_i C(M_i) / Σ n_i of the last metrics
   double error = 0;              ///< max over the error times of the L2 interpolation error
+  bool converged = true;         ///< every adapt2d of the last iteration converged
+  std::string stall_reason;      ///< the first one that did not, with its sub-interval
   double seconds = 0;
 };
 
