@@ -1,5 +1,6 @@
 // `riemesh metric hessian ...` (a metric from a solution field: recovered Hessian, L∞ or Lp
-// metric, clipping, gradation) and `riemesh metric combine ...` (intersection of metric files).
+// metric, clipping, gradation) and `riemesh metric combine ...` (intersection of metric files,
+// or the space–time Lp metric of time samples, BOOK.md §8 and metric/spacetime_metric.hpp).
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -17,6 +18,7 @@
 #include "metric/gradation.hpp"
 #include "metric/hessian_metric.hpp"
 #include "metric/recovery.hpp"
+#include "metric/spacetime_metric.hpp"
 
 namespace riemesh::cli {
 namespace {
@@ -30,10 +32,26 @@ struct HessianArgs {
 
 struct CombineArgs {
   std::vector<std::string> inputs;
-  std::string mesh, output;
+  std::string mesh, meshes, output, mode = "intersect", norm = "2", time = "max";
+  std::string time_steps, lengths;
+  int intervals = 1;
   double hgrad = 0.0;
   bool json = false;
+  HessianMetricOptions opt;
 };
+
+/// Splits a comma list ("a,b,c"); empty items are errors.
+std::vector<std::string> split_list(const std::string& text, const std::string& what) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    out.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (out.back().empty()) throw InputError(what + ": empty item in '" + text + "'");
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
+}
 
 /// 2 for a planar triangle mesh, 3 for a tetrahedral volume; InputError otherwise.
 int metric_dim(const Mesh& mesh, const std::string& path) {
@@ -114,9 +132,117 @@ void run_combine(const CombineArgs& a, const Mesh& mesh) {
   print_report(metric_report<D>(mesh, m), D, a.json);
 }
 
-void combine(const CombineArgs& a) {
+/// The single symmetric tensor field of a .sol (a Hessian, or a metric ∝ |H|), not checked SPD.
+template <int D>
+std::vector<SymMat<D>> load_tensors(const std::string& path, const Mesh& mesh) {
+  const std::vector<Field> fields = read_sol(path, mesh);
+  const Field* t = nullptr;
+  for (const Field& f : fields)
+    if (f.kind == FieldKind::kSymTensor) {
+      if (t) throw InputError(path + ": holds several tensor fields, expected one");
+      t = &f;
+    }
+  if (!t) throw InputError(path + ": holds no symmetric tensor field (type 3)");
+  std::vector<SymMat<D>> out(mesh.num_vertices());
+  for (std::size_t v = 0; v < out.size(); ++v)
+    for (int k = 0; k < SymMat<D>::kSize; ++k) out[v].c[k] = t->values[SymMat<D>::kSize * v + k];
+  return out;
+}
+
+/// Numbers of a comma list, or n copies of `fallback` when the list is empty.
+std::vector<double> per_interval(const std::string& text, std::size_t n, double fallback,
+                                 const std::string& what) {
+  if (text.empty()) return std::vector<double>(n, fallback);
+  std::vector<double> v = parse_numbers(text, what);
+  if (v.size() != n)
+    throw InputError(what + ": " + std::to_string(v.size()) + " values for " + std::to_string(n) +
+                     " sub-intervals");
+  for (double x : v)
+    if (!(x > 0.0) || !std::isfinite(x)) throw InputError(what + ": values must be > 0");
+  return v;
+}
+
+template <int D>
+void run_spacetime(const CombineArgs& a, const std::vector<Mesh>& meshes,
+                   const std::vector<std::string>& outputs) {
+  const auto n = static_cast<std::size_t>(a.intervals);
+  const std::size_t per = a.inputs.size() / n;
+  const TimeCombination how = a.time == "max" ? TimeCombination::kMax : TimeCombination::kIntegral;
+  const std::vector<double> lengths = per_interval(a.lengths, n, 1.0 / n, "--lengths");
+  // Default: a constant time step, so the steps per interval are proportional to its length.
+  const std::vector<double> steps = per_interval(a.time_steps, n, 0.0, "--time-steps");
+  std::vector<std::vector<SymMat<D>>> h(n);
+  std::vector<SpaceTimeInterval<D>> in(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Mesh& mesh = meshes[meshes.size() == 1 ? 0 : i];
+    std::vector<std::vector<SymMat<D>>> samples;
+    for (std::size_t k = 0; k < per; ++k)
+      samples.push_back(load_tensors<D>(a.inputs[i * per + k], mesh));
+    h[i] = combine_in_time<D>(samples, lengths[i], how);
+    in[i] = {&mesh, h[i], a.time_steps.empty() ? lengths[i] : steps[i]};
+  }
+  std::vector<MetricReport> reports;
+  std::vector<std::vector<SymMat<D>>> m = spacetime_lp_metrics<D>(in, a.opt, &reports);
+  double total_steps = 0.0, mean = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    grade<D>(*in[i].mesh, m[i], a.hgrad);
+    reports[i] = metric_report<D>(*in[i].mesh, m[i]);
+    total_steps += in[i].time_steps;
+    mean += in[i].time_steps * reports[i].complexity;
+  }
+  mean /= total_steps;
+  for (std::size_t i = 0; i < n; ++i) write_metric<D>(outputs[i], m[i]);
+  if (a.json) {
+    std::printf("{\"complexity\": %.17g, \"interval_complexities\": [", mean);
+    for (std::size_t i = 0; i < n; ++i) std::printf("%s%.17g", i ? ", " : "", reports[i].complexity);
+    std::printf("]}\n");
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    std::printf("sub-interval %zu: complexity %.6g (%s)\n", i + 1, reports[i].complexity,
+                outputs[i].c_str());
+  std::printf("mean complexity per time step: %.6g\n", mean);
+}
+
+void combine_spacetime(CombineArgs& a) {
+  a.opt.norm = parse_norm(a.norm);
+  if (!std::isfinite(a.opt.norm)) throw InputError("--mode lp needs a finite --norm");
+  if (a.opt.complexity <= 0.0) throw InputError("--mode lp needs --complexity N");
+  a.opt.validate();
+  if (a.time != "max" && a.time != "integral")
+    throw InputError("--time must be max or integral, got '" + a.time + "'");
+  if (a.intervals < 1) throw InputError("--intervals must be >= 1");
+  const auto n = static_cast<std::size_t>(a.intervals);
+  if (a.inputs.size() % n != 0)
+    throw InputError(std::to_string(a.inputs.size()) + " samples do not split into " +
+                     std::to_string(n) + " sub-intervals of the same count");
+  const std::vector<std::string> outputs = split_list(a.output, "-o");
+  if (outputs.size() != n)
+    throw InputError("-o: give one output per sub-interval (" + std::to_string(n) +
+                     ", comma-separated)");
+  if (!a.mesh.empty() && !a.meshes.empty()) throw InputError("give --mesh or --meshes, not both");
+  const std::vector<std::string> paths =
+      a.meshes.empty() ? std::vector<std::string>{a.mesh} : split_list(a.meshes, "--meshes");
+  if (paths.size() != 1 && paths.size() != n)
+    throw InputError("--meshes: one mesh per sub-interval (" + std::to_string(n) + ")");
+  std::vector<Mesh> meshes;
+  int dim = 0;
+  for (const std::string& p : paths) {
+    meshes.push_back(load_mesh(p));
+    require_measurable(meshes.back(), p);
+    const int d = metric_dim(meshes.back(), p);
+    if (dim != 0 && d != dim) throw InputError(p + ": meshes of different dimensions");
+    dim = d;
+  }
+  dim == 2 ? run_spacetime<2>(a, meshes, outputs) : run_spacetime<3>(a, meshes, outputs);
+}
+
+void combine(CombineArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o M.sol");
   require_hgrad(a.hgrad);
+  if (a.mode == "lp") return combine_spacetime(a);
+  if (a.mode != "intersect") throw InputError("--mode must be intersect or lp, got '" + a.mode + "'");
+  if (a.mesh.empty()) throw InputError("--mesh is required (the mesh the metrics live on)");
   const Mesh mesh = load_mesh(a.mesh);
   require_measurable(mesh, a.mesh);
   const int dim = metric_dim(mesh, a.mesh);
@@ -149,12 +275,44 @@ void register_hessian(CLI::App& metric) {
 void register_combine(CLI::App& metric) {
   auto a = std::make_shared<CombineArgs>();
   auto* cmd = metric.add_subcommand(
-      "combine", "Intersect metric fields on the same mesh (several fields or time samples)");
-  cmd->add_option("metrics", a->inputs, "Metric files A.sol B.sol ...")->required();
-  cmd->add_option("--mesh", a->mesh, "The mesh the metrics live on")->required();
-  cmd->add_option("-o,--output", a->output, "Output metric (.sol/.solb)");
+      "combine", "Intersect metric fields on the same mesh (several fields or time samples), or "
+                 "build the space-time Lp metric of time sub-intervals from Hessian samples");
+  cmd->add_option("metrics", a->inputs,
+                  "Metric files A.sol B.sol ... (--mode lp: Hessians or |H| metrics of the time "
+                  "samples, sub-interval after sub-interval)")
+      ->required();
+  cmd->add_option("--mesh", a->mesh, "The mesh the metrics live on");
+  cmd->add_option("-o,--output", a->output,
+                  "Output metric (.sol/.solb); --mode lp: one per sub-interval, comma-separated");
+  cmd->add_option("--mode", a->mode, "intersect, or lp (space-time Lp metric, BOOK.md §8)")
+      ->capture_default_str();
+  cmd->add_option("--norm", a->norm, "lp: norm p (finite)")->capture_default_str();
+  cmd->add_option("--complexity", a->opt.complexity,
+                  "lp: mean complexity per time step N (N_st = N * sum of time steps)");
+  cmd->add_option("--intervals", a->intervals, "lp: number of sub-intervals (inputs split evenly)")
+      ->capture_default_str();
+  cmd->add_option("--meshes", a->meshes, "lp: one mesh per sub-interval, comma-separated");
+  cmd->add_option("--time", a->time,
+                  "lp: samples of a sub-interval combined by max (length * intersection of |H|) "
+                  "or integral (trapezoid rule, equally spaced samples, ends included)")
+      ->capture_default_str();
+  cmd->add_option("--lengths", a->lengths, "lp: sub-interval lengths (comma list; default 1/n each)");
+  cmd->add_option("--time-steps", a->time_steps,
+                  "lp: solver time steps per sub-interval (comma list; default: proportional to "
+                  "the lengths, a constant time step)");
+  cmd->add_option("--hmin", a->opt.hmin, "lp: smallest size");
+  cmd->add_option("--hmax", a->opt.hmax, "lp: largest size");
+  cmd->add_option("--aniso-max", a->opt.aniso_max, "lp: largest anisotropy ratio");
   cmd->add_option("--hgrad", a->hgrad, "Gradation of the result (0: off)")->capture_default_str();
-  cmd->add_flag("--json", a->json, "Print one JSON object (complexity, predicted_vertices, predicted_elements)");
+  cmd->add_flag("--json", a->json, "Print one JSON object (complexity, predicted_vertices, predicted_elements; lp: complexity, interval_complexities)");
+  cmd->footer(
+      "--mode lp: H_i = combination in time of the samples' |H| on sub-interval i, then "
+      "M_i = N_st^(2/d) (sum_j n_j^(2p/(2p+d)) int det(H_j)^(p/(2p+d)))^(-2/d) "
+      "n_i^(-2/(2p+d)) det(H_i)^(-1/(2p+d)) H_i, n_i the time steps of sub-interval i, "
+      "N_st = N sum_j n_j: sum_i n_i C(M_i) / sum_i n_i = N (Alauzet, Loseille, Olivier 2016). "
+      "Inputs are Hessians (any symmetric tensors; absolute values are taken) or metrics "
+      "proportional to |H|, such as `riemesh metric hessian --norm inf --tolerance E` with the same "
+      "E for every sample.");
   cmd->callback([a] { combine(*a); });
 }
 

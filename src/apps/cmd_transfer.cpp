@@ -1,5 +1,8 @@
 // `riemesh transfer OLD.mesh OLD.sol NEW.mesh -o NEW.sol`: vertex fields carried to another mesh
-// of the same domain by P1 interpolation (BOOK.md §8).
+// of the same domain by P1 interpolation, element (P0) fields by the conservative transfer
+// (BOOK.md §8).
+#include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 
@@ -14,7 +17,43 @@ namespace {
 
 struct TransferArgs {
   std::string old_mesh, old_sol, new_mesh, output;
+  bool p0 = false, json = false, quiet = false;
 };
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+void print_report(const P0TransferReport& r, bool json) {
+  if (json) {
+    std::string o = "{\"pairs\": " + std::to_string(r.pairs);
+    o += ", \"old_measure\": " + num(r.old_measure);
+    o += ", \"new_measure\": " + num(r.new_measure);
+    o += ", \"uncovered_new\": " + num(r.uncovered_new);
+    o += ", \"uncovered_old\": " + num(r.uncovered_old);
+    o += ", \"unmatched_elements\": " + std::to_string(r.unmatched_elements);
+    o += ", \"old_integral\": [";
+    for (std::size_t k = 0; k < r.old_integral.size(); ++k) o += (k ? ", " : "") + num(r.old_integral[k]);
+    o += "], \"new_integral\": [";
+    for (std::size_t k = 0; k < r.new_integral.size(); ++k) o += (k ? ", " : "") + num(r.new_integral[k]);
+    o += "]}\n";
+    std::fputs(o.c_str(), stdout);
+    return;
+  }
+  std::printf("conservative P0 transfer: %zu overlapping pairs\n", r.pairs);
+  for (std::size_t k = 0; k < r.old_integral.size(); ++k) {
+    const double d = r.new_integral[k] - r.old_integral[k];
+    const double scale = std::abs(r.old_integral[k]);
+    std::printf("  component %zu: integral old %.15g, new %.15g, relative change %.2e\n", k,
+                r.old_integral[k], r.new_integral[k], scale > 0 ? d / scale : d);
+  }
+  std::printf("  measure old %.15g, new %.15g; uncovered: new %.3g, old %.3g (%zu new elements "
+              "outside the old mesh)\n",
+              r.old_measure, r.new_measure, r.uncovered_new, r.uncovered_old,
+              r.unmatched_elements);
+}
 
 void run(const TransferArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o NEW.sol");
@@ -22,8 +61,23 @@ void run(const TransferArgs& a) {
   require_measurable(from, a.old_mesh);
   const Mesh to = load_mesh(a.new_mesh);
   require_measurable(to, a.new_mesh);
-  const std::vector<Field> fields = read_sol(a.old_sol, from);
-  write_sol(a.output, transfer_p1(from, fields, to), to.dim);
+  const SolData in = read_sol_any(a.old_sol, from);
+  if (in.location == SolLocation::kVertices) {
+    if (a.p0)
+      throw InputError(a.old_sol + ": --p0 asks for element fields, the file holds SolAtVertices");
+    write_sol(a.output, transfer_p1(from, in.fields, to), to.dim);
+    return;
+  }
+  const bool planar = from.kind() == MeshKind::kPlanar;
+  if (in.location != (planar ? SolLocation::kTriangles : SolLocation::kTetrahedra))
+    throw InputError(a.old_sol + ": conservative transfer of " + sol_keyword(in.location) +
+                     " needs SolAtTriangles on a planar mesh or SolAtTetrahedra on a volume");
+  P0TransferReport report;
+  const std::vector<Field> out = transfer_p0(from, in.fields, to, &report);
+  SolWriteOptions o;
+  o.location = in.location;
+  write_sol(a.output, out, to.dim, o);
+  if (!a.quiet) print_report(report, a.json);
 }
 
 }  // namespace
@@ -31,16 +85,28 @@ void run(const TransferArgs& a) {
 void register_transfer(CLI::App& app) {
   auto a = std::make_shared<TransferArgs>();
   auto* cmd = app.add_subcommand(
-      "transfer", "Interpolate vertex fields from one mesh to another of the same domain (P1)");
+      "transfer", "Carry fields from one mesh to another of the same domain: vertex fields by P1 "
+                  "interpolation, element fields conservatively");
   cmd->add_option("old_mesh", a->old_mesh, "Mesh the fields live on")->required();
-  cmd->add_option("old_sol", a->old_sol, "Vertex fields (.sol/.solb)")->required();
+  cmd->add_option("old_sol", a->old_sol,
+                  "Fields (.sol/.solb): SolAtVertices (P1), SolAtTriangles or SolAtTetrahedra (P0)")
+      ->required();
   cmd->add_option("new_mesh", a->new_mesh, "Mesh to carry them to")->required();
-  cmd->add_option("-o,--output", a->output, "Output fields (.sol/.solb)");
+  cmd->add_option("-o,--output", a->output, "Output fields (.sol/.solb), same section as the input");
+  cmd->add_flag("--p0", a->p0, "Require element fields (fail on a SolAtVertices file)");
+  cmd->add_flag("--json", a->json, "P0: print the report as one JSON object");
+  cmd->add_flag("-q,--quiet", a->quiet, "P0: print nothing");
   cmd->footer(
-      "Each new vertex is located in the old mesh by walking and takes the linear interpolant; "
-      "vertices outside the old mesh (curved boundaries) take the value at their projection. "
-      "Planar triangle meshes and tetrahedral volumes. Conservative transfer of P0 (element) "
-      "fields is not implemented yet.");
+      "SolAtVertices: each new vertex is located in the old mesh by walking and takes the linear "
+      "interpolant; vertices outside the old mesh (curved boundaries) take the value at their "
+      "projection. Planar triangle meshes and tetrahedral volumes.\n"
+      "SolAtTriangles (planar meshes) and SolAtTetrahedra (volumes): conservative transfer. Each "
+      "new element is intersected with the old elements it overlaps (convex clipping) and takes "
+      "sum(v_old |old ∩ new|) / sum(|old ∩ new|), so the integral sum(v |K|) is conserved to "
+      "round-off when the meshes cover the same domain. When they do not (a curved boundary "
+      "remeshed), the mean is over the covered part of each new element, new elements entirely "
+      "outside take the nearest old value, and the printed report gives the uncovered areas "
+      "(volumes) and the integrals before and after.");
   cmd->callback([a] { run(*a); });
 }
 

@@ -29,7 +29,10 @@ void register_render(CLI::App& app);
 void register_adapt(CLI::App& app);
 /// `riemesh loop`: the adaptation loop on analytic functions, errors and slopes (cmd_loop.cpp).
 void register_loop(CLI::App& app);
-/// `riemesh transfer OLD.mesh OLD.sol NEW.mesh -o NEW.sol`: P1 transfer of vertex fields.
+/// `riemesh transfer OLD.mesh OLD.sol NEW.mesh -o NEW.sol`: P1 transfer of vertex fields,
+/// conservative transfer of element fields.
 void register_transfer(CLI::App& app);
+/// `riemesh unsteady`: the unsteady fixed-point loop on moving fronts (cmd_unsteady.cpp).
+void register_unsteady(CLI::App& app);
 
 }  // namespace riemesh::cli

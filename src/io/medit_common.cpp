@@ -32,6 +32,8 @@ constexpr NamedCode kKeywords[] = {
     {kNormals, "Normals"},
     {kTangentAtVertices, "TangentAtVertices"},
     {kSolAtVertices, "SolAtVertices"},
+    {kSolAtTriangles, "SolAtTriangles"},
+    {kSolAtTetrahedra, "SolAtTetrahedra"},
 };
 
 struct SkippedKeyword {

@@ -52,6 +52,8 @@ enum Code : int {
   kNormals = 60,            // "dr"
   kTangentAtVertices = 61,  // "ii" (vertex, tangent)
   kSolAtVertices = 62,      // count, #types, types, then reals
+  kSolAtTriangles = 64,     // same layout, one value set per triangle
+  kSolAtTetrahedra = 66,    // same layout, one value set per tetrahedron
 };
 
 /// Code of a keyword name (ASCII, case-insensitive) among those Riemesh reads; 0 if other.

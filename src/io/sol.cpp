@@ -59,24 +59,56 @@ SolSection read_types(int file_dim, NextInt next_int, Fail fail) {
   return s;
 }
 
-std::string vertex_mismatch(std::size_t n, std::size_t num_vertices) {
-  return std::to_string(n) + " values for a mesh of " + std::to_string(num_vertices) + " vertices";
+/// What a reader accepts: sections at `location` (or, while `any` holds, the first solution
+/// section of any location, which then fixes it), with counts[location] entries.
+struct Wanted {
+  bool any = false;
+  SolLocation location = SolLocation::kVertices;
+  std::size_t counts[3] = {0, 0, 0};
+};
+
+constexpr const char* kEntityNames[3] = {"vertices", "triangles", "tetrahedra"};
+
+/// The location of a section code, or false for other keywords.
+bool location_of(int code, SolLocation& at) {
+  if (code == kSolAtVertices) at = SolLocation::kVertices;
+  else if (code == medit_detail::kSolAtTriangles) at = SolLocation::kTriangles;
+  else if (code == medit_detail::kSolAtTetrahedra) at = SolLocation::kTetrahedra;
+  else return false;
+  return true;
 }
 
-std::vector<Field> read_ascii(const std::string& path, std::string_view text,
-                              std::size_t num_vertices, int& file_dim) {
+/// True if the section of this code is to be read (and fixes the location of an `any` request).
+bool accept(int code, Wanted& w) {
+  SolLocation at{};
+  if (!location_of(code, at)) return false;
+  if (w.any) {
+    w.any = false;
+    w.location = at;
+  }
+  return at == w.location;
+}
+
+std::string count_mismatch(std::size_t n, const Wanted& w) {
+  const auto i = static_cast<std::size_t>(w.location);
+  return std::to_string(n) + " values for a mesh of " + std::to_string(w.counts[i]) + " " +
+         kEntityNames[i];
+}
+
+std::vector<Field> read_ascii(const std::string& path, std::string_view text, Wanted& w,
+                              int& file_dim) {
   medit_detail::AsciiMeditReader in(path, text);
   std::vector<Field> fields;
   std::string_view kw;
   int code = 0;
   while (in.next_keyword(kw, code)) {
-    if (code != kSolAtVertices) {
+    if (!accept(code, w)) {
       in.skip_section(kw);
       continue;
     }
     file_dim = in.require_dim(kw);
     const std::size_t n = in.count(kw, 1);
-    if (n != num_vertices) in.fail_here(kw, vertex_mismatch(n, num_vertices));
+    if (n != w.counts[static_cast<std::size_t>(w.location)]) in.fail_here(kw, count_mismatch(n, w));
     const SolSection s = read_types(
         file_dim, [&] { return in.integer(kw); },
         [&](const std::string& what) { in.fail_here(kw, what); });
@@ -88,20 +120,20 @@ std::vector<Field> read_ascii(const std::string& path, std::string_view text,
   return fields;
 }
 
-std::vector<Field> read_binary(const std::string& path, std::string_view bytes,
-                               std::size_t num_vertices, int& file_dim) {
+std::vector<Field> read_binary(const std::string& path, std::string_view bytes, Wanted& w,
+                               int& file_dim) {
   medit_detail::MeshbReader in(path, bytes);
   std::vector<Field> fields;
   int code = 0;
   while (in.next_keyword(code)) {
-    if (code != kSolAtVertices) {
+    if (!accept(code, w)) {
       in.end_keyword(false);
       continue;
     }
     file_dim = in.require_dim();
     const std::size_t at = in.offset();
     const std::size_t n = in.count(0);
-    if (n != num_vertices) in.fail_at(at, vertex_mismatch(n, num_vertices));
+    if (n != w.counts[static_cast<std::size_t>(w.location)]) in.fail_at(at, count_mismatch(n, w));
     const SolSection s = read_types(
         file_dim, [&] { return std::int64_t{in.i32()}; },
         [&](const std::string& what) { in.fail_at(in.offset() - 4, what); });
@@ -114,33 +146,20 @@ std::vector<Field> read_binary(const std::string& path, std::string_view bytes,
   return fields;
 }
 
-}  // namespace
-
-std::vector<Field> read_sol(const std::string& path, std::size_t num_vertices, int dim) {
+/// Reads the sections `w` asks for, checks dimensions and names the fields.
+std::vector<Field> read_sections(const std::string& path, std::string_view bytes, Wanted& w,
+                                 int dim) {
   medit_detail::check_sol_name(path);
-  return medit_detail::read_sol_bytes(path, read_file_bytes(path), num_vertices, dim);
-}
-
-std::vector<Field> read_sol(const std::string& path, const Mesh& mesh) {
-  return read_sol(path, mesh.num_vertices(), mesh.dim);
-}
-
-namespace medit_detail {
-
-void check_sol_name(const std::string& path) {
-  if (!ends_with(path, ".solb") && !ends_with(path, ".sol"))
-    throw InputError(path + ": not a Medit solution file name (.sol or .solb expected)");
-}
-
-std::vector<Field> read_sol_bytes(const std::string& path, std::string_view bytes,
-                                  std::size_t num_vertices, int dim) {
-  check_sol_name(path);
-  const bool binary = ends_with(path, ".solb");
+  const bool binary = medit_detail::ends_with(path, ".solb");
+  const bool any = w.any;
   int file_dim = 0;
-  std::vector<Field> fields = binary ? read_binary(path, bytes, num_vertices, file_dim)
-                                     : read_ascii(path, bytes, num_vertices, file_dim);
-  if (fields.empty())
+  std::vector<Field> fields =
+      binary ? read_binary(path, bytes, w, file_dim) : read_ascii(path, bytes, w, file_dim);
+  if (fields.empty()) {
+    if (any)
+      medit_detail::fail(path, "", "no SolAtVertices, SolAtTriangles or SolAtTetrahedra section");
     medit_detail::fail(path, "SolAtVertices", "no solution at vertices in the file");
+  }
   for (const Field& f : fields) {
     // Scalars do not depend on the dimension: a Dimension 3 .sol of a planar mesh is usable.
     if (f.kind != FieldKind::kScalar && file_dim != dim)
@@ -152,6 +171,57 @@ std::vector<Field> read_sol_bytes(const std::string& path, std::string_view byte
   for (std::size_t i = 0; i < fields.size(); ++i)
     fields[i].name = metric ? "metric" : "sol" + std::to_string(i);
   return fields;
+}
+
+}  // namespace
+
+const char* sol_keyword(SolLocation location) {
+  switch (location) {
+    case SolLocation::kVertices:
+      return "SolAtVertices";
+    case SolLocation::kTriangles:
+      return "SolAtTriangles";
+    case SolLocation::kTetrahedra:
+      return "SolAtTetrahedra";
+  }
+  return "SolAtVertices";
+}
+
+std::vector<Field> read_sol(const std::string& path, std::size_t num_vertices, int dim) {
+  medit_detail::check_sol_name(path);
+  return medit_detail::read_sol_bytes(path, read_file_bytes(path), num_vertices, dim);
+}
+
+std::vector<Field> read_sol(const std::string& path, const Mesh& mesh) {
+  return read_sol(path, mesh.num_vertices(), mesh.dim);
+}
+
+SolData read_sol_any(const std::string& path, const Mesh& mesh) {
+  medit_detail::check_sol_name(path);
+  Wanted w;
+  w.any = true;
+  w.counts[0] = mesh.num_vertices();
+  // A volume's Triangles are its boundary faces: SolAtTriangles of a volume counts those.
+  w.counts[1] = mesh.num_triangles();
+  w.counts[2] = mesh.num_tets();
+  SolData out;
+  out.fields = read_sections(path, read_file_bytes(path), w, mesh.dim);
+  out.location = w.location;
+  return out;
+}
+
+namespace medit_detail {
+
+void check_sol_name(const std::string& path) {
+  if (!ends_with(path, ".solb") && !ends_with(path, ".sol"))
+    throw InputError(path + ": not a Medit solution file name (.sol or .solb expected)");
+}
+
+std::vector<Field> read_sol_bytes(const std::string& path, std::string_view bytes,
+                                  std::size_t num_vertices, int dim) {
+  Wanted w;
+  w.counts[0] = num_vertices;
+  return read_sections(path, bytes, w, dim);
 }
 
 }  // namespace medit_detail
@@ -180,6 +250,12 @@ std::size_t checked_vertex_count(const std::vector<Field>& fields, int dim,
   return n;
 }
 
+int section_code(SolLocation location) {
+  return location == SolLocation::kTriangles    ? medit_detail::kSolAtTriangles
+         : location == SolLocation::kTetrahedra ? medit_detail::kSolAtTetrahedra
+                                                : kSolAtVertices;
+}
+
 }  // namespace
 
 void write_sol(const std::string& path, const std::vector<Field>& fields, int dim,
@@ -201,7 +277,7 @@ void write_sol(const std::string& path, const std::vector<Field>& fields, int di
     const int version =
         medit_detail::choose_meshb_version(options.binary_version, estimate, n, path);
     medit_detail::MeshbWriter out(version, dim, estimate);
-    out.keyword(kSolAtVertices, static_cast<std::int64_t>(n));
+    out.keyword(section_code(options.location), static_cast<std::int64_t>(n));
     out.i32(static_cast<std::int32_t>(fields.size()));
     for (const Field& f : fields) out.i32(static_cast<std::int32_t>(f.kind));
     for (std::size_t i = 0; i < n; ++i)
@@ -210,7 +286,8 @@ void write_sol(const std::string& path, const std::vector<Field>& fields, int di
     file.write(out.finish());
   } else {
     io_detail::TextOut out(file);
-    out.text("MeshVersionFormatted 2\n\nDimension ").integer(dim).text("\n\nSolAtVertices\n");
+    out.text("MeshVersionFormatted 2\n\nDimension ").integer(dim).text("\n\n");
+    out.text(sol_keyword(options.location)).text("\n");
     out.integer(static_cast<std::int64_t>(n))
         .text("\n")
         .integer(static_cast<std::int64_t>(fields.size()));

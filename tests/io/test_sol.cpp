@@ -127,6 +127,59 @@ TEST(Sol, Errors) {
   }
 }
 
+TEST(Sol, PerElementSectionsRoundTrip) {
+  // A mesh of 4 vertices, 3 triangles and 2 tetrahedra (counts only matter to the reader).
+  Mesh mesh;
+  mesh.coords.assign(12, 0.0);
+  mesh.triangles.assign(9, 0);
+  mesh.tets.assign(8, 0);
+  test::ScratchDir dir;
+  struct Case {
+    SolLocation at;
+    const char* keyword;
+    std::size_t n;
+  };
+  for (const Case c : {Case{SolLocation::kTriangles, "SolAtTriangles", 3},
+                       Case{SolLocation::kTetrahedra, "SolAtTetrahedra", 2},
+                       Case{SolLocation::kVertices, "SolAtVertices", 4}}) {
+    const std::vector<Field> in = {
+        Field{"a", FieldKind::kScalar, std::vector<double>(c.n, 0.25)},
+        Field{"b", FieldKind::kVector, std::vector<double>(3 * c.n, -1.5)}};
+    for (const char* name : {"p.sol", "p.solb"}) {
+      SolWriteOptions o;
+      o.location = c.at;
+      write_sol(dir.file(name), in, 3, o);
+      const SolData back = read_sol_any(dir.file(name), mesh);
+      EXPECT_EQ(back.location, c.at) << name;
+      ASSERT_EQ(back.fields.size(), 2u);
+      EXPECT_EQ(back.fields[0].values, in[0].values);
+      EXPECT_EQ(back.fields[1].values, in[1].values);
+    }
+    EXPECT_NE(test::read_text(dir.file("p.sol")).find(c.keyword), std::string::npos);
+    EXPECT_EQ(std::string(sol_keyword(c.at)), c.keyword);
+  }
+}
+
+TEST(Sol, PerElementCountsAreChecked) {
+  test::ScratchDir dir;
+  Mesh mesh;
+  mesh.dim = 2;
+  mesh.coords.assign(8, 0.0);
+  mesh.triangles.assign(6, 0);  // 2 triangles
+  test::write_text(dir.file("t.sol"), "Dimension 2\nSolAtTriangles\n3\n1 1\n1\n2\n3\nEnd\n");
+  try {
+    read_sol_any(dir.file("t.sol"), mesh);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("3 values for a mesh of 2 triangles"), std::string::npos)
+        << e.what();
+  }
+  // A per-vertex read of a per-element file says there is no vertex solution.
+  EXPECT_THROW(read_sol(dir.file("t.sol"), mesh), InputError);
+  test::write_text(dir.file("e.sol"), "Dimension 2\nEnd\n");
+  EXPECT_THROW(read_sol_any(dir.file("e.sol"), mesh), InputError);
+}
+
 TEST(Sol, WriteRejectsInconsistentFields) {
   test::ScratchDir dir;
   std::vector<Field> fields = three_fields_2d();
