@@ -23,41 +23,13 @@ using namespace riemesh;
 
 namespace {
 
-Mesh perturbed(int n, int m, unsigned seed) {
-  Mesh mesh = unit_square(n, m);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-0.2, 0.2);
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    double& x = mesh.coords[2 * v];
-    double& y = mesh.coords[2 * v + 1];
-    if (x == 0.0 || x == 1.0 || y == 0.0 || y == 1.0) continue;
-    x += u(rng) / n;
-    y += u(rng) / m;
-  }
-  return mesh;
-}
-
-Mesh perturbed_cube(int n, unsigned seed) {
-  Mesh mesh = unit_cube(n);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-0.1, 0.1);  // keeps the Kuhn tetrahedra valid
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    bool boundary = false;
-    for (int a = 0; a < 3; ++a)
-      boundary |= mesh.coords[3 * v + a] == 0.0 || mesh.coords[3 * v + a] == 1.0;
-    if (!boundary)
-      for (int a = 0; a < 3; ++a) mesh.coords[3 * v + a] += u(rng) / n;
-  }
-  return mesh;
-}
-
 const Mesh& mesh(int which) {
   if (which >= 3) {
-    static const Mesh d = perturbed_cube(55, 4), e = perturbed_cube(50, 5);
+    static const Mesh d = perturbed_unit_cube(55, 0.1, 4), e = perturbed_unit_cube(50, 0.1, 5);
     return which == 3 ? d : e;
   }
-  static const Mesh a = perturbed(700, 700, 1), b = perturbed(690, 720, 2),
-                    c = perturbed(350, 350, 3);
+  static const Mesh a = perturbed_unit_square(700, 700, 0.2, 1), b = perturbed_unit_square(690, 720, 0.2, 2),
+                    c = perturbed_unit_square(350, 350, 0.2, 3);
   return which == 0 ? a : which == 1 ? b : c;
 }
 

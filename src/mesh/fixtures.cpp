@@ -1,6 +1,7 @@
 #include "mesh/fixtures.hpp"
 
 #include <cmath>
+#include <random>
 #include <string>
 
 #include "core/error.hpp"
@@ -178,6 +179,38 @@ Mesh sphere_surface(int subdivisions) {
   m.tri_ref.assign(m.num_triangles(), 1);
   m.tri_tag.assign(m.num_triangles(), kTagNone);
   return m;
+}
+
+}  // namespace riemesh
+
+namespace riemesh {
+
+Mesh perturbed_unit_square(int nx, int ny, double amount, unsigned seed) {
+  Mesh mesh = unit_square(nx, ny);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amount, amount);
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+    double& x = mesh.coords[2 * v];
+    double& y = mesh.coords[2 * v + 1];
+    if (x == 0.0 || x == 1.0 || y == 0.0 || y == 1.0) continue;
+    x += u(rng) / nx;
+    y += u(rng) / ny;
+  }
+  return mesh;
+}
+
+Mesh perturbed_unit_cube(int n, double amount, unsigned seed) {
+  Mesh mesh = unit_cube(n);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amount, amount);
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+    bool boundary = false;
+    for (int a = 0; a < 3; ++a)
+      boundary |= mesh.coords[3 * v + a] == 0.0 || mesh.coords[3 * v + a] == 1.0;
+    if (!boundary)
+      for (int a = 0; a < 3; ++a) mesh.coords[3 * v + a] += u(rng) / n;
+  }
+  return mesh;
 }
 
 }  // namespace riemesh

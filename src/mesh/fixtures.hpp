@@ -18,6 +18,16 @@ Mesh unit_square(int nx, int ny);
 /// vertices kTagRidge. Tet refs are 1.
 Mesh unit_cube(int n);
 
+/// unit_square(nx, ny) with every vertex off the square's boundary moved at random (seeded
+/// std::mt19937, so the same on every machine) by up to `amount` cells per coordinate.
+/// amount <= 0.2 keeps every triangle positive (a vertex and the line through the opposite edge
+/// approach each other by at most 2 · 0.2√2 ≈ 0.57 cell, less than the 0.71 cell between them).
+Mesh perturbed_unit_square(int nx, int ny, double amount, unsigned seed);
+
+/// unit_cube(n) with its interior vertices moved the same way; amount <= 0.1 keeps the Kuhn
+/// tetrahedra positive (2 · 0.1√3 ≈ 0.35 cell, less than the smallest height 1/√2 cell).
+Mesh perturbed_unit_cube(int n, double amount, unsigned seed);
+
 /// Unit icosphere: an icosahedron whose triangles are split into 4, `subdivisions` times, with
 /// new vertices projected onto the sphere. 10·4^s + 2 vertices, 20·4^s triangles, oriented with
 /// outward normals. Triangle refs are 1.

@@ -17,39 +17,6 @@ using namespace riemesh;
 
 namespace {
 
-/// unit_square(n, m) with interior vertices moved at random by up to 0.2 cell (triangles stay
-/// valid: a vertex and the line through the opposite edge move towards each other by at most
-/// 2 · 0.2√2 ≈ 0.57 cell, less than the 0.71 cell between them).
-Mesh perturbed_square(int n, int m, unsigned seed) {
-  Mesh mesh = unit_square(n, m);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-0.2, 0.2);
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    double& x = mesh.coords[2 * v];
-    double& y = mesh.coords[2 * v + 1];
-    if (x == 0.0 || x == 1.0 || y == 0.0 || y == 1.0) continue;
-    x += u(rng) / n;
-    y += u(rng) / m;
-  }
-  return mesh;
-}
-
-/// unit_cube(n) with interior vertices moved at random by up to 0.1 cell per coordinate (the
-/// Kuhn tetrahedra keep their orientation: a vertex and its opposite face's plane move towards
-/// each other by at most 2 · 0.1√3 ≈ 0.35 cell, less than the smallest height 1/√2 cell).
-Mesh perturbed_cube(int n, unsigned seed) {
-  Mesh mesh = unit_cube(n);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-0.1, 0.1);
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    bool boundary = false;
-    for (int a = 0; a < 3; ++a) boundary |= mesh.coords[3 * v + a] == 0.0 || mesh.coords[3 * v + a] == 1.0;
-    if (boundary) continue;
-    for (int a = 0; a < 3; ++a) mesh.coords[3 * v + a] += u(rng) / n;
-  }
-  return mesh;
-}
-
 Field random_p0(const Mesh& m, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 3.0);
@@ -84,7 +51,7 @@ TEST(PolygonClip, HandComputedOverlaps) {
 }
 
 TEST(TransferP0, IdentityKeepsEveryValue) {
-  const Mesh m = perturbed_square(9, 7, 1);
+  const Mesh m = perturbed_unit_square(9, 7, 0.2, 1);
   const Field f = random_p0(m, 2);
   P0TransferReport r;
   const std::vector<Field> out = transfer_p0(m, {f}, m, &r);
@@ -113,8 +80,8 @@ TEST(TransferP0, NestedMeshesAreExact) {
 }
 
 TEST(TransferP0, MassConservedOnUnrelatedMeshes) {
-  const Mesh from = perturbed_square(37, 23, 4);
-  for (const Mesh& to : {perturbed_square(19, 41, 5), perturbed_square(60, 60, 6)}) {
+  const Mesh from = perturbed_unit_square(37, 23, 0.2, 4);
+  for (const Mesh& to : {perturbed_unit_square(19, 41, 0.2, 5), perturbed_unit_square(60, 60, 0.2, 6)}) {
     Field f = random_p0(from, 7);
     Field w{"w", FieldKind::kVector, {}};
     for (std::size_t t = 0; t < from.num_triangles(); ++t) w.values.insert(w.values.end(), {1.0, -2.0});
@@ -134,7 +101,7 @@ TEST(TransferP0, MassConservedOnUnrelatedMeshes) {
 }
 
 TEST(TransferP0, MassConservedOntoAnAdaptedMesh) {
-  const Mesh from = perturbed_square(30, 30, 8);
+  const Mesh from = perturbed_unit_square(30, 30, 0.2, 8);
   // An anisotropic unit mesh of the square by riemesh's own remesher.
   const std::vector<SymMat2> met(from.num_vertices(), SymMat2{{900.0, 300.0, 4000.0}});
   const Mesh to = adapt2d(from, met, {}).mesh;
@@ -193,7 +160,7 @@ TEST(PolyhedronClip, HandComputedOverlaps) {
 }
 
 TEST(TransferP0, TetrahedraIdentityAndMass) {
-  const Mesh a = perturbed_cube(5, 11), b = perturbed_cube(7, 12);
+  const Mesh a = perturbed_unit_cube(5, 0.1, 11), b = perturbed_unit_cube(7, 0.1, 12);
   const Field f = random_p0(a, 13);
   P0TransferReport r;
   const std::vector<Field> same = transfer_p0(a, {f}, a, &r);
