@@ -33,9 +33,8 @@ inline std::uint64_t spread2(std::uint64_t x) {
   return x;
 }
 
-template <int D>
+template <int D, int b = hilbert_bits(D)>
 std::uint64_t hilbert_key_d(const std::uint32_t* x_in) {
-  constexpr int b = hilbert_bits(D);
   std::uint32_t x[D];
   for (int i = 0; i < D; ++i) x[i] = x_in[i];
   // Inverse undo of the excess work (branch-free: for each bit q of x[i], either invert the
@@ -70,14 +69,21 @@ std::uint64_t hilbert_key(const std::uint32_t* x, int dim) {
 
 namespace {
 
-/// Maps points of the bounding cube of a point set to integer grid coordinates.
+/// Bits per axis of the keys renumber_hilbert sorts by: 2^16 cells per side in 2D, 2^10 in 3D
+/// (32-bit keys). Plenty for locality, and the keys cost about half as much as full-precision
+/// ones and sort in two radix passes instead of four.
+constexpr int renumber_bits(int dim) { return dim == 2 ? 16 : 10; }
+
+/// Maps points of the bounding cube of a point set to integer grid coordinates, `bits` per axis
+/// (hilbert_bits(d) for the public keys, renumber_bits(d) for renumbering).
 struct Quantiser {
   int dim = 3;
+  int bits = 21;
   double lo[3] = {0, 0, 0};
   double scale = 0.0;     // cells per unit length
   std::uint32_t top = 0;  // largest grid coordinate
 
-  Quantiser(const std::vector<double>& coords, int d) : dim(d) {
+  Quantiser(const std::vector<double>& coords, int d, int b) : dim(d), bits(b) {
     const std::size_t n = coords.size() / d;
     double hi[3] = {0, 0, 0};
     for (int c = 0; c < d; ++c) {
@@ -96,7 +102,7 @@ struct Quantiser {
       if (!(lo[c] <= hi[c])) lo[c] = hi[c] = 0.0;  // no finite coordinate
       extent = std::max(extent, hi[c] - lo[c]);
     }
-    top = static_cast<std::uint32_t>((std::uint64_t{1} << hilbert_bits(d)) - 1);
+    top = static_cast<std::uint32_t>((std::uint64_t{1} << bits) - 1);
     scale = extent > 0.0 ? static_cast<double>(top) / extent : 0.0;
   }
 
@@ -106,7 +112,8 @@ struct Quantiser {
       const double s = (p[c] - lo[c]) * scale;
       x[c] = s > 0.0 ? (s < top ? static_cast<std::uint32_t>(s) : top) : 0u;  // NaN -> 0
     }
-    return hilbert_key(x, dim);
+    if (bits == hilbert_bits(dim)) return hilbert_key(x, dim);
+    return dim == 2 ? hilbert_key_d<2, renumber_bits(2)>(x) : hilbert_key_d<3, renumber_bits(3)>(x);
   }
 };
 
@@ -180,7 +187,7 @@ void check_dim(int dim) {
 
 std::vector<std::uint64_t> hilbert_keys(const std::vector<double>& coords, int dim) {
   check_dim(dim);
-  const Quantiser q(coords, dim);
+  const Quantiser q(coords, dim, hilbert_bits(dim));
   std::vector<std::uint64_t> keys(coords.size() / dim);
   for (std::size_t v = 0; v < keys.size(); ++v) keys[v] = q.key(&coords[dim * v]);
   return keys;
@@ -217,9 +224,13 @@ Renumbering renumber_hilbert(Mesh& m) {
       if (v < 0 || static_cast<std::size_t>(v) >= nv)
         throw InputError("renumber_hilbert: vertex id " + std::to_string(v) + " out of range");
   Renumbering r;
-  r.vertices = hilbert_order(m.coords, m.dim);
+  const Quantiser q(m.coords, m.dim, renumber_bits(m.dim));
+  {
+    std::vector<std::uint64_t> keys(nv);
+    for (std::size_t v = 0; v < nv; ++v) keys[v] = q.key(&m.coords[m.dim * v]);
+    r.vertices = order_by_key(keys);
+  }
   permute_vertices(m, r.vertices);
-  const Quantiser q(m.coords, m.dim);
   r.tets = sort_entities(m.tets, 4, m, q);
   gather(m.tet_ref, r.tets, 1);
   r.triangles = sort_entities(m.triangles, 3, m, q);
