@@ -13,13 +13,14 @@
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
 #include "metric/element.hpp"
+#include "metric/interpolation.hpp"
 #include "metric/metric.hpp"
 
 namespace riemesh::cli {
 namespace {
 
 struct MeshArgs {
-  std::string input, output, metric;
+  std::string input, output, metric, interp;
   std::vector<std::string> holes;
   bool keep_boundary = false, quiet = false;
   Mesh2dOptions opt;
@@ -61,6 +62,10 @@ void run(MeshArgs& a) {
     if (xy.size() != 2) throw InputError("--hole takes X,Y (two numbers), got '" + h + "'");
     a.opt.holes.insert(a.opt.holes.end(), xy.begin(), xy.end());
   }
+  // Isotropic sizes (from the boundary or --hsiz) vary linearly between the boundary vertices,
+  // as Gmsh extends them; a metric from --metric is interpolated log-Euclidean (anisotropic).
+  if (a.interp.empty()) a.interp = a.metric.empty() ? "iso-linear" : "log";
+  a.opt.adapt.interp = parse_interp_scheme(a.interp);
   mesh_format(a.output);  // an unknown output extension fails before any work
   const Mesh domain = read_mesh(a.input);
   if (domain.dim != 2)
@@ -129,6 +134,9 @@ void register_mesh(CLI::App& app) {
                              "or 0 when the boundary is kept)");
   cmd->add_option("--passes", a->opt.adapt.max_passes, "Largest number of optimisation passes")
       ->capture_default_str();
+  cmd->add_option("--interp", a->interp,
+                  "Metric interpolation inside the domain (see riemesh adapt -h); default iso-linear "
+                  "(sizes linear between boundary vertices, as Gmsh), log with --metric");
   cmd->add_flag("--quiet,-q", a->quiet, "No progress lines");
   cmd->footer(
       "Regions between edges get triangle refs 1, 2, ... (in the order of their first edge); a "

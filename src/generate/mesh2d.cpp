@@ -64,6 +64,8 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   } else {
     metrics = boundary_sizes(start);
   }
+  // Field points on the boundary-only triangulation, before any tag meant for adapt2d.
+  const FieldPointStats field_points = insert_field_points2d(start, metrics, options.adapt.interp);
   bool given_required = false;
   for (const auto tag : start.edge_tag) given_required |= (tag & kTagRequired) != 0;
   for (const auto tag : start.vert_tag) given_required |= (tag & kTagRequired) != 0;
@@ -81,6 +83,7 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   }
   out.metrics = std::move(adapted.metrics);
   out.report = std::move(adapted.report);
+  out.field_points = field_points;
   out.regions = domain.regions;
   out.holes = domain.holes;
   return out;

@@ -1,9 +1,9 @@
 #pragma once
 // Meshing a planar domain from its boundary (issue #8, BOOK.md §4): the constrained Delaunay
-// triangulation of the boundary vertices with exterior and holes removed (domain2d.hpp), then field
-// points created at unit metric spacing and the mesh optimised by the 2D adaptation (adapt2d.hpp),
-// which splits the long edges of the boundary-only triangulation, collapses, swaps and smooths
-// until the edges have unit length in the size field.
+// triangulation of the boundary vertices with exterior and holes removed (domain2d.hpp), field
+// points inserted at unit metric spacing (field_points2d.hpp), then the mesh optimised by the 2D
+// adaptation (adapt2d.hpp: splits, collapses, swaps and smoothing until the edges have unit length
+// in the size field; with the boundary remeshed to the size field unless it is kept).
 //
 // Size field, in order of precedence: a metric per boundary vertex, a uniform size hsiz, or by
 // default the mean length of the boundary edges at each boundary vertex, interpolated inside (the
@@ -12,6 +12,7 @@
 
 #include "core/symmat.hpp"
 #include "generate/domain2d.hpp"
+#include "generate/field_points2d.hpp"
 #include "remesh/adapt2d.hpp"
 
 namespace riemesh {
@@ -35,6 +36,7 @@ struct Mesh2dResult {
   Mesh mesh;                     ///< the triangle mesh; triangle refs = regions 1, 2, ...
   std::vector<SymMat2> metrics;  ///< the metric at each output vertex
   int regions = 0, holes = 0;
+  FieldPointStats field_points;  ///< points added before the optimisation
   Adapt2dReport report;
 };
 
