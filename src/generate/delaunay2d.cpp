@@ -21,6 +21,10 @@ std::uint64_t mix(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
+/// Triangle and slot of a half-edge 3·t + j (unsigned: division by a constant without sign fix).
+inline Id tri_of(Id h) { return static_cast<Id>(static_cast<std::uint32_t>(h) / 3u); }
+inline int slot_of(Id h) { return static_cast<int>(static_cast<std::uint32_t>(h) % 3u); }
+
 /// The edge of a cavity's boundary: vertices a → b (counter-clockwise around the cavity) and the
 /// half-edge of the triangle outside (kNoId on the super-triangle's sides).
 struct BoundaryEdge {
@@ -85,8 +89,8 @@ class Builder {
       if (cross < 0) return t;
       const Id h = t_.nbr[3 * t + cross];
       RIEMESH_CHECK(h != kNoId);  // the super-triangle contains every point
-      t = h / 3;
-      from = h % 3;
+      t = tri_of(h);
+      from = slot_of(h);
     }
   }
 
@@ -98,7 +102,7 @@ class Builder {
   /// The triangles whose circumcircle contains p strictly, connected to t (which contains p), and
   /// their boundary. Marks: 2v+1 = in the cavity, 2v+2 = tested and outside.
   void find_cavity(Id t, const double* p, Id v) {
-    const std::int64_t in = 2 * std::int64_t{v} + 1, out = in + 1;
+    const std::uint32_t in = 2 * static_cast<std::uint32_t>(v) + 1, out = in + 1;
     cavity_.clear();
     boundary_.clear();
     cavity_.push_back(t);
@@ -108,7 +112,7 @@ class Builder {
       for (int e = 0; e < 3; ++e) {
         const Id h = t_.nbr[3 * c + e];
         if (h != kNoId) {
-          const Id n = h / 3;
+          const Id n = tri_of(h);
           if (mark_[n] == in) continue;
           if (mark_[n] != out) {
             if (in_conflict(n, p)) {
@@ -159,7 +163,7 @@ class Builder {
 
   Triangulation2d& t_;
   std::vector<Id> fan_;             // per vertex: the fan triangle starting there (scratch)
-  std::vector<std::int64_t> mark_;  // per triangle: cavity stamps
+  std::vector<std::uint32_t> mark_;  // per triangle: cavity stamps (points < 2^31)
   std::vector<Id> cavity_, new_;
   std::vector<BoundaryEdge> boundary_;
   Id last_ = 0;
