@@ -53,6 +53,14 @@ class Builder {
   /// Inserts vertex v; returns false if it coincides with an existing vertex (then *same is it).
   bool insert(Id v, Id* same) {
     const double* p = point(v);
+    // The cavity is connected, so any triangle in conflict can seed it: the last one created often
+    // is (points come in curve order), and then no walk is needed. A point equal to a vertex is in
+    // conflict with no triangle (empty circles), so it always takes the walk and is caught below.
+    if (in_conflict(last_, p)) {
+      find_cavity(last_, p, v);
+      fill_cavity(v);
+      return true;
+    }
     const Id t = locate(p);
     for (int i = 0; i < 3; ++i) {
       const Id w = t_.tri[3 * t + i];
