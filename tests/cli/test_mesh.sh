@@ -39,6 +39,17 @@ domain "$TMP/sub.mesh" ccw
 "$R" mesh "$TMP/sub.mesh" -o "$TMP/sub-hole.mesh" --hsiz 0.3 --hole 1.5,1.5 -q | grep -q "1 region, 1 hole" &&
   ok "hole-point" || ko "hole-point"
 
+# --metric: sizes per domain vertex (0.1 on the outer square, 0.02 on the inner one); the mesh is
+# finer than with a uniform 0.1 and coarser than with 0.02.
+printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n8\n1 1\n0.1\n0.1\n0.1\n0.1\n0.02\n0.02\n0.02\n0.02\nEnd\n' >"$TMP/sizes.sol"
+tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin)['counts']['triangles'])"; }
+"$R" mesh "$TMP/hole.mesh" -o "$TMP/m-metric.mesh" --metric "$TMP/sizes.sol" -q >/dev/null &&
+  "$R" mesh "$TMP/hole.mesh" -o "$TMP/m-coarse.mesh" --hsiz 0.1 -q >/dev/null &&
+  "$R" mesh "$TMP/hole.mesh" -o "$TMP/m-fine.mesh" --hsiz 0.02 -q >/dev/null &&
+  [ "$(tris "$TMP/m-coarse.mesh")" -lt "$(tris "$TMP/m-metric.mesh")" ] &&
+  [ "$(tris "$TMP/m-metric.mesh")" -lt "$(tris "$TMP/m-fine.mesh")" ] && ok "metric-sizes" || ko "metric-sizes"
+expect_error mesh-metric-and-hsiz mesh "$TMP/hole.mesh" -o "$TMP/o6.mesh" --metric "$TMP/sizes.sol" --hsiz 0.1
+
 # Errors: open loop, crossing edges, hole point outside, bad --hole, no output.
 sed '/^Edges/{n;s/8/7/}' "$TMP/hole.mesh" | sed '$d' | sed '$d' >"$TMP/open.mesh"; echo End >>"$TMP/open.mesh"
 expect_error mesh-open-loop mesh "$TMP/open.mesh" -o "$TMP/o1.mesh"
