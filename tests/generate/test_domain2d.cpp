@@ -246,3 +246,21 @@ TEST(Domain2d, ExtractBoundaryOrientsEdgesWithTheDomainOnTheLeft) {
   m.edges.clear(), m.edge_ref.clear();  // no Edges: the triangles' border
   EXPECT_EQ(extract_boundary2d(m).num_edges(), 4u);
 }
+
+TEST(Domain2d, EdgeGivenBothWaysIsAnInterface) {
+  // Two unit squares side by side, each a counter-clockwise loop: the shared side appears as
+  // (1,0)→(1,1) in the left loop and (1,1)→(1,0) in the right one. Two regions, the shared side
+  // kept once.
+  Mesh m = planar();
+  m.coords = {0, 0, 1, 0, 1, 1, 0, 1, 2, 0, 2, 1};
+  m.edges = {0, 1, 1, 2, 2, 3, 3, 0, 1, 4, 4, 5, 5, 2, 2, 1};
+  m.edge_ref = {1, 2, 1, 1, 1, 1, 1, 2};
+  const Domain2d d = triangulate_domain2d(m, {});
+  EXPECT_EQ(d.regions, 2);
+  EXPECT_EQ(d.holes, 0);
+  const auto a = areas(d.mesh);
+  EXPECT_DOUBLE_EQ(a.at(1), 1.0);
+  EXPECT_DOUBLE_EQ(a.at(2), 1.0);
+  EXPECT_EQ(d.mesh.num_edges(), 7u);
+  expect_conforming_cdt(d.mesh);
+}
