@@ -56,6 +56,7 @@ class Builder {
     // The cavity is connected, so any triangle in conflict can seed it: the last one created often
     // is (points come in curve order), and then no walk is needed. A point equal to a vertex is in
     // conflict with no triangle (empty circles), so it always takes the walk and is caught below.
+    turn_towards(p);
     if (in_conflict(last_, p)) {
       find_cavity(last_, p, v);
       fill_cavity(v);
@@ -99,6 +100,28 @@ class Builder {
       RIEMESH_CHECK(h != kNoId);  // the super-triangle contains every point
       t = tri_of(h);
       from = slot_of(h);
+    }
+  }
+
+  /// Turns last_ around the last vertex inserted (vertex 0 of the fan triangles) to the fan
+  /// triangle whose wedge holds the direction of p: the next point is usually close, so that
+  /// triangle is often in conflict with it or contains it. At most a few steps each way.
+  void turn_towards(const double* p) {
+    const Id* v = &t_.tri[3 * last_];
+    const double* c = point(v[0]);
+    for (int k = 0; k < 4; ++k) {
+      const Id* w = &t_.tri[3 * last_];
+      if (orient2d(c, point(w[2]), p) >= 0) {  // p beyond edge (v, b): turn counter-clockwise
+        const Id h = t_.nbr[3 * last_ + 1];
+        if (h == kNoId) return;
+        last_ = tri_of(h);
+      } else if (orient2d(c, point(w[1]), p) < 0) {  // before edge (v, a): turn clockwise
+        const Id h = t_.nbr[3 * last_ + 2];
+        if (h == kNoId) return;
+        last_ = tri_of(h);
+      } else {
+        return;
+      }
     }
   }
 
