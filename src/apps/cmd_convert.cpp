@@ -5,6 +5,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/mesh_args.hpp"
+#include "generate/domain2d.hpp"
 #include "io/mesh_file.hpp"
 #include "mesh/hilbert.hpp"
 
@@ -15,11 +16,13 @@ struct ConvertArgs {
   std::string in, out;
   bool binary = false;
   bool hilbert = false;
+  bool boundary = false;
 };
 
 void run_convert(const ConvertArgs& a) {
   mesh_format(a.out);  // an unknown output extension fails before any work
   Mesh mesh = load_mesh(a.in);
+  if (a.boundary) mesh = extract_boundary2d(mesh);
   if (a.hilbert) renumber_hilbert(mesh);
   MeshWriteOptions o;
   o.gmsh_binary = a.binary;
@@ -40,6 +43,9 @@ void register_convert(CLI::App& app) {
   cmd->add_flag("--binary", a->binary, "Write .msh files in binary");
   cmd->add_flag("--hilbert", a->hilbert,
                 "Renumber vertices and elements along a Hilbert curve (memory locality)");
+  cmd->add_flag("--boundary", a->boundary,
+                "Keep only the boundary of a planar mesh: its Edges (or its triangles' border), "
+                "turned so that the domain is on their left (input for `riemesh mesh`)");
   cmd->callback([a] { run_convert(*a); });
 }
 

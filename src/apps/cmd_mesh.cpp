@@ -1,0 +1,147 @@
+// `riemesh mesh DOMAIN.mesh -o OUT.mesh`: mesh a planar domain from its boundary edges.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/commands.hpp"
+#include "apps/mesh_args.hpp"
+#include "apps/parse.hpp"
+#include "core/error.hpp"
+#include "generate/mesh2d.hpp"
+#include "io/mesh_file.hpp"
+#include "io/sol.hpp"
+#include "metric/element.hpp"
+#include "metric/interpolation.hpp"
+#include "metric/metric.hpp"
+
+namespace riemesh::cli {
+namespace {
+
+struct MeshArgs {
+  std::string input, output, metric, interp;
+  std::vector<std::string> holes;
+  bool keep_boundary = false, quiet = false;
+  Mesh2dOptions opt;
+  const CLI::Option* hausd = nullptr;
+  const CLI::Option* hgrad = nullptr;
+};
+
+/// One metric per vertex of the domain file, from a .sol of tensors or of sizes.
+std::vector<SymMat2> read_metric(const std::string& path, const Mesh& mesh) {
+  for (const Field& f : read_sol(path, mesh)) {
+    std::vector<SymMat2> out(mesh.num_vertices());
+    if (f.kind == FieldKind::kSymTensor) {
+      for (std::size_t v = 0; v < out.size(); ++v) {
+        out[v] = SymMat2{{f.values[3 * v], f.values[3 * v + 1], f.values[3 * v + 2]}};
+        require_metric(out[v], path + ": vertex " + std::to_string(v + 1));
+      }
+      return out;
+    }
+    if (f.kind == FieldKind::kScalar) {
+      for (std::size_t v = 0; v < out.size(); ++v) {
+        const double h = f.values[v];
+        if (!(h > 0.0) || !std::isfinite(h))
+          throw InputError(path + ": size at vertex " + std::to_string(v + 1) +
+                           " is not a positive number");
+        out[v] = isotropic_metric<2>(h);
+      }
+      return out;
+    }
+  }
+  throw InputError(path + ": no scalar or symmetric tensor field in SolAtVertices");
+}
+
+void run(MeshArgs& a) {
+  if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
+  if (a.opt.hsiz > 0.0 && !a.metric.empty())
+    throw InputError("--hsiz and --metric contradict: give one of them");
+  for (const std::string& h : a.holes) {
+    const std::vector<double> xy = parse_numbers(h, "--hole");
+    if (xy.size() != 2) throw InputError("--hole takes X,Y (two numbers), got '" + h + "'");
+    a.opt.holes.insert(a.opt.holes.end(), xy.begin(), xy.end());
+  }
+  // Isotropic sizes (from the boundary or --hsiz) vary linearly between the boundary vertices,
+  // as Gmsh extends them; a metric from --metric is interpolated log-Euclidean (anisotropic).
+  if (a.interp.empty()) a.interp = a.metric.empty() ? "iso-linear" : "log";
+  a.opt.adapt.interp = parse_interp_scheme(a.interp);
+  mesh_format(a.output);  // an unknown output extension fails before any work
+  const Mesh domain = read_mesh(a.input);
+  if (domain.dim != 2)
+    throw InputError(a.input + ": only planar domains (Dimension 2) can be meshed so far");
+  if (!a.metric.empty()) a.opt.metric = read_metric(a.metric, domain);
+  // The boundary is kept as given unless a size field or hausd says how to remesh it.
+  a.opt.keep_boundary =
+      a.keep_boundary || (a.opt.hsiz == 0.0 && a.metric.empty() && a.hausd->count() == 0);
+  // Gradation would shrink the sizes at the kept boundary below its edge lengths (towards the
+  // finer parts of the boundary), and triangles on those edges could then only be slivers: with
+  // a kept boundary the sizes are interpolated, not graded, unless --hgrad says otherwise.
+  if (a.opt.keep_boundary && a.hgrad->count() == 0) a.opt.adapt.hgrad = 0.0;
+  Mesh2dResult r;
+  try {
+    r = mesh_domain2d(domain, a.opt, [&](const PassStats& s) {
+      if (!a.quiet)
+        std::fprintf(stderr, "pass %2d: %zu vertices %zu triangles, q_min %.3f (%.2f s)\n", s.pass,
+                     s.vertices, s.triangles, s.q_min, s.seconds);
+    });
+  } catch (const InputError& e) {
+    std::string msg = a.input;
+    msg += ": ";
+    msg += e.what();
+    throw InputError(msg);
+  }
+  if (!a.quiet) {
+    for (const std::string& note : r.report.notes)
+      std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
+    if (!r.report.converged)
+      std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
+                   r.report.passes.size(), r.report.stall_reason.c_str());
+  }
+  write_mesh(r.mesh, a.output);
+  const double q_min = r.report.passes.empty() ? 0.0 : r.report.passes.back().q_min;
+  std::printf("%s: %zu vertices, %zu triangles, %d region%s, %d hole%s, q_min %.3f\n",
+              a.output.c_str(), r.mesh.num_vertices(), r.mesh.num_triangles(), r.regions,
+              r.regions == 1 ? "" : "s", r.holes, r.holes == 1 ? "" : "s", q_min);
+}
+
+}  // namespace
+
+void register_mesh(CLI::App& app) {
+  auto a = std::make_shared<MeshArgs>();
+  auto* cmd = app.add_subcommand(
+      "mesh", "Mesh a planar domain from its boundary Edges (Delaunay, then optimisation)");
+  cmd->add_option("input", a->input,
+                  "Domain: a 2D .mesh/.meshb/.msh whose Edges (with refs) bound it, each with "
+                  "the domain on its left (outer loops counter-clockwise, holes clockwise)")
+      ->required();
+  cmd->add_option("-o,--output", a->output, "Output mesh (.mesh, .meshb, .msh, .vtu)");
+  cmd->add_option("--hsiz", a->opt.hsiz, "Uniform size (default: from the boundary edges)");
+  cmd->add_option("--metric", a->metric,
+                  "Metric at the domain's vertices (.sol: tensors m11 m12 m22, or sizes)");
+  a->hausd = cmd->add_option("--hausd", a->opt.adapt.hausd,
+                             "Largest distance of boundary chords to the boundary curve "
+                             "(remeshes the boundary)");
+  cmd->add_option("--hole", a->holes,
+                  "A point X,Y inside a hole (repeatable); when given, hole points alone "
+                  "decide which regions are holes");
+  cmd->add_flag("--keep-boundary", a->keep_boundary,
+                "Keep the boundary vertices and edges as given even with --hsiz/--metric/--hausd");
+  cmd->add_option("--hmin", a->opt.adapt.hmin, "Smallest size")->capture_default_str();
+  cmd->add_option("--hmax", a->opt.adapt.hmax, "Largest size");
+  a->hgrad = cmd->add_option("--hgrad", a->opt.adapt.hgrad,
+                             "Gradation: growth ratio between neighbours (0: off; default 1.3, "
+                             "or 0 when the boundary is kept)");
+  cmd->add_option("--passes", a->opt.adapt.max_passes, "Largest number of optimisation passes")
+      ->capture_default_str();
+  cmd->add_option("--interp", a->interp,
+                  "Metric interpolation inside the domain (see riemesh adapt -h); default iso-linear "
+                  "(sizes linear between boundary vertices, as Gmsh), log with --metric");
+  cmd->add_flag("--quiet,-q", a->quiet, "No progress lines");
+  cmd->footer(
+      "Regions between edges get triangle refs 1, 2, ... (in the order of their first edge); a "
+      "region whose edges all leave it on their right is a hole unless --hole points are given.");
+  cmd->callback([a] { run(*a); });
+}
+
+}  // namespace riemesh::cli

@@ -1,0 +1,254 @@
+#include "generate/field_points2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "core/error.hpp"
+#include "core/predicates.hpp"
+#include "generate/cdt2d.hpp"
+#include "mesh/hilbert.hpp"
+
+namespace riemesh {
+
+namespace {
+
+double metric_length(const SymMat2& m, double dx, double dy) {
+  return std::sqrt(m.c[0] * dx * dx + 2.0 * m.c[1] * dx * dy + m.c[2] * dy * dy);
+}
+
+struct Candidate {
+  double x, y;
+  SymMat2 metric;
+  Id hint;  // a triangle near the point
+};
+
+/// A triangulated domain with half-edge adjacency (kNoId outside), locked half-edges (boundary and
+/// interface edges) and constrained Bowyer–Watson insertion.
+class Refiner {
+ public:
+  Refiner(const Mesh& m, std::vector<SymMat2>& metrics) : metrics_(metrics) {
+    xy_ = m.coords;
+    tri_ = m.triangles;
+    tref_ = m.tri_ref;
+    tref_.resize(m.num_triangles(), 0);
+    nbr_.assign(tri_.size(), kNoId);
+    locked_.assign(tri_.size(), 0);
+    std::unordered_set<std::uint64_t> edges;
+    for (std::size_t e = 0; e < m.num_edges(); ++e) edges.insert(edge_key(m.edges[2 * e], m.edges[2 * e + 1]));
+    std::unordered_map<std::uint64_t, Id> open;
+    for (std::size_t h = 0; h < tri_.size(); ++h) {
+      const std::uint64_t k = edge_key(from(static_cast<Id>(h)), to(static_cast<Id>(h)));
+      locked_[h] = edges.count(k) ? 1 : 0;
+      const auto [it, added] = open.emplace(k, static_cast<Id>(h));
+      if (!added) {
+        nbr_[h] = it->second;
+        nbr_[it->second] = static_cast<Id>(h);
+      }
+    }
+    mark_.assign(num_triangles(), 0);
+    fan_.assign(xy_.size() / 2, kNoId);
+  }
+
+  std::size_t num_triangles() const { return tri_.size() / 3; }
+  Id from(Id h) const { return tri_[3 * (h / 3) + (h % 3 + 1) % 3]; }
+  Id to(Id h) const { return tri_[3 * (h / 3) + (h % 3 + 2) % 3]; }
+  const double* pt(Id v) const { return &xy_[2 * static_cast<std::size_t>(v)]; }
+
+  /// Candidates at unit metric spacing on the edges longer than √2 (each edge once).
+  std::vector<Candidate> candidates(InterpScheme scheme) const {
+    std::vector<Candidate> out;
+    for (std::size_t h = 0; h < tri_.size(); ++h) {
+      const Id g = nbr_[h];
+      if (locked_[h] || (g != kNoId && g < static_cast<Id>(h))) continue;
+      const Id a = from(static_cast<Id>(h)), b = to(static_cast<Id>(h));
+      const double dx = pt(b)[0] - pt(a)[0], dy = pt(b)[1] - pt(a)[1];
+      const double len = 0.5 * (metric_length(metrics_[a], dx, dy) + metric_length(metrics_[b], dx, dy));
+      if (!(len > std::sqrt(2.0))) continue;
+      const int n = std::max(2, static_cast<int>(std::lround(len)));
+      for (int k = 1; k < n; ++k) {
+        const double t = static_cast<double>(k) / n;
+        out.push_back({pt(a)[0] + t * dx, pt(a)[1] + t * dy,
+                       interpolate<2>(scheme, metrics_[a], metrics_[b], t), static_cast<Id>(h / 3)});
+      }
+    }
+    return out;
+  }
+
+  /// Inserts the candidate unless it is too close to the mesh; returns whether it was inserted.
+  bool insert(const Candidate& c) {
+    const double p[2] = {c.x, c.y};
+    const Id t = locate(p, last_ != kNoId ? last_ : c.hint);
+    if (t == kNoId) return false;
+    if (!find_cavity(t, p)) return false;
+    for (const Border& b : border_) {
+      if (!(orient2d(pt(b.a), pt(b.b), p) > 0)) return false;  // not star-shaped: keep out
+      if (metric_length(c.metric, pt(b.a)[0] - p[0], pt(b.a)[1] - p[1]) < std::sqrt(0.5)) return false;
+      if (b.locked && distance_to_edge(c.metric, p, b.a, b.b) < 0.5) return false;
+    }
+    const Id v = static_cast<Id>(xy_.size() / 2);
+    xy_.insert(xy_.end(), {p[0], p[1]});
+    metrics_.push_back(c.metric);
+    fan_.push_back(kNoId);
+    fill_cavity(v);
+    return true;
+  }
+
+  void write(Mesh& m) const {
+    m.coords = xy_;
+    m.vert_ref.resize(m.num_vertices(), 0);
+    m.vert_tag.resize(m.num_vertices(), kTagNone);
+    m.triangles = tri_;
+    m.tri_ref = tref_;
+    m.tri_tag.assign(num_triangles(), kTagNone);
+  }
+
+ private:
+  struct Border {
+    Id a, b, outside;
+    std::uint8_t locked;
+  };
+
+  /// Visibility walk; on leaving the domain or after too many steps (the triangulation is only
+  /// constrained Delaunay), a scan of all triangles. kNoId if p is in no triangle.
+  Id locate(const double* p, Id t) {
+    const std::size_t limit = 64 + 4 * static_cast<std::size_t>(std::sqrt(double(num_triangles())));
+    for (std::size_t step = 0; step < limit; ++step) {
+      int cross = -1;
+      for (int k = 0; k < 3 && cross < 0; ++k) {
+        const int e = (k + static_cast<int>(step % 3)) % 3;
+        if (orient2d(pt(tri_[3 * t + (e + 1) % 3]), pt(tri_[3 * t + (e + 2) % 3]), p) < 0) cross = e;
+      }
+      if (cross < 0) return t;
+      const Id g = nbr_[3 * t + cross];
+      if (g == kNoId) break;
+      t = g / 3;
+    }
+    for (std::size_t k = 0; k < num_triangles(); ++k) {
+      const Id* v = &tri_[3 * k];
+      if (orient2d(pt(v[0]), pt(v[1]), p) >= 0 && orient2d(pt(v[1]), pt(v[2]), p) >= 0 &&
+          orient2d(pt(v[2]), pt(v[0]), p) >= 0)
+        return static_cast<Id>(k);
+    }
+    return kNoId;
+  }
+
+  /// The triangles reachable from t without crossing a locked edge whose circumcircle contains
+  /// p strictly. False if p is on a vertex or a locked edge of t.
+  bool find_cavity(Id t, const double* p) {
+    ++stamp_;
+    const std::int64_t in = 2 * stamp_, out = in + 1;
+    cavity_.clear();
+    border_.clear();
+    for (int s = 0; s < 3; ++s) {
+      const Id h = 3 * t + s;
+      if (locked_[h] && orient2d(pt(from(h)), pt(to(h)), p) == 0) return false;
+    }
+    if (!(incircle(pt(tri_[3 * t]), pt(tri_[3 * t + 1]), pt(tri_[3 * t + 2]), p) > 0)) return false;
+    cavity_.push_back(t);
+    mark_[t] = in;
+    for (std::size_t k = 0; k < cavity_.size(); ++k) {
+      const Id c = cavity_[k];
+      for (int s = 0; s < 3; ++s) {
+        const Id h = 3 * c + s, g = nbr_[h];
+        if (g != kNoId && !locked_[h]) {
+          const Id n = g / 3;
+          if (mark_[n] == in) continue;
+          if (mark_[n] != out) {
+            const Id* v = &tri_[3 * n];
+            if (incircle(pt(v[0]), pt(v[1]), pt(v[2]), p) > 0) {
+              mark_[n] = in;
+              cavity_.push_back(n);
+              continue;
+            }
+            mark_[n] = out;
+          }
+        }
+        border_.push_back({from(h), to(h), g, locked_[h]});
+      }
+    }
+    return true;
+  }
+
+  void fill_cavity(Id v) {
+    const std::int32_t ref = tref_[cavity_[0]];
+    created_.clear();
+    for (std::size_t k = 0; k < border_.size(); ++k) {
+      Id t;
+      if (k < cavity_.size()) {
+        t = cavity_[k];
+      } else {
+        t = static_cast<Id>(num_triangles());
+        tri_.resize(tri_.size() + 3);
+        nbr_.resize(nbr_.size() + 3);
+        locked_.resize(locked_.size() + 3);
+        tref_.push_back(ref);
+        mark_.push_back(0);
+      }
+      const Border& b = border_[k];
+      tri_[3 * t] = v, tri_[3 * t + 1] = b.a, tri_[3 * t + 2] = b.b;
+      nbr_[3 * t] = b.outside;
+      if (b.outside != kNoId) nbr_[b.outside] = 3 * t;
+      locked_[3 * t] = b.locked, locked_[3 * t + 1] = locked_[3 * t + 2] = 0;
+      tref_[t] = ref;
+      fan_[b.a] = t;
+      created_.push_back(t);
+    }
+    for (const Id t : created_) {
+      const Id s = fan_[tri_[3 * t + 2]];
+      nbr_[3 * t + 1] = 3 * s + 2;
+      nbr_[3 * s + 2] = 3 * t + 1;
+    }
+    last_ = created_.back();
+  }
+
+  /// The distance in metric m from p to the segment ab (closest point in the metric).
+  double distance_to_edge(const SymMat2& m, const double* p, Id a, Id b) const {
+    const double ux = pt(b)[0] - pt(a)[0], uy = pt(b)[1] - pt(a)[1];
+    const double wx = p[0] - pt(a)[0], wy = p[1] - pt(a)[1];
+    const double uu = m.c[0] * ux * ux + 2 * m.c[1] * ux * uy + m.c[2] * uy * uy;
+    const double uw = m.c[0] * ux * wx + m.c[1] * (ux * wy + uy * wx) + m.c[2] * uy * wy;
+    const double s = uu > 0 ? std::clamp(uw / uu, 0.0, 1.0) : 0.0;
+    return metric_length(m, wx - s * ux, wy - s * uy);
+  }
+
+  std::vector<SymMat2>& metrics_;
+  std::vector<double> xy_;
+  std::vector<Id> tri_, nbr_;
+  std::vector<std::uint8_t> locked_;
+  std::vector<std::int32_t> tref_;
+  std::vector<std::int64_t> mark_;
+  std::vector<Id> fan_, cavity_, created_;
+  std::vector<Border> border_;
+  std::int64_t stamp_ = 0;
+  Id last_ = kNoId;
+};
+
+}  // namespace
+
+FieldPointStats insert_field_points2d(Mesh& mesh, std::vector<SymMat2>& metrics,
+                                      InterpScheme scheme, int max_rounds) {
+  RIEMESH_CHECK(mesh.dim == 2 && metrics.size() == mesh.num_vertices());
+  Refiner r(mesh, metrics);
+  FieldPointStats stats;
+  for (int round = 0; round < max_rounds; ++round) {
+    std::vector<Candidate> cands = r.candidates(scheme);
+    if (cands.empty()) break;
+    std::vector<double> xy;
+    xy.reserve(2 * cands.size());
+    for (const Candidate& c : cands) xy.insert(xy.end(), {c.x, c.y});
+    std::size_t added = 0;
+    for (const Id k : hilbert_order(xy, 2)) {
+      if (r.insert(cands[k])) ++added;
+      else ++stats.rejected;
+    }
+    stats.inserted += added;
+    stats.rounds = round + 1;
+    if (added == 0) break;
+  }
+  r.write(mesh);
+  return stats;
+}
+
+}  // namespace riemesh

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# riemesh mesh: the boundaries of the shared 2D meshes (extracted by convert --boundary) mesh into
+# valid meshes; sizes, holes and subdomains from the options; bad domains give one-line errors
+# naming the defect and leave no output.
+set -u
+. "$(dirname "$0")/cli_lib.sh"
+
+"$R" mesh -h | grep -q -- "--hole" && ok "help" || ko "help"
+
+for name in aile lac-leman naca0012; do
+  "$R" convert --boundary "$SHARED/data/2d/$name.mesh" "$TMP/$name-domain.mesh" >/dev/null &&
+    [ "$(grep -c -A1 '^Triangles' "$TMP/$name-domain.mesh")" = 0 ] && ok "boundary-$name" || ko "boundary-$name"
+  "$R" mesh "$TMP/$name-domain.mesh" -o "$TMP/$name.mesh" -q >"$TMP/out" &&
+    "$R" check "$TMP/$name.mesh" >/dev/null && ok "mesh-$name ($(cat "$TMP/out"))" || ko "mesh-$name"
+done
+
+# A square with a square inside: clockwise = hole, counter-clockwise = subdomain (2 refs), and
+# a hole point overrides the orientation.
+square() {  # square X0 SIZE ORDER(ccw|cw) FIRST_VERTEX(1-based)
+  local x=$1 s=$2 o=$3 f=$4
+  local y=$(echo "$x + $s" | bc -l)
+  if [ "$o" = ccw ]; then printf '%s %s 0\n%s %s 0\n%s %s 0\n%s %s 0\n' $x $x $y $x $y $y $x $y >>"$TMP/v"
+  else printf '%s %s 0\n%s %s 0\n%s %s 0\n%s %s 0\n' $x $x $x $y $y $y $y $x >>"$TMP/v"; fi
+  printf '%d %d 1\n%d %d 1\n%d %d 1\n%d %d 1\n' $f $((f+1)) $((f+1)) $((f+2)) $((f+2)) $((f+3)) $((f+3)) $f >>"$TMP/e"
+}
+domain() {  # domain OUT INNER_ORDER
+  : >"$TMP/v"; : >"$TMP/e"
+  square 0 4 ccw 1; square 1 1 "$2" 5
+  { printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n8\n'; cat "$TMP/v"
+    printf 'Edges\n8\n'; cat "$TMP/e"; printf 'End\n'; } >"$1"
+}
+refs_of() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(len(json.load(sys.stdin)['refs']['triangles']))"; }
+domain "$TMP/hole.mesh" cw
+domain "$TMP/sub.mesh" ccw
+"$R" mesh "$TMP/hole.mesh" -o "$TMP/hole-out.mesh" --hsiz 0.3 -q | grep -q "1 region, 1 hole" &&
+  ok "clockwise-inner-loop-is-a-hole" || ko "clockwise-inner-loop-is-a-hole"
+"$R" mesh "$TMP/sub.mesh" -o "$TMP/sub-out.mesh" --hsiz 0.3 -q | grep -q "2 regions, 0 holes" &&
+  [ "$(refs_of "$TMP/sub-out.mesh")" = 2 ] && ok "ccw-inner-loop-is-a-subdomain" || ko "ccw-inner-loop-is-a-subdomain"
+"$R" mesh "$TMP/sub.mesh" -o "$TMP/sub-hole.mesh" --hsiz 0.3 --hole 1.5,1.5 -q | grep -q "1 region, 1 hole" &&
+  ok "hole-point" || ko "hole-point"
+
+# --metric: sizes per domain vertex (0.1 on the outer square, 0.02 on the inner one); the mesh is
+# finer than with a uniform 0.1 and coarser than with 0.02.
+printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n8\n1 1\n0.1\n0.1\n0.1\n0.1\n0.02\n0.02\n0.02\n0.02\nEnd\n' >"$TMP/sizes.sol"
+tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin)['counts']['triangles'])"; }
+"$R" mesh "$TMP/hole.mesh" -o "$TMP/m-metric.mesh" --metric "$TMP/sizes.sol" -q >/dev/null &&
+  "$R" mesh "$TMP/hole.mesh" -o "$TMP/m-coarse.mesh" --hsiz 0.1 -q >/dev/null &&
+  "$R" mesh "$TMP/hole.mesh" -o "$TMP/m-fine.mesh" --hsiz 0.02 -q >/dev/null &&
+  [ "$(tris "$TMP/m-coarse.mesh")" -lt "$(tris "$TMP/m-metric.mesh")" ] &&
+  [ "$(tris "$TMP/m-metric.mesh")" -lt "$(tris "$TMP/m-fine.mesh")" ] && ok "metric-sizes" || ko "metric-sizes"
+expect_error mesh-metric-and-hsiz mesh "$TMP/hole.mesh" -o "$TMP/o6.mesh" --metric "$TMP/sizes.sol" --hsiz 0.1
+
+# Errors: open loop, crossing edges, hole point outside, bad --hole, no output.
+sed '/^Edges/{n;s/8/7/}' "$TMP/hole.mesh" | sed '$d' | sed '$d' >"$TMP/open.mesh"; echo End >>"$TMP/open.mesh"
+expect_error mesh-open-loop mesh "$TMP/open.mesh" -o "$TMP/o1.mesh"
+expect_no_file mesh-open-loop-no-file "$TMP/o1.mesh"
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 1 0\n1 0 0\n0 1 0\nEdges\n4\n1 2 1\n2 3 1\n3 4 1\n4 1 1\nEnd\n' >"$TMP/bowtie.mesh"
+expect_error mesh-crossing mesh "$TMP/bowtie.mesh" -o "$TMP/o2.mesh"
+"$R" mesh "$TMP/bowtie.mesh" -o "$TMP/o2.mesh" 2>&1 | grep -q "boundary edge 3 (1, 0)-(0, 1) and boundary edge 1 (0, 0)-(1, 1) cross near (0.5, 0.5)" &&
+  ok "mesh-crossing-names-edges" || ko "mesh-crossing-names-edges"
+expect_no_file mesh-crossing-no-file "$TMP/o2.mesh"
+expect_error mesh-hole-outside mesh "$TMP/hole.mesh" -o "$TMP/o3.mesh" --hole 9,9
+expect_error mesh-bad-hole mesh "$TMP/hole.mesh" -o "$TMP/o4.mesh" --hole 1
+expect_error mesh-no-output mesh "$TMP/hole.mesh"
+expect_error mesh-missing mesh "$TMP/none.mesh" -o "$TMP/o5.mesh"
+exit $fail

@@ -1,0 +1,93 @@
+// Field points (insert_field_points2d), by properties: on the boundary-only triangulation of a
+// domain, uniform size h, the points added keep the triangulation valid (counter-clockwise, same
+// area, same boundary edges), are never closer than h/√2 to each other, and leave no edge much
+// longer than √2 h; their number is close to area / (√3/2 h²) (vertices of an equilateral
+// lattice). An anisotropic metric gives points spaced by its sizes in each direction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/predicates.hpp"
+#include "generate/domain2d.hpp"
+#include "generate/field_points2d.hpp"
+#include "metric/metric.hpp"
+
+using namespace riemesh;
+
+namespace {
+
+Mesh square_domain(int n) {  // [0, 1]² with n edges per side, triangulated without interior point
+  Mesh b;
+  b.dim = 2;
+  for (int side = 0; side < 4; ++side)
+    for (int k = 0; k < n; ++k) {
+      const double t = double(k) / n;
+      const double xy[4][2] = {{t, 0}, {1, t}, {1 - t, 1}, {0, 1 - t}};
+      b.coords.insert(b.coords.end(), {xy[side][0], xy[side][1]});
+    }
+  for (Id i = 0; i < 4 * n; ++i) {
+    b.edges.insert(b.edges.end(), {i, (i + 1) % (4 * n)});
+    b.edge_ref.push_back(1);
+  }
+  return triangulate_domain2d(b, {}).mesh;
+}
+
+double area(const Mesh& m) {
+  double a = 0;
+  for (std::size_t t = 0; t < m.num_triangles(); ++t) {
+    const double o = orient2d(&m.coords[2 * m.triangles[3 * t]], &m.coords[2 * m.triangles[3 * t + 1]],
+                              &m.coords[2 * m.triangles[3 * t + 2]]);
+    EXPECT_GT(o, 0);
+    a += 0.5 * o;
+  }
+  return a;
+}
+
+}  // namespace
+
+TEST(FieldPoints2d, UniformSizeSpacing) {
+  const double h = 0.05;
+  Mesh m = square_domain(20);  // boundary edges of length h
+  const std::size_t nv0 = m.num_vertices(), ne0 = m.num_edges();
+  std::vector<SymMat2> metrics(nv0, isotropic_metric<2>(h));
+  const FieldPointStats s = insert_field_points2d(m, metrics, InterpScheme::kLogEuclidean);
+  EXPECT_EQ(metrics.size(), m.num_vertices());
+  EXPECT_EQ(m.num_edges(), ne0);
+  EXPECT_NEAR(area(m), 1.0, 1e-12);
+  EXPECT_EQ(s.inserted, m.num_vertices() - nv0);
+  // Interior vertices of an equilateral lattice of side h: 1 / (√3/2 h²) ≈ 462 in all.
+  EXPECT_GT(m.num_vertices(), 300u);
+  EXPECT_LT(m.num_vertices(), 600u);
+  double closest = 1e9, longest = 0;
+  for (std::size_t v = nv0; v < m.num_vertices(); ++v)
+    for (std::size_t w = 0; w < v; ++w)
+      closest = std::min(closest, std::hypot(m.coords[2 * v] - m.coords[2 * w],
+                                             m.coords[2 * v + 1] - m.coords[2 * w + 1]));
+  for (std::size_t t = 0; t < m.num_triangles(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const Id a = m.triangles[3 * t + i], b = m.triangles[3 * t + (i + 1) % 3];
+      longest = std::max(longest, std::hypot(m.coords[2 * a] - m.coords[2 * b],
+                                             m.coords[2 * a + 1] - m.coords[2 * b + 1]));
+    }
+  EXPECT_GE(closest, h / std::sqrt(2.0) * (1 - 1e-12));
+  EXPECT_LT(longest, 2.0 * h);
+}
+
+TEST(FieldPoints2d, AnisotropicMetricStretchesTheSpacing) {
+  // Sizes 0.2 along x, 0.02 along y: far more points across y than along x.
+  Mesh m = square_domain(5);
+  std::vector<SymMat2> metrics(m.num_vertices(), SymMat2{{1 / 0.04, 0, 1 / 0.0004}});
+  insert_field_points2d(m, metrics, InterpScheme::kLogEuclidean);
+  EXPECT_NEAR(area(m), 1.0, 1e-12);
+  // Lattice estimate: 1 / (√3/2 · 0.2 · 0.02) ≈ 289 vertices.
+  EXPECT_GT(m.num_vertices(), 180u);
+  EXPECT_LT(m.num_vertices(), 420u);
+}
+
+TEST(FieldPoints2d, NothingToAddWhenEdgesAreShort) {
+  Mesh m = square_domain(4);
+  std::vector<SymMat2> metrics(m.num_vertices(), isotropic_metric<2>(2.0));
+  const FieldPointStats s = insert_field_points2d(m, metrics, InterpScheme::kLogEuclidean);
+  EXPECT_EQ(s.inserted, 0u);
+  EXPECT_EQ(m.num_vertices(), 16u);
+}
