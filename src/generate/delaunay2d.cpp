@@ -1,0 +1,252 @@
+#include "generate/delaunay2d.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/predicates.hpp"
+#include "mesh/hilbert.hpp"
+
+namespace riemesh {
+
+namespace {
+
+/// splitmix64: a fixed, well-mixed hash of the point index (BRIO's coin flips, deterministic).
+std::uint64_t mix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+/// The edge of a cavity's boundary: vertices a → b (counter-clockwise around the cavity) and the
+/// half-edge of the triangle outside (kNoId on the super-triangle's sides).
+struct BoundaryEdge {
+  Id a, b, outside;
+};
+
+/// Bowyer–Watson insertion into a Triangulation2d, with scratch arrays owned by the builder.
+class Builder {
+ public:
+  explicit Builder(Triangulation2d& t) : t_(t) {
+    const std::size_t nv = t.xy.size() / 2;
+    fan_.assign(nv, kNoId);
+    t_.tri.reserve(3 * (2 * nv + 1));
+    t_.nbr.reserve(3 * (2 * nv + 1));
+    mark_.reserve(2 * nv + 1);
+  }
+
+  /// The super-triangle as the first triangle.
+  void start(Id s0, Id s1, Id s2) {
+    t_.tri.assign({s0, s1, s2});
+    t_.nbr.assign({kNoId, kNoId, kNoId});
+    mark_.assign(1, 0);
+    last_ = 0;
+  }
+
+  /// Inserts vertex v; returns false if it coincides with an existing vertex (then *same is it).
+  bool insert(Id v, Id* same) {
+    const double* p = point(v);
+    const Id t = locate(p);
+    for (int i = 0; i < 3; ++i) {
+      const Id w = t_.tri[3 * t + i];
+      const double* q = point(w);
+      if (q[0] == p[0] && q[1] == p[1]) {
+        *same = w;
+        return false;
+      }
+    }
+    find_cavity(t, p, v);
+    fill_cavity(v);
+    return true;
+  }
+
+ private:
+  const double* point(Id v) const { return &t_.xy[2 * static_cast<std::size_t>(v)]; }
+
+  /// Visibility walk from the last triangle created: cross any edge that has p strictly on its
+  /// outer side (never straight back). Terminates in a Delaunay triangulation (Edelsbrunner).
+  Id locate(const double* p) {
+    Id t = last_;
+    int from = -1;  // edge slot we entered t through
+    for (;;) {
+      int cross = -1;
+      for (int k = 0; k < 3; ++k) {
+        const int e = (k + static_cast<int>(steps_++ % 3)) % 3;  // rotate the first edge tried
+        if (e == from) continue;
+        const Id a = t_.tri[3 * t + (e + 1) % 3], b = t_.tri[3 * t + (e + 2) % 3];
+        if (orient2d(point(a), point(b), p) < 0) {
+          cross = e;
+          break;
+        }
+      }
+      if (cross < 0) return t;
+      const Id h = t_.nbr[3 * t + cross];
+      RIEMESH_CHECK(h != kNoId);  // the super-triangle contains every point
+      t = h / 3;
+      from = h % 3;
+    }
+  }
+
+  bool in_conflict(Id t, const double* p) const {
+    const Id* v = &t_.tri[3 * t];
+    return incircle(point(v[0]), point(v[1]), point(v[2]), p) > 0;
+  }
+
+  /// The triangles whose circumcircle contains p strictly, connected to t (which contains p), and
+  /// their boundary. Marks: 2v+1 = in the cavity, 2v+2 = tested and outside.
+  void find_cavity(Id t, const double* p, Id v) {
+    const std::int64_t in = 2 * std::int64_t{v} + 1, out = in + 1;
+    cavity_.clear();
+    boundary_.clear();
+    cavity_.push_back(t);
+    mark_[t] = in;
+    for (std::size_t k = 0; k < cavity_.size(); ++k) {
+      const Id c = cavity_[k];
+      for (int e = 0; e < 3; ++e) {
+        const Id h = t_.nbr[3 * c + e];
+        if (h != kNoId) {
+          const Id n = h / 3;
+          if (mark_[n] == in) continue;
+          if (mark_[n] != out) {
+            if (in_conflict(n, p)) {
+              mark_[n] = in;
+              cavity_.push_back(n);
+              continue;
+            }
+            mark_[n] = out;
+          }
+        }
+        boundary_.push_back({t_.tri[3 * c + (e + 1) % 3], t_.tri[3 * c + (e + 2) % 3], h});
+      }
+    }
+  }
+
+  /// Replaces the cavity by the fan (v, a, b) over its boundary edges a → b, reusing the cavity's
+  /// triangle ids first. The fan triangle starting at a is remembered in fan_[a] to link the fan.
+  void fill_cavity(Id v) {
+    const std::size_t nb = boundary_.size();
+    for (std::size_t k = 0; k < nb; ++k) {
+      Id t;
+      if (k < cavity_.size()) {
+        t = cavity_[k];
+      } else {
+        t = static_cast<Id>(t_.tri.size() / 3);
+        t_.tri.resize(t_.tri.size() + 3);
+        t_.nbr.resize(t_.nbr.size() + 3);
+        mark_.push_back(0);
+      }
+      const BoundaryEdge& be = boundary_[k];
+      Id* tv = &t_.tri[3 * t];
+      tv[0] = v, tv[1] = be.a, tv[2] = be.b;
+      t_.nbr[3 * t] = be.outside;
+      if (be.outside != kNoId) t_.nbr[be.outside] = 3 * t;
+      fan_[be.a] = t;
+      new_.push_back(t);
+    }
+    // (v, a, b): across (b, v) is the fan triangle starting at b, across its edge (v, b), which is
+    // opposite its third vertex.
+    for (const Id t : new_) {
+      const Id s = fan_[t_.tri[3 * t + 2]];
+      t_.nbr[3 * t + 1] = 3 * s + 2;
+      t_.nbr[3 * s + 2] = 3 * t + 1;
+    }
+    last_ = new_.back();
+    new_.clear();
+  }
+
+  Triangulation2d& t_;
+  std::vector<Id> fan_;             // per vertex: the fan triangle starting there (scratch)
+  std::vector<std::int64_t> mark_;  // per triangle: cavity stamps
+  std::vector<Id> cavity_, new_;
+  std::vector<BoundaryEdge> boundary_;
+  Id last_ = 0;
+  std::uint64_t steps_ = 0;
+};
+
+/// Appends the three vertices of a triangle that strictly contains the bounding box of the points
+/// with a wide margin (so that it hardly changes the triangulation of the points near the hull).
+void add_super_triangle(Triangulation2d& t) {
+  double lo[2] = {0, 0}, hi[2] = {0, 0};
+  for (std::size_t v = 0; v < t.num_points; ++v)
+    for (int c = 0; c < 2; ++c) {
+      const double x = t.xy[2 * v + c];
+      lo[c] = v == 0 ? x : std::min(lo[c], x);
+      hi[c] = v == 0 ? x : std::max(hi[c], x);
+    }
+  const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
+  double size = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  if (!(size > 0)) size = std::max(1.0, std::max(std::fabs(cx), std::fabs(cy)));
+  // Box ⊂ [c − size/2, c + size/2]²; the triangle's sides pass at least 12 sizes away from it.
+  const double s = 20.0 * size;
+  t.xy.insert(t.xy.end(), {cx - s, cy - 0.5 * s, cx + s, cy - 0.5 * s, cx, cy + s});
+}
+
+}  // namespace
+
+std::vector<Id> brio_order(std::span<const double> xy) {
+  const std::size_t n = xy.size() / 2;
+  const std::vector<Id> along = hilbert_order(std::vector<double>(xy.begin(), xy.end()), 2);
+  // Round of a point: the last round holds about half the points, the one before a quarter, ...
+  // down to rounds of ~1000 points (smaller first rounds would only add cache misses).
+  int rounds = 1;
+  while ((std::size_t{1000} << rounds) < n && rounds < 30) ++rounds;
+  std::vector<std::uint8_t> round(n);
+  std::vector<std::size_t> count(rounds + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int z = std::countr_zero(mix(i) | (std::uint64_t{1} << 40));
+    round[i] = static_cast<std::uint8_t>(rounds - 1 - std::min(z, rounds - 1));
+    ++count[round[i] + 1];
+  }
+  for (int r = 0; r < rounds; ++r) count[r + 1] += count[r];
+  std::vector<Id> order(n);
+  for (const Id v : along) order[count[round[v]]++] = v;  // stable: Hilbert order in each round
+  return order;
+}
+
+Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
+  Triangulation2d t;
+  t.num_points = xy.size() / 2;
+  for (std::size_t i = 0; i < 2 * t.num_points; ++i)
+    if (!std::isfinite(xy[i])) {
+      std::string msg = "delaunay2d: point ";
+      msg += std::to_string(i / 2);
+      msg += " has a non-finite coordinate";
+      throw InputError(msg);
+    }
+  t.xy.assign(xy.begin(), xy.begin() + 2 * t.num_points);
+  add_super_triangle(t);
+  const Id n = static_cast<Id>(t.num_points);
+  t.representative.resize(t.num_points);
+  Builder builder(t);
+  builder.start(n, n + 1, n + 2);
+
+  std::vector<Id> sequence;
+  if (order == InsertionOrder::kBrio) {
+    sequence = brio_order(xy);
+  } else if (order == InsertionOrder::kHilbert) {
+    sequence = hilbert_order(std::vector<double>(xy.begin(), xy.end()), 2);
+  } else {
+    sequence.resize(t.num_points);
+    for (Id v = 0; v < n; ++v) sequence[v] = v;
+  }
+  for (const Id v : sequence) {
+    Id same = v;
+    builder.insert(v, &same);
+    t.representative[v] = same;
+  }
+  return t;
+}
+
+std::vector<Id> delaunay_triangles(const Triangulation2d& t) {
+  std::vector<Id> out;
+  for (std::size_t k = 0; k < t.num_triangles(); ++k) {
+    const Id* v = &t.tri[3 * k];
+    if (!t.is_super(v[0]) && !t.is_super(v[1]) && !t.is_super(v[2])) out.insert(out.end(), v, v + 3);
+  }
+  return out;
+}
+
+}  // namespace riemesh

@@ -1,0 +1,58 @@
+#pragma once
+// Delaunay triangulation of points in the plane (BOOK.md §4, Delaunay kernel): Bowyer–Watson
+// insertion inside a super-triangle. For each point: a visibility walk from the last triangle
+// created finds the triangle containing it; the cavity is the connected set of triangles whose
+// circumcircle contains the point strictly (exact incircle, core/predicates.hpp); it is replaced by
+// the fan joining the point to the cavity's boundary. Points are inserted in BRIO order (biased
+// randomised rounds, each along the Hilbert curve: Amenta, Choi, Rote 2003) so that walks are short
+// and the expected cost stays linear-ish whatever the input order.
+//
+// With exact predicates the result is a Delaunay triangulation of the points plus the three
+// super-triangle vertices; cocircular points are triangulated in one of the valid ways
+// (deterministically). Triangles touching the super-triangle are kept (boundary recovery works in
+// the whole super-triangle); delaunay_triangles() drops them. Away from the convex hull the
+// triangles are those of the Delaunay triangulation of the points alone; near the hull a few hull
+// edges may be missing (the super-triangle is finite).
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace riemesh {
+
+enum class InsertionOrder {
+  kBrio,     ///< biased randomised rounds, Hilbert-sorted in each (default)
+  kHilbert,  ///< one pass along the Hilbert curve
+  kAsGiven,  ///< the input order (for inputs already sorted)
+};
+
+/// A triangulation of points in the plane covering a super-triangle.
+struct Triangulation2d {
+  /// 2 coordinates per vertex: the input points (same ids), then the super-triangle's 3 vertices.
+  std::vector<double> xy;
+  std::size_t num_points = 0;  ///< input points; super-triangle vertices are num_points + 0..2
+  std::vector<Id> tri;         ///< 3 vertices per triangle, counter-clockwise
+  /// 3 per triangle: across the edge opposite vertex i of t, the half-edge 3·t' + j of the
+  /// neighbour t' (its edge opposite its vertex j); kNoId on the super-triangle's sides.
+  std::vector<Id> nbr;
+  /// For each input point, the vertex that represents it: itself, or an earlier input point at
+  /// exactly the same place (duplicates are not inserted).
+  std::vector<Id> representative;
+
+  std::size_t num_triangles() const { return tri.size() / 3; }
+  bool is_super(Id v) const { return v >= static_cast<Id>(num_points); }
+};
+
+/// The Delaunay triangulation of the points xy (2 doubles each, finite). Deterministic.
+/// Throws InputError for a non-finite coordinate (naming the point).
+Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order = InsertionOrder::kBrio);
+
+/// The insertion order used by delaunay2d for kBrio: order[k] = the point inserted k-th.
+std::vector<Id> brio_order(std::span<const double> xy);
+
+/// The triangles not touching the super-triangle (3 vertex ids each, counter-clockwise).
+std::vector<Id> delaunay_triangles(const Triangulation2d& t);
+
+}  // namespace riemesh

@@ -1,0 +1,176 @@
+// The 2D Delaunay kernel, tested by properties: a valid triangulation of the super-triangle
+// (counter-clockwise triangles, symmetric adjacency, 2n + 1 triangles for n distinct points) that
+// is Delaunay — no vertex strictly inside the circumcircle of a neighbouring triangle (locally
+// Delaunay everywhere ⇒ Delaunay, Delaunay's lemma), and for small sets no point strictly inside
+// any circumcircle at all (brute force). All checks use the exact predicates. Random, grid
+// (everything cocircular), clustered and duplicated points.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <algorithm>
+#include <array>
+#include <set>
+
+#include "core/error.hpp"
+#include "core/predicates.hpp"
+#include "generate/delaunay2d.hpp"
+
+using namespace riemesh;
+
+namespace {
+
+const double* pt(const Triangulation2d& t, Id v) { return &t.xy[2 * static_cast<std::size_t>(v)]; }
+
+/// Structural checks, then the local Delaunay property over every interior edge.
+void expect_delaunay(const Triangulation2d& t, std::size_t distinct) {
+  const std::size_t nt = t.num_triangles();
+  ASSERT_EQ(nt, 2 * distinct + 1);  // Euler: a triangulated triangle with n inner points
+  ASSERT_EQ(t.nbr.size(), 3 * nt);
+  std::size_t hull = 0;
+  for (std::size_t k = 0; k < nt; ++k) {
+    const Id* v = &t.tri[3 * k];
+    ASSERT_GT(orient2d(pt(t, v[0]), pt(t, v[1]), pt(t, v[2])), 0) << "triangle " << k;
+    for (int e = 0; e < 3; ++e) {
+      const Id h = t.nbr[3 * k + e];
+      if (h == kNoId) {
+        ++hull;
+        continue;
+      }
+      ASSERT_EQ(t.nbr[h], static_cast<Id>(3 * k + e));  // symmetric
+      const Id* w = &t.tri[3 * (h / 3)];
+      const int j = h % 3;
+      // The shared edge is (v[e+1], v[e+2]) here and (w[j+2], w[j+1]) there.
+      ASSERT_EQ(v[(e + 1) % 3], w[(j + 2) % 3]);
+      ASSERT_EQ(v[(e + 2) % 3], w[(j + 1) % 3]);
+      EXPECT_LE(incircle(pt(t, v[0]), pt(t, v[1]), pt(t, v[2]), pt(t, w[j])), 0)
+          << "vertex " << w[j] << " inside the circumcircle of triangle " << k;
+    }
+  }
+  EXPECT_EQ(hull, 3u);  // only the super-triangle's sides
+}
+
+/// No input point strictly inside the circumcircle of any triangle (quadratic: small inputs).
+void expect_empty_circles(const Triangulation2d& t) {
+  for (std::size_t k = 0; k < t.num_triangles(); ++k) {
+    const Id* v = &t.tri[3 * k];
+    for (std::size_t p = 0; p < t.num_points; ++p)
+      ASSERT_LE(incircle(pt(t, v[0]), pt(t, v[1]), pt(t, v[2]), pt(t, static_cast<Id>(p))), 0)
+          << "point " << p << " in triangle " << k << "'s circle";
+  }
+}
+
+std::vector<double> random_points(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> xy(2 * n);
+  for (double& x : xy) x = u(rng);
+  return xy;
+}
+
+}  // namespace
+
+TEST(Delaunay2d, RandomPointsAllOrders) {
+  const std::vector<double> xy = random_points(3000, 1);
+  for (InsertionOrder o : {InsertionOrder::kBrio, InsertionOrder::kHilbert, InsertionOrder::kAsGiven}) {
+    const Triangulation2d t = delaunay2d(xy, o);
+    expect_delaunay(t, 3000);
+    expect_empty_circles(t);
+  }
+}
+
+TEST(Delaunay2d, LargeRandomSet) {
+  const Triangulation2d t = delaunay2d(random_points(200000, 2));
+  expect_delaunay(t, 200000);
+}
+
+TEST(Delaunay2d, GridIsFullyCocircular) {
+  // Every unit square of the grid has four cocircular corners: the exact predicates must keep
+  // the walk and the cavities consistent. Also a grid rotated by 45° and shifted (inexact).
+  std::vector<double> grid, rotated;
+  const int n = 60;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      grid.insert(grid.end(), {double(i), double(j)});
+      rotated.insert(rotated.end(), {0.1 + (i - j) * std::sqrt(0.5), 1e3 + (i + j) * std::sqrt(0.5)});
+    }
+  for (const auto* pts : {&grid, &rotated}) {
+    for (InsertionOrder o : {InsertionOrder::kBrio, InsertionOrder::kAsGiven}) {
+      const Triangulation2d t = delaunay2d(*pts, o);
+      expect_delaunay(t, n * n);
+      expect_empty_circles(t);
+      EXPECT_EQ(delaunay_triangles(t).size() / 3, std::size_t(2 * (n - 1) * (n - 1)));
+    }
+  }
+}
+
+TEST(Delaunay2d, ClusteredPointsAndTinyScale) {
+  // Gaussian clusters of very different spreads, and the whole set scaled down to 1e-200.
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<double> xy;
+  for (int c = 0; c < 10; ++c) {
+    const double cx = 10.0 * g(rng), cy = 10.0 * g(rng), s = std::pow(10.0, -1 - c);
+    for (int k = 0; k < 300; ++k) xy.insert(xy.end(), {cx + s * g(rng), cy + s * g(rng)});
+  }
+  expect_delaunay(delaunay2d(xy), 3000);
+  for (double& x : xy) x *= 1e-200;
+  expect_delaunay(delaunay2d(xy), 3000);
+}
+
+TEST(Delaunay2d, PointsOnACircleAndALine) {
+  std::vector<double> xy;
+  for (int k = 0; k < 500; ++k) {
+    const double th = 2 * M_PI * k / 500;
+    xy.insert(xy.end(), {std::cos(th), std::sin(th)});
+  }
+  for (int k = 0; k < 500; ++k) xy.insert(xy.end(), {-0.5 + k / 500.0, 0.25});
+  const Triangulation2d t = delaunay2d(xy);
+  expect_delaunay(t, 1000);
+  expect_empty_circles(t);
+}
+
+TEST(Delaunay2d, DuplicatesAreMergedNotInserted) {
+  std::vector<double> xy = random_points(500, 4);
+  const std::vector<double> copy(xy.begin(), xy.begin() + 200);
+  xy.insert(xy.end(), copy.begin(), copy.end());  // points 500..599 repeat points 0..99
+  const Triangulation2d t = delaunay2d(xy);
+  expect_delaunay(t, 500);
+  for (Id v = 0; v < 600; ++v) {
+    const Id r = t.representative[v];
+    EXPECT_EQ(t.xy[2 * r], xy[2 * v]);
+    EXPECT_EQ(t.xy[2 * r + 1], xy[2 * v + 1]);
+    if (v >= 100 && v < 500) {
+      EXPECT_EQ(r, v);
+    }
+  }
+  std::set<Id> reps;
+  for (Id v = 0; v < 600; ++v) reps.insert(t.representative[v]);
+  EXPECT_EQ(reps.size(), 500u);
+}
+
+TEST(Delaunay2d, DeterministicAndOrderIndependentMesh) {
+  // On points in general position the Delaunay triangulation is unique: every order gives the
+  // same set of inner triangles.
+  const std::vector<double> xy = random_points(2000, 5);
+  auto as_set = [](const Triangulation2d& t) {
+    std::set<std::array<Id, 3>> s;
+    const std::vector<Id> tri = delaunay_triangles(t);
+    for (std::size_t k = 0; k < tri.size(); k += 3) {
+      std::array<Id, 3> a{tri[k], tri[k + 1], tri[k + 2]};
+      std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
+      s.insert(a);
+    }
+    return s;
+  };
+  const auto s1 = as_set(delaunay2d(xy, InsertionOrder::kBrio));
+  EXPECT_EQ(s1, as_set(delaunay2d(xy, InsertionOrder::kAsGiven)));
+  EXPECT_EQ(delaunay2d(xy).tri, delaunay2d(xy).tri);
+  EXPECT_GT(s1.size(), 3900u);  // 2n − 2 − hull for the full triangulation, minus a few hull ones
+}
+
+TEST(Delaunay2d, RejectsNonFiniteCoordinates) {
+  std::vector<double> xy = random_points(10, 6);
+  xy[7] = std::nan("");
+  EXPECT_THROW(delaunay2d(xy), InputError);
+}
