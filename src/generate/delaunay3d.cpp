@@ -67,23 +67,26 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
   order.erase(order.begin());
   order.insert(order.begin(), v, v + 4);
   if (orient3d_sign(p(v[0]), p(v[1]), p(v[2]), p(v[3])) < 0) std::swap(v[0], v[1]);
+  // The static filter's box: all points given now (later ones grow it when inserted).
+  for (std::size_t i = 0; i < coords->size(); i += 3) filter_.extend(coords->data() + i);
+  filter_.update();
 
   // One finite tet and a ghost on each face: the finite tet with the face's apex replaced by
   // the vertex at infinity and two finite vertices swapped (the ghost lies on the other side).
-  verts_.assign(v, v + 4);
+  tets_.assign(5, Tet{});
+  std::copy(v, v + 4, tets_[0].v);
   for (int i = 0; i < 4; ++i) {
-    Id g[4] = {v[0], v[1], v[2], v[3]};
+    Id* g = tets_[1 + i].v;
+    std::copy(v, v + 4, g);
     g[i] = kInfinite;
     const int j = i == 0 ? 1 : 0, l = i == 3 ? 2 : 3;
     std::swap(g[j], g[l]);
-    verts_.insert(verts_.end(), g, g + 4);
   }
   // Faces are matched by vertex set (20 faces: a quadratic search is fine).
-  nbrs_.assign(20, 0);
   mark_.assign(5, 0);
   const auto face_has = [&](std::uint32_t t, int f, Id w) {
     for (int i = 0; i < 4; ++i)
-      if (i != f && verts_[4 * t + i] == w) return true;
+      if (i != f && tets_[t].v[i] == w) return true;
     return false;
   };
   for (std::uint32_t t = 0; t < 5; ++t)
@@ -92,10 +95,16 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
         for (int g = 0; u != t && g < 4; ++g) {
           bool match = true;
           for (int i = 0; i < 4; ++i)
-            if (i != g && !face_has(t, f, verts_[4 * u + i])) match = false;
-          if (match) nbrs_[4 * t + f] = 4 * u + g;
+            if (i != g && !face_has(t, f, tets_[u].v[i])) match = false;
+          if (match) tets_[t].n[f] = 4 * u + g;
         }
   last_ = 0;
+}
+
+void Delaunay3d::reserve(std::size_t num_points) {
+  tets_.reserve(7 * num_points);
+  mark_.reserve(7 * num_points);
+  local_.resize(std::max(local_.size(), num_points + 1), {0, 0});
 }
 
 std::uint32_t Delaunay3d::new_tet() {
@@ -106,8 +115,7 @@ std::uint32_t Delaunay3d::new_tet() {
   }
   const auto t = static_cast<std::uint32_t>(mark_.size());
   RIEMESH_CHECK(t < (1u << 30));  // 4 * t + face must fit the 32-bit neighbour codes
-  verts_.resize(verts_.size() + 4);
-  nbrs_.resize(nbrs_.size() + 4);
+  tets_.emplace_back();
   mark_.push_back(0);
   return t;
 }
@@ -118,13 +126,13 @@ std::uint32_t Delaunay3d::new_tet() {
 std::uint32_t Delaunay3d::locate(const double* p) {
   std::uint32_t t = last_;
   if (is_ghost(t)) {
-    const Id* v = &verts_[4 * t];
+    const Id* v = tets_[t].v;
     const int inf = v[0] == kInfinite ? 0 : v[1] == kInfinite ? 1 : v[2] == kInfinite ? 2 : 3;
-    t = nbrs_[4 * t + inf] >> 2;
+    t = tets_[t].n[inf] >> 2;
   }
   std::uint32_t prev = ~0u;
   for (;;) {
-    const Id* v = &verts_[4 * t];
+    const Id* v = tets_[t].v;
     const double* q[4] = {xyz(v[0]), xyz(v[1]), xyz(v[2]), xyz(v[3])};
     rng_ ^= rng_ << 13;
     rng_ ^= rng_ >> 17;
@@ -133,11 +141,11 @@ std::uint32_t Delaunay3d::locate(const double* p) {
     std::uint32_t next = ~0u;
     for (unsigned r = 0; r < 4; ++r) {
       const unsigned i = (start + r) & 3;
-      const std::uint32_t n = nbrs_[4 * t + i] >> 2;
+      const std::uint32_t n = tets_[t].n[i] >> 2;
       if (n == prev) continue;
       const double* save = q[i];
       q[i] = p;
-      const int s = orient3d_sign(q[0], q[1], q[2], q[3]);
+      const int s = orient3d_sign(filter_, q[0], q[1], q[2], q[3]);
       q[i] = save;
       if (s < 0) {
         next = n;
@@ -157,19 +165,19 @@ std::uint32_t Delaunay3d::locate(const double* p) {
 /// (i.e. strictly inside the face's circumcircle), so the cavity stays star-shaped from p.
 bool Delaunay3d::in_conflict(std::uint32_t t, const double* p) {
   ++stats_.insphere_tests;
-  const Id* v = &verts_[4 * t];
+  const Id* v = tets_[t].v;
   if ((v[0] | v[1] | v[2] | v[3]) >= 0)
-    return insphere_sign(xyz(v[0]), xyz(v[1]), xyz(v[2]), xyz(v[3]), p) > 0;
+    return insphere_sign(filter_, xyz(v[0]), xyz(v[1]), xyz(v[2]), xyz(v[3]), p) > 0;
   const int inf = v[0] == kInfinite ? 0 : v[1] == kInfinite ? 1 : v[2] == kInfinite ? 2 : 3;
   const double* q[4];
   for (int i = 0; i < 4; ++i) q[i] = i == inf ? p : xyz(v[i]);
-  const int s = orient3d_sign(q[0], q[1], q[2], q[3]);
+  const int s = orient3d_sign(filter_, q[0], q[1], q[2], q[3]);
   if (s != 0) return s > 0;
-  const std::uint32_t n = nbrs_[4 * t + inf] >> 2;
+  const std::uint32_t n = tets_[t].n[inf] >> 2;
   if (mark_[n] == epoch_) return true;
   if (mark_[n] == epoch_ + 1) return false;
-  const Id* w = &verts_[4 * n];
-  return insphere_sign(xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0;
+  const Id* w = tets_[n].v;
+  return insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0;
 }
 
 /// The cavity: tets in conflict with p reachable from `start` (a depth-first search on an
@@ -186,7 +194,7 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
     stack_.pop_back();
     cavity_.push_back(t);
     for (int i = 0; i < 4; ++i) {
-      const std::uint32_t code = nbrs_[4 * t + i];
+      const std::uint32_t code = tets_[t].n[i];
       const std::uint32_t n = code >> 2;
       if (mark_[n] == epoch_) continue;
       if (mark_[n] != epoch_ + 1) {
@@ -198,7 +206,7 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
         mark_[n] = epoch_ + 1;
       }
       BoundaryFace f;
-      for (int j = 0; j < 4; ++j) f.v[j] = verts_[4 * t + j];
+      for (int j = 0; j < 4; ++j) f.v[j] = tets_[t].v[j];
       f.v[i] = v;
       f.outer = code;
       f.face = i;
@@ -208,70 +216,64 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
   stats_.cavity_tets += cavity_.size();
 }
 
-/// Replaces the cavity by one tet per boundary face joined to the new point. A new tet's faces
-/// through the point are matched by their edge on the cavity boundary (each such edge bounds
-/// exactly two boundary faces) in an open-addressing table stamped with the epoch.
+/// Replaces the cavity by one tet per boundary face joined to the new point. The cavity
+/// boundary is a triangulated sphere seen from the point; its faces, oriented by kFace, traverse
+/// each edge once in each direction. Its vertices get local numbers 0..m-1 (m <= nb/2 + 2 by
+/// Euler's formula), each new tet writes its faces through the point into a small m x m table at
+/// the directed edge they contain, and reads its neighbours at the reversed edges.
 void Delaunay3d::fill_cavity() {
+  // Face i of a positive tet, ordered so that vertex i is on its positive side.
+  static constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
   const std::size_t nb = boundary_.size();
-  std::size_t size = edge_keys_.size();
-  if (size < 4 * nb) {
-    size = 64;
-    while (size < 4 * nb) size *= 2;
-    edge_keys_.assign(size, 0);
-    edge_faces_.assign(size, 0);
-    edge_stamp_.assign(size, 0);
+  const std::uint32_t m = static_cast<std::uint32_t>(nb / 2 + 2);
+  if (edge_table_.size() < static_cast<std::size_t>(m) * m) edge_table_.resize(m * m);
+  std::uint32_t count = 0;
+  const auto local = [&](Id v) {
+    const auto u = static_cast<std::size_t>(v + 1);  // the vertex at infinity is -1
+    if (u >= local_.size()) local_.resize(std::max(2 * local_.size(), u + 1), {0, 0});
+    if (local_[u].stamp != epoch_) {
+      RIEMESH_CHECK(count < m);  // the cavity is a ball: its boundary is a sphere
+      local_[u] = {epoch_, count++};
+    }
+    return local_[u].id;
+  };
+  std::uint32_t* table = edge_table_.data();
+  for (std::size_t k = 0; k < nb; ++k) {
+    BoundaryFace& f = boundary_[k];
+    const std::uint32_t t = k < cavity_.size() ? cavity_[k] : new_tet();
+    std::copy(f.v, f.v + 4, tets_[t].v);
+    tets_[t].n[f.face] = f.outer;
+    nbr(f.outer) = 4 * t + static_cast<std::uint32_t>(f.face);
+    const int* s = kFace[f.face];
+    for (int e = 0; e < 3; ++e) f.local[e] = local(f.v[s[e]]);
+    // Directed edge s[e] -> s[e+1] lies on the face opposite s[e+2].
+    for (int e = 0; e < 3; ++e)
+      table[f.local[e] * m + f.local[(e + 1) % 3]] = 4 * t + static_cast<std::uint32_t>(s[(e + 2) % 3]);
+    f.tet = t;
   }
-  const std::size_t mask = size - 1;
-  int shift = 64;
-  for (std::size_t s = size; s > 1; s >>= 1) --shift;
-  std::uint32_t last = 0;
   for (std::size_t k = 0; k < nb; ++k) {
     const BoundaryFace& f = boundary_[k];
-    const std::uint32_t t = k < cavity_.size() ? cavity_[k] : new_tet();
-    std::copy(f.v, f.v + 4, &verts_[4 * t]);
-    nbrs_[4 * t + f.face] = f.outer;
-    nbrs_[f.outer] = 4 * t + static_cast<std::uint32_t>(f.face);
-    for (int j = 0; j < 4; ++j) {
-      if (j == f.face) continue;
-      // The edge of face j on the cavity boundary: the two vertices other than j and the apex.
-      std::uint32_t a = ~0u, b = ~0u;
-      for (int i = 0; i < 4; ++i) {
-        if (i == j || i == f.face) continue;
-        (a == ~0u ? a : b) = static_cast<std::uint32_t>(f.v[i]);
-      }
-      const std::uint64_t key = a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
-      std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift);
-      const std::uint32_t code = 4 * t + static_cast<std::uint32_t>(j);
-      for (;; slot = (slot + 1) & mask) {
-        if (edge_stamp_[slot] != epoch_) {
-          edge_stamp_[slot] = epoch_;
-          edge_keys_[slot] = key;
-          edge_faces_[slot] = code;
-          break;
-        }
-        if (edge_keys_[slot] == key) {
-          const std::uint32_t other = edge_faces_[slot];
-          nbrs_[code] = other;
-          nbrs_[other] = code;
-          break;
-        }
-      }
-    }
-    last = t;
+    const int* s = kFace[f.face];
+    for (int e = 0; e < 3; ++e)
+      tets_[f.tet].n[s[(e + 2) % 3]] = table[f.local[(e + 1) % 3] * m + f.local[e]];
   }
   for (std::size_t k = nb; k < cavity_.size(); ++k) {
-    verts_[4 * cavity_[k]] = kDeleted;
+    tets_[cavity_[k]].v[0] = kDeleted;
     free_.push_back(cavity_[k]);
   }
-  last_ = last;
+  last_ = boundary_.back().tet;
 }
 
 bool Delaunay3d::insert(Id v, Id* same) {
   const double* p = xyz(v);
+  if (!filter_.contains(p)) {
+    filter_.extend(p);
+    filter_.update();
+  }
   const std::uint32_t t = locate(p);
   if (!is_ghost(t)) {
     for (int i = 0; i < 4; ++i) {
-      const Id w = verts_[4 * t + i];
+      const Id w = tets_[t].v[i];
       if (same_point(xyz(w), p)) {
         if (same) *same = w;
         return false;
@@ -295,8 +297,8 @@ Tetrahedralization Delaunay3d::result() const {
   for (std::size_t t = 0; t < n; ++t) {
     if (old2new[t] == kNoId) continue;
     for (int i = 0; i < 4; ++i) {
-      out.tets.push_back(verts_[4 * t + i]);
-      out.tet2tet.push_back(old2new[nbrs_[4 * t + i] >> 2]);
+      out.tets.push_back(tets_[t].v[i]);
+      out.tet2tet.push_back(old2new[tets_[t].n[i] >> 2]);
     }
   }
   return out;
@@ -306,6 +308,7 @@ Tetrahedralization delaunay3d(const std::vector<double>& coords, InsertionOrder 
   RIEMESH_CHECK(coords.size() % 3 == 0);
   std::vector<Id> ids = insertion_order(coords, order);
   Delaunay3d kernel(&coords, ids);
+  kernel.reserve(ids.size());
   std::vector<Id> duplicate_of(coords.size() / 3, kNoId);
   for (std::size_t k = 4; k < ids.size(); ++k) {
     Id same = kNoId;

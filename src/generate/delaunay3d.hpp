@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "generate/delaunay2d.hpp"  // InsertionOrder, shared with the 2D kernel
+#include "generate/filtered_predicates3d.hpp"
 #include "mesh/mesh.hpp"
 
 namespace riemesh {
@@ -52,6 +53,9 @@ class Delaunay3d {
   /// moves them to its front; the caller then inserts order[4..] in turn.
   Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order);
 
+  /// Reserves memory for about num_points vertices (6.7 tets per point, as uniform points give).
+  void reserve(std::size_t num_points);
+
   /// Inserts point v; false (and nothing changes) when it coincides with a vertex, whose id is
   /// then stored in *same when same is given.
   bool insert(Id v, Id* same = nullptr);
@@ -69,13 +73,27 @@ class Delaunay3d {
     Id v[4];              // the cavity tetrahedron's vertices with the face's apex replaced
     std::uint32_t outer;  // 4 * (outer tet) + its face index
     int face;             // the face's index in the cavity tetrahedron
+    std::uint32_t tet;    // the new tetrahedron
+    std::uint32_t local[3];  // local numbers of the face's vertices (fill_cavity)
+  };
+  struct LocalId {
+    std::uint32_t stamp;
+    std::uint32_t id;
+  };
+
+  /// A tetrahedron: its vertices and, across the face opposite v[i], the neighbour's code
+  /// 4 * (neighbour) + (its face index). 32 bytes: two per cache line.
+  struct Tet {
+    Id v[4];
+    std::uint32_t n[4];
   };
 
   const double* xyz(Id v) const { return coords_->data() + 3 * static_cast<std::size_t>(v); }
   bool is_ghost(std::uint32_t t) const {
-    const Id* v = &verts_[4 * t];
+    const Id* v = tets_[t].v;
     return (v[0] | v[1] | v[2] | v[3]) < 0;
   }
+  std::uint32_t& nbr(std::uint32_t code) { return tets_[code >> 2].n[code & 3]; }
   std::uint32_t locate(const double* p);
   bool in_conflict(std::uint32_t t, const double* p);
   void find_cavity(std::uint32_t start, Id v, const double* p);
@@ -83,8 +101,8 @@ class Delaunay3d {
   std::uint32_t new_tet();
 
   const std::vector<double>* coords_;
-  std::vector<Id> verts_;            // 4 per tet (kInfinite for the vertex at infinity)
-  std::vector<std::uint32_t> nbrs_;  // 4 per tet: 4 * neighbour + its face index
+  detail::StaticFilter3d filter_;  // first stage of the predicates, over the points' box
+  std::vector<Tet> tets_;            // kInfinite for the vertex at infinity, kDeleted in v[0]
   std::vector<std::uint32_t> mark_;  // per tet: epoch_ in cavity, epoch_ + 1 tested outside
   std::vector<std::uint32_t> free_;  // deleted tets for reuse
   std::uint32_t epoch_ = 2;
@@ -95,9 +113,8 @@ class Delaunay3d {
   std::vector<std::uint32_t> stack_;
   std::vector<std::uint32_t> cavity_;
   std::vector<BoundaryFace> boundary_;
-  std::vector<std::uint64_t> edge_keys_;   // open-addressing table of the cavity's new faces
-  std::vector<std::uint32_t> edge_faces_;  // 4 * new tet + face, per table slot
-  std::vector<std::uint32_t> edge_stamp_;  // epoch_ when the slot is used
+  std::vector<LocalId> local_;            // per vertex + 1: its number on the cavity boundary
+  std::vector<std::uint32_t> edge_table_;  // new faces by directed boundary edge (m x m)
 
   Delaunay3dStats stats_;
 };

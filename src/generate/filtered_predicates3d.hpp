@@ -38,6 +38,9 @@ inline double det4(double a00, double a01, double a02, double a03, double a10, d
   return m123 * a03 - m023 * a13 + m013 * a23 - m012 * a33;
 }
 
+/// max without std::fmax's NaN handling, which compiles to a libm call (inputs are finite).
+inline double max2(double a, double b) { return a > b ? a : b; }
+
 inline void sort3(double& lo, double& mid, double& hi) {
   if (lo > hi) std::swap(lo, hi);
   if (mid > hi)
@@ -53,9 +56,9 @@ inline int orient3d_sign(const double* a, const double* b, const double* c, cons
   const double cx = c[0] - a[0], cy = c[1] - a[1], cz = c[2] - a[2];
   const double dx = d[0] - a[0], dy = d[1] - a[1], dz = d[2] - a[2];
   const double det = det3(bx, by, bz, cx, cy, cz, dx, dy, dz);
-  double mx = std::fmax(std::fabs(bx), std::fmax(std::fabs(cx), std::fabs(dx)));
-  double my = std::fmax(std::fabs(by), std::fmax(std::fabs(cy), std::fabs(dy)));
-  double mz = std::fmax(std::fabs(bz), std::fmax(std::fabs(cz), std::fabs(dz)));
+  double mx = max2(std::fabs(bx), max2(std::fabs(cx), std::fabs(dx)));
+  double my = max2(std::fabs(by), max2(std::fabs(cy), std::fabs(dy)));
+  double mz = max2(std::fabs(bz), max2(std::fabs(cz), std::fabs(dz)));
   sort3(mx, my, mz);
   // Outside [1e-97, 1e102] the bound itself could underflow or the determinant overflow.
   if (mx > 1e-97 && mz < 1e102) {
@@ -80,12 +83,12 @@ inline int insphere_sign(const double* a, const double* b, const double* c, cons
   const double d2 = dx * dx + dy * dy + dz * dz;
   // Rows a, c, b, d: the order for which a positive determinant means "inside".
   const double det = det4(ax, ay, az, a2, cx, cy, cz, c2, bx, by, bz, b2, dx, dy, dz, d2);
-  double mx = std::fmax(std::fmax(std::fabs(ax), std::fabs(bx)),
-                        std::fmax(std::fabs(cx), std::fabs(dx)));
-  double my = std::fmax(std::fmax(std::fabs(ay), std::fabs(by)),
-                        std::fmax(std::fabs(cy), std::fabs(dy)));
-  double mz = std::fmax(std::fmax(std::fabs(az), std::fabs(bz)),
-                        std::fmax(std::fabs(cz), std::fabs(dz)));
+  double mx = max2(max2(std::fabs(ax), std::fabs(bx)),
+                        max2(std::fabs(cx), std::fabs(dx)));
+  double my = max2(max2(std::fabs(ay), std::fabs(by)),
+                        max2(std::fabs(cy), std::fabs(dy)));
+  double mz = max2(max2(std::fabs(az), std::fabs(bz)),
+                        max2(std::fabs(cz), std::fabs(dz)));
   sort3(mx, my, mz);
   if (mx > 1e-58 && mz < 1e61) {
     const double eps = 1.2466136531027298e-13 * mx * my * mz * (mz * mz);
@@ -93,6 +96,62 @@ inline int insphere_sign(const double* a, const double* b, const double* c, cons
     if (det < -eps) return -1;
   }
   return insphere_exact_sign(a, b, c, d, e);
+}
+
+/// Static filter bounds (a first stage, before the per-call bounds above): every coordinate
+/// difference between points of a box is at most the box's side along that axis, so the FPG
+/// bounds evaluated at the sides hold for every call on points of the box. Cheaper than the
+/// per-call bounds (no maxima), looser on small configurations, which then go to the next stage.
+struct StaticFilter3d {
+  double orient = HUGE_VAL;  // HUGE_VAL: the stage is off
+  double insphere = HUGE_VAL;
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+  double hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+
+  bool contains(const double* p) const {
+    return p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] &&
+           p[2] <= hi[2];
+  }
+  /// Grows the box to hold p (call update() after).
+  void extend(const double* p) {
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = p[i] < lo[i] ? p[i] : lo[i];
+      hi[i] = p[i] > hi[i] ? p[i] : hi[i];
+    }
+  }
+  /// The bounds of the current box.
+  void update() {
+    double mx = hi[0] - lo[0], my = hi[1] - lo[1], mz = hi[2] - lo[2];
+    sort3(mx, my, mz);
+    const bool ok = mx > 1e-58 && mz < 1e61;
+    orient = ok ? 5.1107127829973299e-15 * mx * my * mz : HUGE_VAL;
+    insphere = ok ? 1.2466136531027298e-13 * mx * my * mz * (mz * mz) : HUGE_VAL;
+  }
+};
+
+/// orient3d_sign for points of the filter's box.
+inline int orient3d_sign(const StaticFilter3d& f, const double* a, const double* b,
+                         const double* c, const double* d) {
+  const double det = det3(b[0] - a[0], b[1] - a[1], b[2] - a[2], c[0] - a[0], c[1] - a[1],
+                          c[2] - a[2], d[0] - a[0], d[1] - a[1], d[2] - a[2]);
+  if (det > f.orient) return 1;
+  if (det < -f.orient) return -1;
+  return orient3d_sign(a, b, c, d);
+}
+
+/// insphere_sign for points of the filter's box.
+inline int insphere_sign(const StaticFilter3d& f, const double* a, const double* b,
+                         const double* c, const double* d, const double* e) {
+  const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
+  const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
+  const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
+  const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
+  const double det = det4(ax, ay, az, ax * ax + ay * ay + az * az, cx, cy, cz,
+                          cx * cx + cy * cy + cz * cz, bx, by, bz, bx * bx + by * by + bz * bz,
+                          dx, dy, dz, dx * dx + dy * dy + dz * dz);
+  if (det > f.insphere) return 1;
+  if (det < -f.insphere) return -1;
+  return insphere_sign(a, b, c, d, e);
 }
 
 }  // namespace riemesh::detail

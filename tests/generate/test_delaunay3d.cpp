@@ -44,6 +44,11 @@ TEST(Delaunay3d, FilteredSignsAgreeWithExactOnes) {
   // Random points, then near-degenerate ones: coplanar up to one ulp and grid cospherical.
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
+  detail::StaticFilter3d box;  // the static stage over [-2, 2]^3, which holds every point below
+  const double lo[3] = {-2, -2, -2}, hi[3] = {2, 2, 2};
+  box.extend(lo);
+  box.extend(hi);
+  box.update();
   for (int trial = 0; trial < 20000; ++trial) {
     double p[5][3];
     for (auto& q : p)
@@ -57,6 +62,10 @@ TEST(Delaunay3d, FilteredSignsAgreeWithExactOnes) {
     ASSERT_EQ(detail::orient3d_sign(p[0], p[1], p[2], p[3]),
               sign(exact::orient3d(p[0], p[1], p[2], p[3])));
     ASSERT_EQ(detail::insphere_sign(p[0], p[1], p[2], p[3], p[4]),
+              sign(exact::insphere(p[0], p[1], p[2], p[3], p[4])));
+    ASSERT_EQ(detail::orient3d_sign(box, p[0], p[1], p[2], p[3]),
+              sign(exact::orient3d(p[0], p[1], p[2], p[3])));
+    ASSERT_EQ(detail::insphere_sign(box, p[0], p[1], p[2], p[3], p[4]),
               sign(exact::insphere(p[0], p[1], p[2], p[3], p[4])));
   }
 }
