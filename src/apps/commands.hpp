@@ -31,5 +31,7 @@ void register_adapt(CLI::App& app);
 void register_loop(CLI::App& app);
 /// `riemesh transfer OLD.mesh OLD.sol NEW.mesh -o NEW.sol`: P1 transfer of vertex fields.
 void register_transfer(CLI::App& app);
+/// `riemesh mesh3d SURFACE -o VOL`: volume inside a closed surface (cmd_mesh3d.cpp).
+void register_mesh3d(CLI::App& app);
 
 }  // namespace riemesh::cli
