@@ -174,8 +174,8 @@ bool Delaunay3d::in_conflict(std::uint32_t t, const double* p) {
   const int s = orient3d_sign(filter_, q[0], q[1], q[2], q[3]);
   if (s != 0) return s > 0;
   const std::uint32_t n = tets_[t].n[inf] >> 2;
-  if (mark_[n] == epoch_) return true;
-  if (mark_[n] == epoch_ + 1) return false;
+  if (mark_[n] == kInCavity) return true;
+  if (mark_[n] == kOutside) return false;
   const Id* w = tets_[n].v;
   return insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0;
 }
@@ -183,12 +183,12 @@ bool Delaunay3d::in_conflict(std::uint32_t t, const double* p) {
 /// The cavity: tets in conflict with p reachable from `start` (a depth-first search on an
 /// explicit stack), and its boundary faces as the new tets they will become.
 void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
-  epoch_ += 2;
+  ++epoch_;
   cavity_.clear();
   boundary_.clear();
   stack_.clear();
   stack_.push_back(start);
-  mark_[start] = epoch_;
+  mark_[start] = kInCavity;
   while (!stack_.empty()) {
     const std::uint32_t t = stack_.back();
     stack_.pop_back();
@@ -196,14 +196,14 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
     for (int i = 0; i < 4; ++i) {
       const std::uint32_t code = tets_[t].n[i];
       const std::uint32_t n = code >> 2;
-      if (mark_[n] == epoch_) continue;
-      if (mark_[n] != epoch_ + 1) {
+      if (mark_[n] == kInCavity) continue;
+      if (mark_[n] != kOutside) {
         if (in_conflict(n, p)) {
-          mark_[n] = epoch_;
+          mark_[n] = kInCavity;
           stack_.push_back(n);
           continue;
         }
-        mark_[n] = epoch_ + 1;
+        mark_[n] = kOutside;
       }
       BoundaryFace f;
       for (int j = 0; j < 4; ++j) f.v[j] = tets_[t].v[j];
@@ -243,6 +243,8 @@ void Delaunay3d::fill_cavity() {
     const std::uint32_t t = k < cavity_.size() ? cavity_[k] : new_tet();
     std::copy(f.v, f.v + 4, tets_[t].v);
     tets_[t].n[f.face] = f.outer;
+    mark_[t] = 0;
+    mark_[f.outer >> 2] = 0;  // the marks are cleared for the next insertion
     nbr(f.outer) = 4 * t + static_cast<std::uint32_t>(f.face);
     const int* s = kFace[f.face];
     for (int e = 0; e < 3; ++e) f.local[e] = local(f.v[s[e]]);
@@ -259,6 +261,7 @@ void Delaunay3d::fill_cavity() {
   }
   for (std::size_t k = nb; k < cavity_.size(); ++k) {
     tets_[cavity_[k]].v[0] = kDeleted;
+    mark_[cavity_[k]] = 0;
     free_.push_back(cavity_[k]);
   }
   last_ = boundary_.back().tet;

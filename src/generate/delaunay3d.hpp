@@ -103,9 +103,12 @@ class Delaunay3d {
   const std::vector<double>* coords_;
   detail::StaticFilter3d filter_;  // first stage of the predicates, over the points' box
   std::vector<Tet> tets_;            // kInfinite for the vertex at infinity, kDeleted in v[0]
-  std::vector<std::uint32_t> mark_;  // per tet: epoch_ in cavity, epoch_ + 1 tested outside
+  // Per tet, during an insertion: kInCavity, kOutside (tested, not in conflict) or 0; cleared
+  // by fill_cavity (a tested tet is always next to the cavity). One byte keeps it in cache.
+  static constexpr std::uint8_t kInCavity = 1, kOutside = 2;
+  std::vector<std::uint8_t> mark_;
   std::vector<std::uint32_t> free_;  // deleted tets for reuse
-  std::uint32_t epoch_ = 2;
+  std::uint32_t epoch_ = 1;  // insertion count, stamps local_
   std::uint32_t last_ = 0;   // where the next walk starts
   std::uint32_t rng_ = 0x9e3779b9u;  // xorshift state of the walk's face order
 
