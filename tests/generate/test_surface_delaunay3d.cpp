@@ -86,6 +86,51 @@ TEST(SurfaceDelaunay3d, NestedShellsKeepTheSpaceBetweenThem) {
   EXPECT_TRUE(check_mesh(v).valid());
 }
 
+/// A twisted triangular prism (bottom radius 1 at z = 0, top radius 0.8 at z = 1 turned by 30°,
+/// so no 5 points are cospherical), each side quad split along one diagonal or the other. One
+/// choice is the convex hull; the other is Schönhardt's polyhedron, which has no
+/// tetrahedralisation without Steiner points, so some of its triangles are no Delaunay faces.
+Mesh twisted_prism(bool other_diagonal) {
+  Mesh s;
+  s.dim = 3;
+  for (int level = 0; level < 2; ++level)
+    for (int i = 0; i < 3; ++i) {
+      const double angle = (120.0 * i + 30.0 * level) * M_PI / 180, r = level ? 0.8 : 1.0;
+      s.coords.insert(s.coords.end(), {r * std::cos(angle), r * std::sin(angle), double(level)});
+    }
+  s.triangles = {0, 2, 1, 3, 4, 5};
+  for (Id i = 0; i < 3; ++i) {
+    const Id a = i, a1 = (i + 1) % 3, b = 3 + i, b1 = 3 + (i + 1) % 3;
+    if (other_diagonal)
+      s.triangles.insert(s.triangles.end(), {a, a1, b, a1, b1, b});
+    else
+      s.triangles.insert(s.triangles.end(), {a, a1, b1, a, b1, b});
+  }
+  s.vert_ref.assign(6, 0);
+  s.vert_tag.assign(6, 0);
+  s.tri_ref.assign(8, 1);
+  s.tri_tag.assign(8, 0);
+  return s;
+}
+
+TEST(SurfaceDelaunay3d, SchonhardtPrismIsReportedNotFaked) {
+  const SurfaceDelaunay d0 = delaunay_of_surface(twisted_prism(false));
+  const SurfaceDelaunay d1 = delaunay_of_surface(twisted_prism(true));
+  // Same 6 points in convex position, same Delaunay tetrahedralisation (3 or 4 tets).
+  EXPECT_GE(d0.tz.num_tets(), 3u);
+  EXPECT_LE(d0.tz.num_tets(), 4u);
+  EXPECT_EQ(d0.tz.tets, d1.tz.tets);
+  ASSERT_NE(d0.conforming(), d1.conforming());  // exactly one is the hull
+  const SurfaceDelaunay& hull = d0.conforming() ? d0 : d1;
+  const SurfaceDelaunay& schonhardt = d0.conforming() ? d1 : d0;
+  EXPECT_GT(schonhardt.missing_faces, 0u);
+  EXPECT_GT(schonhardt.missing_edges, 0u);  // its reflex diagonals are no tet edges
+  EXPECT_THROW(volume_inside(twisted_prism(&schonhardt == &d1), schonhardt), Error);
+  const Mesh v = volume_inside(twisted_prism(&hull == &d1), hull);
+  EXPECT_EQ(v.num_tets(), hull.tz.num_tets());  // a convex surface keeps every tet
+  EXPECT_TRUE(check_mesh(v).valid());
+}
+
 TEST(SurfaceDelaunay3d, DefectsAreNamed) {
   const auto message = [](const Mesh& m) {
     try {
