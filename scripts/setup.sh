@@ -12,6 +12,7 @@ packages=(
   python3-numpy python3-meshio time               # independent checks (shared/bench, validators)
   gmsh                                            # independent .msh/.mesh reader in the io tests
   freefem++                                       # FreeFem reads our 2D/3D .mesh (validators, client)
+  tetgen                                          # 3D Delaunay comparison (bench/delaunay3d_vs_tetgen.sh)
 )
 
 SUDO=""

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/cmd_mesh3d.hpp"
 #include "apps/commands.hpp"
 #include "apps/mesh_args.hpp"
 #include "apps/parse.hpp"
@@ -68,8 +69,13 @@ void run(MeshArgs& a) {
   a.opt.adapt.interp = parse_interp_scheme(a.interp);
   mesh_format(a.output);  // an unknown output extension fails before any work
   const Mesh domain = read_mesh(a.input);
-  if (domain.dim != 2)
-    throw InputError(a.input + ": only planar domains (Dimension 2) can be meshed so far");
+  if (domain.dim == 3) {  // a closed surface: the volume inside it
+    if (a.opt.hsiz > 0.0 || !a.metric.empty() || a.hausd->count() > 0 || !a.holes.empty())
+      throw InputError(a.input + ": a surface is meshed with its vertices only so far; --hsiz, "
+                       "--metric, --hausd and --hole apply to planar domains");
+    mesh_volume_from_surface(a.input, domain, a.output, a.quiet);
+    return;
+  }
   if (!a.metric.empty()) a.opt.metric = read_metric(a.metric, domain);
   // The boundary is kept as given unless a size field or hausd says how to remesh it.
   a.opt.keep_boundary =

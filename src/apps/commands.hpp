@@ -29,7 +29,8 @@ void register_render(CLI::App& app);
 void register_adapt(CLI::App& app);
 /// `riemesh loop`: the adaptation loop on analytic functions, errors and slopes (cmd_loop.cpp).
 void register_loop(CLI::App& app);
-/// `riemesh mesh DOMAIN -o OUT`: mesh a planar domain from its boundary (cmd_mesh.cpp).
+/// `riemesh mesh DOMAIN -o OUT`: mesh a planar domain from its boundary, or the volume inside a
+/// closed surface (cmd_mesh.cpp, cmd_mesh3d.cpp).
 void register_mesh(CLI::App& app);
 /// `riemesh transfer OLD.mesh OLD.sol NEW.mesh -o NEW.sol`: P1 transfer of vertex fields,
 /// conservative transfer of element fields.

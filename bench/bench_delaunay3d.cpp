@@ -1,0 +1,127 @@
+// The 3D Delaunay kernel: random points in the unit cube.
+//   Sorted/N    points already in Hilbert order, inserted as given (the target: ≥ 1.5 M/s)
+//   Hilbert/N   unsorted points; the Hilbert sort is included in the time
+//   Brio/N      unsorted points; BRIO ordering (Hilbert sort per round) included in the time
+// "points/s" counts the points over the whole call (ordering, insertion, compaction of the result).
+// Run: build/bench/riemesh_bench_delaunay3d --benchmark_repetitions=5
+//        --benchmark_report_aggregates_only=true
+// Or, on the points of a TetGen .node file (for bench/delaunay3d_vs_tetgen.sh):
+//      build/bench/riemesh_bench_delaunay3d --node FILE.node [--runs R] [--order brio|hilbert|given]
+//   prints "points N tets T median_seconds S" (median over R runs of delaunay3d, reading excluded).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "generate/delaunay3d.hpp"
+#include "mesh/hilbert.hpp"
+
+using namespace riemesh;
+
+namespace {
+
+std::vector<double> random_cube(std::size_t n) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> xyz(3 * n);
+  for (double& x : xyz) x = u(rng);
+  return xyz;
+}
+
+std::vector<double> hilbert_sorted(const std::vector<double>& xyz) {
+  const std::vector<Id> order = hilbert_order(xyz, 3);
+  std::vector<double> out(xyz.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    for (int i = 0; i < 3; ++i) out[3 * k + i] = xyz[3 * static_cast<std::size_t>(order[k]) + i];
+  return out;
+}
+
+void run(benchmark::State& state, const std::vector<double>& xyz, InsertionOrder order) {
+  std::size_t tets = 0;
+  for (auto _ : state) {
+    Tetrahedralization t = delaunay3d(xyz, order);
+    tets = t.num_tets();
+    benchmark::DoNotOptimize(t.tets.data());
+  }
+  state.counters["points/s"] =
+      benchmark::Counter(double(state.range(0)), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["tets"] = double(tets);
+}
+
+void Sorted(benchmark::State& state) {
+  run(state, hilbert_sorted(random_cube(state.range(0))), InsertionOrder::kAsGiven);
+}
+BENCHMARK(Sorted)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void Hilbert(benchmark::State& state) {
+  run(state, random_cube(state.range(0)), InsertionOrder::kHilbert);
+}
+BENCHMARK(Hilbert)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void Brio(benchmark::State& state) {
+  run(state, random_cube(state.range(0)), InsertionOrder::kBrio);
+}
+BENCHMARK(Brio)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+/// Points of a TetGen .node file: "N 3 attributes markers", then "index x y z ...".
+std::vector<double> read_node(const char* path) {
+  std::ifstream in(path);
+  std::size_t n = 0;
+  int dim = 0, attributes = 0, markers = 0;
+  in >> n >> dim >> attributes >> markers;
+  std::vector<double> xyz(3 * n);
+  for (std::size_t i = 0; i < n && in; ++i) {
+    double index, extra;
+    in >> index >> xyz[3 * i] >> xyz[3 * i + 1] >> xyz[3 * i + 2];
+    for (int k = 0; k < attributes + markers; ++k) in >> extra;
+  }
+  if (!in || dim != 3) {
+    std::fprintf(stderr, "%s: not a 3D .node file\n", path);
+    std::exit(2);
+  }
+  return xyz;
+}
+
+int run_node_file(const char* path, int runs, InsertionOrder order) {
+  const std::vector<double> xyz = read_node(path);
+  std::vector<double> seconds;
+  std::size_t tets = 0;
+  for (int r = 0; r < runs; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    const Tetrahedralization t = delaunay3d(xyz, order);
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    tets = t.num_tets();
+  }
+  std::sort(seconds.begin(), seconds.end());
+  std::printf("points %zu tets %zu median_seconds %.4f\n", xyz.size() / 3, tets, seconds[seconds.size() / 2]);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* node = nullptr;
+  int runs = 5;
+  InsertionOrder order = InsertionOrder::kBrio;
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::strcmp(argv[i], "--node") == 0) node = argv[i + 1];
+    if (std::strcmp(argv[i], "--runs") == 0) runs = std::max(1, std::atoi(argv[i + 1]));
+    if (std::strcmp(argv[i], "--order") == 0)
+      order = std::strcmp(argv[i + 1], "hilbert") == 0 ? InsertionOrder::kHilbert
+              : std::strcmp(argv[i + 1], "given") == 0 ? InsertionOrder::kAsGiven
+                                                        : InsertionOrder::kBrio;
+  }
+  if (node) return run_node_file(node, runs, order);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

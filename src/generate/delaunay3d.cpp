@@ -1,0 +1,325 @@
+#include "generate/delaunay3d.hpp"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "core/error.hpp"
+#include "generate/filtered_predicates3d.hpp"
+
+namespace riemesh {
+
+using detail::insphere_sign;
+using detail::orient3d_sign;
+
+namespace {
+
+constexpr Id kDeleted = -2;
+
+/// True when a, b, c are collinear: the plane through them (if any) would contain the three
+/// points obtained from a by changing one coordinate, whose offsets from a are exactly along
+/// the axes and hence span space.
+bool collinear(const double* a, const double* b, const double* c) {
+  for (int i = 0; i < 3; ++i) {
+    double q[3] = {a[0], a[1], a[2]};
+    q[i] = a[i] + 1.0 != a[i] ? a[i] + 1.0 : 2.0 * a[i];
+    if (orient3d_sign(a, b, c, q) != 0) return false;
+  }
+  return true;
+}
+
+bool same_point(const double* a, const double* b) {
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+/// The position of the first point of order[from..) accepted by `ok`, or order.size().
+template <class Ok>
+std::size_t find_point(const std::vector<Id>& order, std::size_t from, Ok ok) {
+  while (from < order.size() && !ok(order[from])) ++from;
+  return from;
+}
+
+}  // namespace
+
+Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order)
+    : coords_(coords) {
+  // The first 4 non-coplanar points, found in order (each search keeps the earliest).
+  const auto p = [&](Id v) { return xyz(v); };
+  std::size_t k[4] = {0, 0, 0, 0};
+  if (!order.empty()) {
+    const Id a = order[0];
+    k[1] = find_point(order, 1, [&](Id v) { return !same_point(p(a), p(v)); });
+    if (k[1] < order.size()) {
+      const Id b = order[k[1]];
+      k[2] = find_point(order, k[1] + 1, [&](Id v) { return !collinear(p(a), p(b), p(v)); });
+      if (k[2] < order.size()) {
+        const Id c = order[k[2]];
+        k[3] = find_point(order, k[2] + 1,
+                          [&](Id v) { return orient3d_sign(p(a), p(b), p(c), p(v)) != 0; });
+      }
+    }
+  }
+  if (order.size() < 4 || k[1] >= order.size() || k[2] >= order.size() || k[3] >= order.size())
+    throw InputError("Delaunay tetrahedralisation: the points are coplanar (or fewer than 4)");
+  Id v[4];
+  for (int i = 0; i < 4; ++i) v[i] = order[k[i]];
+  for (int i = 3; i >= 1; --i) order.erase(order.begin() + static_cast<std::ptrdiff_t>(k[i]));
+  order.erase(order.begin());
+  order.insert(order.begin(), v, v + 4);
+  if (orient3d_sign(p(v[0]), p(v[1]), p(v[2]), p(v[3])) < 0) std::swap(v[0], v[1]);
+  // The static filter's box: all points given now (later ones grow it when inserted).
+  for (std::size_t i = 0; i < coords->size(); i += 3) filter_.extend(coords->data() + i);
+  filter_.update();
+
+  // One finite tet and a ghost on each face: the finite tet with the face's apex replaced by
+  // the vertex at infinity and two finite vertices swapped (the ghost lies on the other side).
+  tets_.assign(5, Tet{});
+  std::copy(v, v + 4, tets_[0].v);
+  for (int i = 0; i < 4; ++i) {
+    Id* g = tets_[1 + i].v;
+    std::copy(v, v + 4, g);
+    g[i] = kInfinite;
+    const int j = i == 0 ? 1 : 0, l = i == 3 ? 2 : 3;
+    std::swap(g[j], g[l]);
+  }
+  // Faces are matched by vertex set (20 faces: a quadratic search is fine).
+  mark_.assign(5, 0);
+  const auto face_has = [&](std::uint32_t t, int f, Id w) {
+    for (int i = 0; i < 4; ++i)
+      if (i != f && tets_[t].v[i] == w) return true;
+    return false;
+  };
+  for (std::uint32_t t = 0; t < 5; ++t)
+    for (int f = 0; f < 4; ++f)
+      for (std::uint32_t u = 0; u < 5; ++u)
+        for (int g = 0; u != t && g < 4; ++g) {
+          bool match = true;
+          for (int i = 0; i < 4; ++i)
+            if (i != g && !face_has(t, f, tets_[u].v[i])) match = false;
+          if (match) tets_[t].n[f] = 4 * u + g;
+        }
+  last_ = 0;
+}
+
+void Delaunay3d::reserve(std::size_t num_points) {
+  tets_.reserve(7 * num_points);
+  mark_.reserve(7 * num_points);
+  local_.resize(std::max(local_.size(), num_points + 1), {0, 0});
+}
+
+std::uint32_t Delaunay3d::new_tet() {
+  if (!free_.empty()) {
+    const std::uint32_t t = free_.back();
+    free_.pop_back();
+    return t;
+  }
+  const auto t = static_cast<std::uint32_t>(mark_.size());
+  RIEMESH_CHECK(t < (1u << 30));  // 4 * t + face must fit the 32-bit neighbour codes
+  tets_.emplace_back();
+  mark_.push_back(0);
+  return t;
+}
+
+/// Visibility walk: crosses any face that separates the tetrahedron from p (faces tried in a
+/// pseudo-random order, which guarantees termination), until a tetrahedron contains p (closed)
+/// or a ghost is entered (p is then strictly outside the hull, beyond that ghost's face).
+std::uint32_t Delaunay3d::locate(const double* p) {
+  std::uint32_t t = last_;
+  if (is_ghost(t)) {
+    const Id* v = tets_[t].v;
+    const int inf = v[0] == kInfinite ? 0 : v[1] == kInfinite ? 1 : v[2] == kInfinite ? 2 : 3;
+    t = tets_[t].n[inf] >> 2;
+  }
+  std::uint32_t prev = ~0u;
+  for (;;) {
+    const Id* v = tets_[t].v;
+    const double* q[4] = {xyz(v[0]), xyz(v[1]), xyz(v[2]), xyz(v[3])};
+    rng_ ^= rng_ << 13;
+    rng_ ^= rng_ >> 17;
+    rng_ ^= rng_ << 5;
+    const unsigned start = rng_ >> 30;
+    std::uint32_t next = ~0u;
+    for (unsigned r = 0; r < 4; ++r) {
+      const unsigned i = (start + r) & 3;
+      const std::uint32_t n = tets_[t].n[i] >> 2;
+      if (n == prev) continue;
+      const double* save = q[i];
+      q[i] = p;
+      const int s = orient3d_sign(filter_, q[0], q[1], q[2], q[3]);
+      q[i] = save;
+      if (s < 0) {
+        next = n;
+        break;
+      }
+    }
+    if (next == ~0u) return t;
+    ++stats_.walk_steps;
+    prev = t;
+    t = next;
+    if (is_ghost(t)) return t;
+  }
+}
+
+/// Does p conflict with tet t? Finite: p strictly inside the circumsphere. Ghost: p strictly
+/// beyond its hull face, or on the face's plane and in conflict with the finite tet behind it
+/// (i.e. strictly inside the face's circumcircle), so the cavity stays star-shaped from p.
+bool Delaunay3d::in_conflict(std::uint32_t t, const double* p) {
+  ++stats_.insphere_tests;
+  const Id* v = tets_[t].v;
+  if ((v[0] | v[1] | v[2] | v[3]) >= 0)
+    return insphere_sign(filter_, xyz(v[0]), xyz(v[1]), xyz(v[2]), xyz(v[3]), p) > 0;
+  const int inf = v[0] == kInfinite ? 0 : v[1] == kInfinite ? 1 : v[2] == kInfinite ? 2 : 3;
+  const double* q[4];
+  for (int i = 0; i < 4; ++i) q[i] = i == inf ? p : xyz(v[i]);
+  const int s = orient3d_sign(filter_, q[0], q[1], q[2], q[3]);
+  if (s != 0) return s > 0;
+  const std::uint32_t n = tets_[t].n[inf] >> 2;
+  if (mark_[n] == kInCavity) return true;
+  if (mark_[n] == kOutside) return false;
+  const Id* w = tets_[n].v;
+  return insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0;
+}
+
+/// The cavity: tets in conflict with p reachable from `start` (a depth-first search on an
+/// explicit stack), and its boundary faces as the new tets they will become.
+void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
+  ++epoch_;
+  cavity_.clear();
+  boundary_.clear();
+  stack_.clear();
+  stack_.push_back(start);
+  mark_[start] = kInCavity;
+  while (!stack_.empty()) {
+    const std::uint32_t t = stack_.back();
+    stack_.pop_back();
+    cavity_.push_back(t);
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t code = tets_[t].n[i];
+      const std::uint32_t n = code >> 2;
+      if (mark_[n] == kInCavity) continue;
+      if (mark_[n] != kOutside) {
+        if (in_conflict(n, p)) {
+          mark_[n] = kInCavity;
+          stack_.push_back(n);
+          continue;
+        }
+        mark_[n] = kOutside;
+      }
+      BoundaryFace f;
+      for (int j = 0; j < 4; ++j) f.v[j] = tets_[t].v[j];
+      f.v[i] = v;
+      f.outer = code;
+      f.face = i;
+      boundary_.push_back(f);
+    }
+  }
+  stats_.cavity_tets += cavity_.size();
+}
+
+/// Replaces the cavity by one tet per boundary face joined to the new point. The cavity
+/// boundary is a triangulated sphere seen from the point; its faces, oriented by kFace, traverse
+/// each edge once in each direction. Its vertices get local numbers 0..m-1 (m <= nb/2 + 2 by
+/// Euler's formula), each new tet writes its faces through the point into a small m x m table at
+/// the directed edge they contain, and reads its neighbours at the reversed edges.
+void Delaunay3d::fill_cavity() {
+  // Face i of a positive tet, ordered so that vertex i is on its positive side.
+  static constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+  const std::size_t nb = boundary_.size();
+  const std::uint32_t m = static_cast<std::uint32_t>(nb / 2 + 2);
+  if (edge_table_.size() < static_cast<std::size_t>(m) * m) edge_table_.resize(m * m);
+  std::uint32_t count = 0;
+  const auto local = [&](Id v) {
+    const auto u = static_cast<std::size_t>(v + 1);  // the vertex at infinity is -1
+    if (u >= local_.size()) local_.resize(std::max(2 * local_.size(), u + 1), {0, 0});
+    if (local_[u].stamp != epoch_) {
+      RIEMESH_CHECK(count < m);  // the cavity is a ball: its boundary is a sphere
+      local_[u] = {epoch_, count++};
+    }
+    return local_[u].id;
+  };
+  std::uint32_t* table = edge_table_.data();
+  for (std::size_t k = 0; k < nb; ++k) {
+    BoundaryFace& f = boundary_[k];
+    const std::uint32_t t = k < cavity_.size() ? cavity_[k] : new_tet();
+    std::copy(f.v, f.v + 4, tets_[t].v);
+    tets_[t].n[f.face] = f.outer;
+    mark_[t] = 0;
+    mark_[f.outer >> 2] = 0;  // the marks are cleared for the next insertion
+    nbr(f.outer) = 4 * t + static_cast<std::uint32_t>(f.face);
+    const int* s = kFace[f.face];
+    for (int e = 0; e < 3; ++e) f.local[e] = local(f.v[s[e]]);
+    // Directed edge s[e] -> s[e+1] lies on the face opposite s[e+2].
+    for (int e = 0; e < 3; ++e)
+      table[f.local[e] * m + f.local[(e + 1) % 3]] = 4 * t + static_cast<std::uint32_t>(s[(e + 2) % 3]);
+    f.tet = t;
+  }
+  for (std::size_t k = 0; k < nb; ++k) {
+    const BoundaryFace& f = boundary_[k];
+    const int* s = kFace[f.face];
+    for (int e = 0; e < 3; ++e)
+      tets_[f.tet].n[s[(e + 2) % 3]] = table[f.local[(e + 1) % 3] * m + f.local[e]];
+  }
+  for (std::size_t k = nb; k < cavity_.size(); ++k) {
+    tets_[cavity_[k]].v[0] = kDeleted;
+    mark_[cavity_[k]] = 0;
+    free_.push_back(cavity_[k]);
+  }
+  last_ = boundary_.back().tet;
+}
+
+bool Delaunay3d::insert(Id v, Id* same) {
+  const double* p = xyz(v);
+  if (!filter_.contains(p)) {
+    filter_.extend(p);
+    filter_.update();
+  }
+  const std::uint32_t t = locate(p);
+  if (!is_ghost(t)) {
+    for (int i = 0; i < 4; ++i) {
+      const Id w = tets_[t].v[i];
+      if (same_point(xyz(w), p)) {
+        if (same) *same = w;
+        return false;
+      }
+    }
+  }
+  find_cavity(t, v, p);
+  fill_cavity();
+  return true;
+}
+
+Tetrahedralization Delaunay3d::result() const {
+  Tetrahedralization out;
+  const std::size_t n = mark_.size();
+  std::vector<Id> old2new(n, kNoId);
+  Id count = 0;
+  for (std::size_t t = 0; t < n; ++t)
+    if (!is_ghost(static_cast<std::uint32_t>(t))) old2new[t] = count++;
+  out.tets.reserve(4 * static_cast<std::size_t>(count));
+  out.tet2tet.reserve(4 * static_cast<std::size_t>(count));
+  for (std::size_t t = 0; t < n; ++t) {
+    if (old2new[t] == kNoId) continue;
+    for (int i = 0; i < 4; ++i) {
+      out.tets.push_back(tets_[t].v[i]);
+      out.tet2tet.push_back(old2new[tets_[t].n[i] >> 2]);
+    }
+  }
+  return out;
+}
+
+Tetrahedralization delaunay3d(const std::vector<double>& coords, InsertionOrder order) {
+  RIEMESH_CHECK(coords.size() % 3 == 0);
+  std::vector<Id> ids = insertion_order(coords, order);
+  Delaunay3d kernel(&coords, ids);
+  kernel.reserve(ids.size());
+  std::vector<Id> duplicate_of(coords.size() / 3, kNoId);
+  for (std::size_t k = 4; k < ids.size(); ++k) {
+    Id same = kNoId;
+    if (!kernel.insert(ids[k], &same)) duplicate_of[static_cast<std::size_t>(ids[k])] = same;
+  }
+  Tetrahedralization out = kernel.result();
+  out.duplicate_of = std::move(duplicate_of);
+  return out;
+}
+
+}  // namespace riemesh

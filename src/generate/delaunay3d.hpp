@@ -1,0 +1,125 @@
+#pragma once
+// 3D Delaunay tetrahedralisation by Bowyer–Watson insertion (BOOK.md §4): each point is located
+// by a visibility walk from the last created tetrahedron, the cavity of tetrahedra whose
+// circumsphere strictly contains it is found with the exact in-sphere predicate, and the cavity
+// is replaced by the ball of the point. The convex hull is closed by "ghost" tetrahedra joining
+// each hull face to a vertex at infinity, so no bounding box is needed and the result is the
+// Delaunay tetrahedralisation of the points themselves (convex hull included).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "generate/delaunay2d.hpp"  // InsertionOrder, shared with the 2D kernel
+#include "generate/filtered_predicates3d.hpp"
+#include "mesh/mesh.hpp"
+
+namespace riemesh {
+
+/// A Delaunay tetrahedralisation of a point set.
+struct Tetrahedralization {
+  std::vector<Id> tets;     // 4 point ids per tetrahedron, positive volume
+  std::vector<Id> tet2tet;  // 4 per tet: the neighbour across the face opposite vertex i, or
+                            // kNoId on the convex hull
+  std::vector<Id> duplicate_of;  // per point: kNoId, or the earlier point with equal coordinates
+                                 // (a duplicate is not a vertex of the tetrahedralisation)
+  std::size_t num_tets() const { return tets.size() / 4; }
+};
+
+/// The Delaunay tetrahedralisation of the points (3 doubles each). Deterministic. Degenerate
+/// inputs (cospherical, coplanar subsets) are handled exactly: every tetrahedron's circumsphere
+/// contains no point strictly inside; among the Delaunay tetrahedralisations of a degenerate set
+/// the one returned depends on the insertion order. InputError when fewer than 4 distinct points
+/// or all points are coplanar.
+Tetrahedralization delaunay3d(const std::vector<double>& coords,
+                              InsertionOrder order = InsertionOrder::kBrio);
+
+/// The insertion order `delaunay3d` uses: order[k] = the point inserted k-th. kBrio: rounds
+/// [n/2, n), [n/4, n/2), ... of a fixed-seed shuffle, each sorted along the Hilbert curve.
+std::vector<Id> insertion_order(const std::vector<double>& coords, InsertionOrder order);
+
+/// Counters of one run (for benchmarks and tests of the kernel's work).
+struct Delaunay3dStats {
+  std::size_t walk_steps = 0;      // tetrahedra crossed by the location walks
+  std::size_t cavity_tets = 0;     // tetrahedra deleted, summed over the insertions
+  std::size_t insphere_tests = 0;  // conflict tests on tetrahedra next to a cavity
+};
+
+/// The incremental kernel behind `delaunay3d`, for callers that insert points one at a time
+/// (boundary recovery inserts Steiner points). Points are referenced by id into `coords`, which
+/// the caller may grow between insertions (only `points()` is read).
+class Delaunay3d {
+ public:
+  /// Starts from the first 4 non-coplanar distinct points of `order` (InputError if none) and
+  /// moves them to its front; the caller then inserts order[4..] in turn.
+  Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order);
+
+  /// Reserves memory for about num_points vertices (6.7 tets per point, as uniform points give).
+  void reserve(std::size_t num_points);
+
+  /// Inserts point v; false (and nothing changes) when it coincides with a vertex, whose id is
+  /// then stored in *same when same is given.
+  bool insert(Id v, Id* same = nullptr);
+
+  /// The finite tetrahedra, compacted (deleted and ghost ones dropped); duplicate_of is left
+  /// empty (the caller knows which insertions were refused).
+  Tetrahedralization result() const;
+
+  const Delaunay3dStats& stats() const { return stats_; }
+
+ private:
+  static constexpr Id kInfinite = -1;
+
+  struct BoundaryFace {
+    Id v[4];              // the cavity tetrahedron's vertices with the face's apex replaced
+    std::uint32_t outer;  // 4 * (outer tet) + its face index
+    int face;             // the face's index in the cavity tetrahedron
+    std::uint32_t tet;    // the new tetrahedron
+    std::uint32_t local[3];  // local numbers of the face's vertices (fill_cavity)
+  };
+  struct LocalId {
+    std::uint32_t stamp;
+    std::uint32_t id;
+  };
+
+  /// A tetrahedron: its vertices and, across the face opposite v[i], the neighbour's code
+  /// 4 * (neighbour) + (its face index). 32 bytes: two per cache line.
+  struct Tet {
+    Id v[4];
+    std::uint32_t n[4];
+  };
+
+  const double* xyz(Id v) const { return coords_->data() + 3 * static_cast<std::size_t>(v); }
+  bool is_ghost(std::uint32_t t) const {
+    const Id* v = tets_[t].v;
+    return (v[0] | v[1] | v[2] | v[3]) < 0;
+  }
+  std::uint32_t& nbr(std::uint32_t code) { return tets_[code >> 2].n[code & 3]; }
+  std::uint32_t locate(const double* p);
+  bool in_conflict(std::uint32_t t, const double* p);
+  void find_cavity(std::uint32_t start, Id v, const double* p);
+  void fill_cavity();
+  std::uint32_t new_tet();
+
+  const std::vector<double>* coords_;
+  detail::StaticFilter3d filter_;  // first stage of the predicates, over the points' box
+  std::vector<Tet> tets_;            // kInfinite for the vertex at infinity, kDeleted in v[0]
+  // Per tet, during an insertion: kInCavity, kOutside (tested, not in conflict) or 0; cleared
+  // by fill_cavity (a tested tet is always next to the cavity). One byte keeps it in cache.
+  static constexpr std::uint8_t kInCavity = 1, kOutside = 2;
+  std::vector<std::uint8_t> mark_;
+  std::vector<std::uint32_t> free_;  // deleted tets for reuse
+  std::uint32_t epoch_ = 1;  // insertion count, stamps local_
+  std::uint32_t last_ = 0;   // where the next walk starts
+  std::uint32_t rng_ = 0x9e3779b9u;  // xorshift state of the walk's face order
+
+  // Per-insertion scratch, kept between insertions to avoid allocations.
+  std::vector<std::uint32_t> stack_;
+  std::vector<std::uint32_t> cavity_;
+  std::vector<BoundaryFace> boundary_;
+  std::vector<LocalId> local_;            // per vertex + 1: its number on the cavity boundary
+  std::vector<std::uint32_t> edge_table_;  // new faces by directed boundary edge (m x m)
+
+  Delaunay3dStats stats_;
+};
+
+}  // namespace riemesh

@@ -1,0 +1,157 @@
+#pragma once
+// Filtered 3D orientation and in-sphere signs for the Delaunay kernel. Each sign is first decided
+// in double precision with a semi-static error bound (Meyer & Pion's FPG bounds, the constants
+// CGAL's static filters use for this evaluation order); when the determinant is within the bound
+// the exact predicates of core/predicates.hpp decide. Inline so that the kernel's inner loops pay
+// no call for the common case.
+#include <cmath>
+#include <utility>
+
+namespace riemesh::detail {
+
+/// Exact signs behind the filters (core/predicates.hpp, adapted to the conventions below).
+int orient3d_exact_sign(const double* a, const double* b, const double* c, const double* d);
+int insphere_exact_sign(const double* a, const double* b, const double* c, const double* d,
+                        const double* e);
+
+inline double det3(double a00, double a01, double a02, double a10, double a11, double a12,
+                   double a20, double a21, double a22) {
+  const double m01 = a00 * a11 - a10 * a01;
+  const double m02 = a00 * a21 - a20 * a01;
+  const double m12 = a10 * a21 - a20 * a11;
+  return m01 * a22 - m02 * a12 + m12 * a02;
+}
+
+inline double det4(double a00, double a01, double a02, double a03, double a10, double a11,
+                   double a12, double a13, double a20, double a21, double a22, double a23,
+                   double a30, double a31, double a32, double a33) {
+  const double m01 = a10 * a01 - a00 * a11;
+  const double m02 = a20 * a01 - a00 * a21;
+  const double m03 = a30 * a01 - a00 * a31;
+  const double m12 = a20 * a11 - a10 * a21;
+  const double m13 = a30 * a11 - a10 * a31;
+  const double m23 = a30 * a21 - a20 * a31;
+  const double m012 = m12 * a02 - m02 * a12 + m01 * a22;
+  const double m013 = m13 * a02 - m03 * a12 + m01 * a32;
+  const double m023 = m23 * a02 - m03 * a22 + m02 * a32;
+  const double m123 = m23 * a12 - m13 * a22 + m12 * a32;
+  return m123 * a03 - m023 * a13 + m013 * a23 - m012 * a33;
+}
+
+/// max without std::fmax's NaN handling, which compiles to a libm call (inputs are finite).
+inline double max2(double a, double b) { return a > b ? a : b; }
+
+inline void sort3(double& lo, double& mid, double& hi) {
+  if (lo > hi) std::swap(lo, hi);
+  if (mid > hi)
+    std::swap(mid, hi);
+  else if (mid < lo)
+    std::swap(lo, mid);
+}
+
+/// Sign of det(b - a, c - a, d - a): +1 when d is on the positive side of the plane (a, b, c),
+/// i.e. the tetrahedron (a, b, c, d) has positive volume (the Medit/Riemesh convention).
+inline int orient3d_sign(const double* a, const double* b, const double* c, const double* d) {
+  const double bx = b[0] - a[0], by = b[1] - a[1], bz = b[2] - a[2];
+  const double cx = c[0] - a[0], cy = c[1] - a[1], cz = c[2] - a[2];
+  const double dx = d[0] - a[0], dy = d[1] - a[1], dz = d[2] - a[2];
+  const double det = det3(bx, by, bz, cx, cy, cz, dx, dy, dz);
+  double mx = max2(std::fabs(bx), max2(std::fabs(cx), std::fabs(dx)));
+  double my = max2(std::fabs(by), max2(std::fabs(cy), std::fabs(dy)));
+  double mz = max2(std::fabs(bz), max2(std::fabs(cz), std::fabs(dz)));
+  sort3(mx, my, mz);
+  // Outside [1e-97, 1e102] the bound itself could underflow or the determinant overflow.
+  if (mx > 1e-97 && mz < 1e102) {
+    const double eps = 5.1107127829973299e-15 * mx * my * mz;
+    if (det > eps) return 1;
+    if (det < -eps) return -1;
+  }
+  return orient3d_exact_sign(a, b, c, d);
+}
+
+/// +1 when e is strictly inside the circumsphere of the positively oriented tetrahedron
+/// (a, b, c, d), -1 strictly outside, 0 on the sphere.
+inline int insphere_sign(const double* a, const double* b, const double* c, const double* d,
+                         const double* e) {
+  const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
+  const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
+  const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
+  const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
+  const double a2 = ax * ax + ay * ay + az * az;
+  const double b2 = bx * bx + by * by + bz * bz;
+  const double c2 = cx * cx + cy * cy + cz * cz;
+  const double d2 = dx * dx + dy * dy + dz * dz;
+  // Rows a, c, b, d: the order for which a positive determinant means "inside".
+  const double det = det4(ax, ay, az, a2, cx, cy, cz, c2, bx, by, bz, b2, dx, dy, dz, d2);
+  double mx = max2(max2(std::fabs(ax), std::fabs(bx)),
+                        max2(std::fabs(cx), std::fabs(dx)));
+  double my = max2(max2(std::fabs(ay), std::fabs(by)),
+                        max2(std::fabs(cy), std::fabs(dy)));
+  double mz = max2(max2(std::fabs(az), std::fabs(bz)),
+                        max2(std::fabs(cz), std::fabs(dz)));
+  sort3(mx, my, mz);
+  if (mx > 1e-58 && mz < 1e61) {
+    const double eps = 1.2466136531027298e-13 * mx * my * mz * (mz * mz);
+    if (det > eps) return 1;
+    if (det < -eps) return -1;
+  }
+  return insphere_exact_sign(a, b, c, d, e);
+}
+
+/// Static filter bounds (a first stage, before the per-call bounds above): every coordinate
+/// difference between points of a box is at most the box's side along that axis, so the FPG
+/// bounds evaluated at the sides hold for every call on points of the box. Cheaper than the
+/// per-call bounds (no maxima), looser on small configurations, which then go to the next stage.
+struct StaticFilter3d {
+  double orient = HUGE_VAL;  // HUGE_VAL: the stage is off
+  double insphere = HUGE_VAL;
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+  double hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+
+  bool contains(const double* p) const {
+    return p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] &&
+           p[2] <= hi[2];
+  }
+  /// Grows the box to hold p (call update() after).
+  void extend(const double* p) {
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = p[i] < lo[i] ? p[i] : lo[i];
+      hi[i] = p[i] > hi[i] ? p[i] : hi[i];
+    }
+  }
+  /// The bounds of the current box.
+  void update() {
+    double mx = hi[0] - lo[0], my = hi[1] - lo[1], mz = hi[2] - lo[2];
+    sort3(mx, my, mz);
+    const bool ok = mx > 1e-58 && mz < 1e61;
+    orient = ok ? 5.1107127829973299e-15 * mx * my * mz : HUGE_VAL;
+    insphere = ok ? 1.2466136531027298e-13 * mx * my * mz * (mz * mz) : HUGE_VAL;
+  }
+};
+
+/// orient3d_sign for points of the filter's box.
+inline int orient3d_sign(const StaticFilter3d& f, const double* a, const double* b,
+                         const double* c, const double* d) {
+  const double det = det3(b[0] - a[0], b[1] - a[1], b[2] - a[2], c[0] - a[0], c[1] - a[1],
+                          c[2] - a[2], d[0] - a[0], d[1] - a[1], d[2] - a[2]);
+  if (det > f.orient) return 1;
+  if (det < -f.orient) return -1;
+  return orient3d_sign(a, b, c, d);
+}
+
+/// insphere_sign for points of the filter's box.
+inline int insphere_sign(const StaticFilter3d& f, const double* a, const double* b,
+                         const double* c, const double* d, const double* e) {
+  const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
+  const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
+  const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
+  const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
+  const double det = det4(ax, ay, az, ax * ax + ay * ay + az * az, cx, cy, cz,
+                          cx * cx + cy * cy + cz * cz, bx, by, bz, bx * bx + by * by + bz * bz,
+                          dx, dy, dz, dx * dx + dy * dy + dz * dz);
+  if (det > f.insphere) return 1;
+  if (det < -f.insphere) return -1;
+  return insphere_sign(a, b, c, d, e);
+}
+
+}  // namespace riemesh::detail

@@ -1,0 +1,220 @@
+#include "generate/surface_delaunay3d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <deque>
+#include <string>
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace riemesh {
+
+namespace {
+
+using Face = std::array<Id, 3>;
+
+Face sorted(Id a, Id b, Id c) {
+  Face f = {a, b, c};
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+/// "vertices 3 and 7" (1-based).
+std::string edge_name(Id a, Id b) {
+  std::string s = "vertices ";
+  s += std::to_string(a + 1);
+  s += " and ";
+  s += std::to_string(b + 1);
+  return s;
+}
+
+/// Directed edges (a, b, triangle) of the surface, sorted by undirected edge.
+struct DirectedEdge {
+  Id lo, hi;
+  bool forward;  // a < b as traversed by the triangle
+  Id tri;
+};
+
+std::vector<DirectedEdge> directed_edges(const Mesh& s) {
+  std::vector<DirectedEdge> e;
+  e.reserve(3 * s.num_triangles());
+  for (std::size_t t = 0; t < s.num_triangles(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const Id a = s.triangles[3 * t + i], b = s.triangles[3 * t + (i + 1) % 3];
+      e.push_back({std::min(a, b), std::max(a, b), a < b, static_cast<Id>(t)});
+    }
+  std::sort(e.begin(), e.end(), [](const DirectedEdge& x, const DirectedEdge& y) {
+    return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.tri < y.tri;
+  });
+  return e;
+}
+
+void throw_defect(const char* what, std::size_t count, const std::string& first) {
+  std::string msg = "the surface cannot bound a volume: ";
+  msg += std::to_string(count);
+  msg += " ";
+  msg += what;
+  msg += " (first: ";
+  msg += first;
+  msg += ")";
+  throw InputError(msg);
+}
+
+}  // namespace
+
+void require_closed_surface(const Mesh& s) {
+  if (s.dim != 3 || s.num_triangles() == 0)
+    throw InputError("the surface cannot bound a volume: no triangles in 3D");
+  const std::size_t nv = s.num_vertices();
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    const Id* v = &s.triangles[3 * t];
+    for (int i = 0; i < 3; ++i)
+      if (v[i] < 0 || static_cast<std::size_t>(v[i]) >= nv)
+        throw InputError("triangle " + std::to_string(t + 1) + ": vertex id out of range");
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
+      throw_defect("triangles with a repeated vertex", 1, "triangle " + std::to_string(t + 1));
+  }
+  const std::vector<DirectedEdge> e = directed_edges(s);
+  std::size_t open = 0, non_manifold = 0, flipped = 0;
+  std::string first_open, first_non_manifold, first_flipped;
+  for (std::size_t i = 0; i < e.size();) {
+    std::size_t j = i;
+    while (j < e.size() && e[j].lo == e[i].lo && e[j].hi == e[i].hi) ++j;
+    const std::string name = edge_name(e[i].lo, e[i].hi);
+    if (j - i == 1 && open++ == 0) first_open = name;
+    if (j - i > 2 && non_manifold++ == 0) first_non_manifold = name;
+    if (j - i == 2 && e[i].forward == e[i + 1].forward && flipped++ == 0) first_flipped = name;
+    i = j;
+  }
+  if (non_manifold)
+    throw_defect("non-manifold edges (on more than two triangles)", non_manifold,
+                 "edge of " + first_non_manifold);
+  if (open) throw_defect("edges on one triangle only (holes)", open, "edge of " + first_open);
+  if (flipped)
+    throw_defect("edges traversed the same way by both their triangles (inconsistent orientation)",
+                 flipped, "edge of " + first_flipped);
+}
+
+SurfaceDelaunay delaunay_of_surface(const Mesh& s) {
+  require_closed_surface(s);
+  SurfaceDelaunay d;
+  std::vector<Id> old2new(s.num_vertices(), kNoId);
+  for (Id v : s.triangles) old2new[static_cast<std::size_t>(v)] = 0;
+  for (std::size_t v = 0; v < old2new.size(); ++v)
+    if (old2new[v] != kNoId) {
+      old2new[v] = static_cast<Id>(d.vertices.size());
+      d.vertices.push_back(static_cast<Id>(v));
+      d.coords.insert(d.coords.end(), s.coords.begin() + static_cast<std::ptrdiff_t>(3 * v),
+                      s.coords.begin() + static_cast<std::ptrdiff_t>(3 * v + 3));
+    }
+  d.tz = delaunay3d(d.coords);
+  for (std::size_t v = 0; v < d.tz.duplicate_of.size(); ++v)
+    if (d.tz.duplicate_of[v] != kNoId)
+      throw_defect("pairs of vertices at the same place", 1,
+                   edge_name(d.vertices[static_cast<std::size_t>(d.tz.duplicate_of[v])],
+                             d.vertices[v]));
+
+  // Edges and faces of the tetrahedralisation, sorted for lookups.
+  std::vector<std::pair<Id, Id>> tet_edges;
+  std::vector<Face> tet_faces;
+  tet_edges.reserve(6 * d.tz.num_tets());
+  tet_faces.reserve(4 * d.tz.num_tets());
+  for (std::size_t t = 0; t < d.tz.num_tets(); ++t) {
+    const Id* v = &d.tz.tets[4 * t];
+    for (int i = 0; i < 4; ++i) {
+      for (int j = i + 1; j < 4; ++j) tet_edges.push_back(std::minmax(v[i], v[j]));
+      tet_faces.push_back(sorted(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]));
+    }
+  }
+  std::sort(tet_edges.begin(), tet_edges.end());
+  std::sort(tet_faces.begin(), tet_faces.end());
+  std::vector<std::pair<Id, Id>> surface_edges;
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    const Id* v = &s.triangles[3 * t];
+    const Id a = old2new[static_cast<std::size_t>(v[0])], b = old2new[static_cast<std::size_t>(v[1])],
+             c = old2new[static_cast<std::size_t>(v[2])];
+    ++d.num_faces;
+    if (!std::binary_search(tet_faces.begin(), tet_faces.end(), sorted(a, b, c))) ++d.missing_faces;
+    surface_edges.push_back(std::minmax(a, b));
+    surface_edges.push_back(std::minmax(b, c));
+    surface_edges.push_back(std::minmax(c, a));
+  }
+  std::sort(surface_edges.begin(), surface_edges.end());
+  surface_edges.erase(std::unique(surface_edges.begin(), surface_edges.end()), surface_edges.end());
+  d.num_edges = surface_edges.size();
+  for (const auto& e : surface_edges)
+    if (!std::binary_search(tet_edges.begin(), tet_edges.end(), e)) ++d.missing_edges;
+  return d;
+}
+
+Mesh volume_inside(const Mesh& s, const SurfaceDelaunay& d) {
+  if (!d.conforming()) throw Error("volume_inside: the surface is not in the tetrahedralisation");
+  std::vector<Id> old2new(s.num_vertices(), kNoId);
+  for (std::size_t k = 0; k < d.vertices.size(); ++k)
+    old2new[static_cast<std::size_t>(d.vertices[k])] = static_cast<Id>(k);
+  std::vector<Face> surface_faces;
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    const Id* v = &s.triangles[3 * t];
+    surface_faces.push_back(sorted(old2new[static_cast<std::size_t>(v[0])],
+                                   old2new[static_cast<std::size_t>(v[1])],
+                                   old2new[static_cast<std::size_t>(v[2])]));
+  }
+  std::sort(surface_faces.begin(), surface_faces.end());
+  const auto on_surface = [&](const Id* tet, int i) {
+    return std::binary_search(surface_faces.begin(), surface_faces.end(),
+                              sorted(tet[(i + 1) % 4], tet[(i + 2) % 4], tet[(i + 3) % 4]));
+  };
+  // 0-1 breadth-first search from outside the hull: crossing a surface face costs 1; a tet is
+  // inside when its distance is odd.
+  const std::size_t nt = d.tz.num_tets();
+  std::vector<int> depth(nt, -1);
+  std::deque<std::pair<Id, int>> queue;
+  for (std::size_t t = 0; t < nt; ++t)
+    for (int i = 0; i < 4; ++i)
+      if (d.tz.tet2tet[4 * t + i] == kNoId) {
+        const int cost = on_surface(&d.tz.tets[4 * t], i) ? 1 : 0;
+        if (cost == 0)
+          queue.push_front({static_cast<Id>(t), 0});
+        else
+          queue.push_back({static_cast<Id>(t), 1});
+      }
+  while (!queue.empty()) {
+    const auto [t, dist] = queue.front();
+    queue.pop_front();
+    const auto tu = static_cast<std::size_t>(t);
+    if (depth[tu] >= 0) continue;
+    depth[tu] = dist;
+    for (int i = 0; i < 4; ++i) {
+      const Id n = d.tz.tet2tet[4 * tu + i];
+      if (n == kNoId || depth[static_cast<std::size_t>(n)] >= 0) continue;
+      if (on_surface(&d.tz.tets[4 * tu], i))
+        queue.push_back({n, dist + 1});
+      else
+        queue.push_front({n, dist});
+    }
+  }
+  Mesh out;
+  out.dim = 3;
+  out.coords = d.coords;
+  for (Id v : d.vertices) {
+    const auto vu = static_cast<std::size_t>(v);
+    out.vert_ref.push_back(vu < s.vert_ref.size() ? s.vert_ref[vu] : 0);
+    out.vert_tag.push_back(vu < s.vert_tag.size() ? s.vert_tag[vu] : 0);
+  }
+  for (std::size_t t = 0; t < nt; ++t)
+    if (depth[t] % 2 == 1) {
+      out.tets.insert(out.tets.end(), d.tz.tets.begin() + static_cast<std::ptrdiff_t>(4 * t),
+                      d.tz.tets.begin() + static_cast<std::ptrdiff_t>(4 * t + 4));
+      out.tet_ref.push_back(0);
+    }
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    for (int i = 0; i < 3; ++i)
+      out.triangles.push_back(old2new[static_cast<std::size_t>(s.triangles[3 * t + i])]);
+    out.tri_ref.push_back(t < s.tri_ref.size() ? s.tri_ref[t] : 0);
+    out.tri_tag.push_back(t < s.tri_tag.size() ? s.tri_tag[t] : 0);
+  }
+  return out;
+}
+
+}  // namespace riemesh

@@ -1,0 +1,45 @@
+#pragma once
+// First steps of meshing a volume from its boundary surface (BOOK.md §4, Delaunay meshing): the
+// surface is validated (closed, manifold, consistently oriented), its vertices are
+// tetrahedralised by the Delaunay kernel, the surface edges and triangles missing from that
+// tetrahedralisation are counted and, when none is missing, the tetrahedra inside are kept.
+// Boundary recovery (restoring missing edges and faces, with Steiner points where unavoidable) is
+// NOT implemented: a surface whose triangles are not all Delaunay faces cannot be meshed yet.
+#include <cstddef>
+#include <vector>
+
+#include "generate/delaunay3d.hpp"
+#include "mesh/mesh.hpp"
+
+namespace riemesh {
+
+/// Throws InputError naming the first defect that keeps the triangles of `surface` from bounding
+/// a volume: no triangles, a triangle with a repeated vertex, an edge on more than two triangles
+/// (non-manifold), an edge on one triangle only (a hole), two triangles traversing their
+/// common edge the same way (inconsistent orientation), two vertices at the same place. Vertex
+/// numbers in messages are 1-based, as in the files. Self-intersections are not detected.
+void require_closed_surface(const Mesh& surface);
+
+/// The Delaunay tetrahedralisation of a surface's vertices and how much of the surface it holds.
+struct SurfaceDelaunay {
+  std::vector<Id> vertices;     // the surface's vertices (ids in the surface mesh), increasing
+  std::vector<double> coords;   // their coordinates; tets number vertices in this list
+  Tetrahedralization tz;
+  std::size_t num_edges = 0;      // distinct surface edges
+  std::size_t missing_edges = 0;  // surface edges that are no tet edge
+  std::size_t num_faces = 0;      // surface triangles
+  std::size_t missing_faces = 0;  // surface triangles that are no tet face
+  bool conforming() const { return missing_faces == 0; }
+};
+
+/// Validates the surface (require_closed_surface) and tetrahedralises the vertices of its
+/// triangles (vertices of no triangle are ignored).
+SurfaceDelaunay delaunay_of_surface(const Mesh& surface);
+
+/// The volume mesh bounded by a conforming surface: the tetrahedra reached from outside the hull
+/// by crossing the surface an odd number of times (nested shells alternate), the surface's
+/// triangles (refs kept) as boundary faces, and its vertices (refs kept), renumbered as in
+/// d.vertices. Tet refs are 0. Error if d is not conforming.
+Mesh volume_inside(const Mesh& surface, const SurfaceDelaunay& d);
+
+}  // namespace riemesh

@@ -1,0 +1,183 @@
+// The 3D Delaunay kernel: the Delaunay property and the hull checked with the exact predicates on
+// random, grid (cospherical), spherical, clustered and duplicated points, in every order.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/predicates.hpp"
+#include "generate/delaunay3d.hpp"
+#include "generate/filtered_predicates3d.hpp"
+#include "generate/delaunay3d_check.hpp"
+
+namespace riemesh {
+namespace {
+
+using test::expect_delaunay;
+using test::total_volume;
+
+constexpr InsertionOrder kOrders[] = {InsertionOrder::kAsGiven, InsertionOrder::kHilbert,
+                                      InsertionOrder::kBrio};
+
+std::vector<double> random_points(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> xyz(3 * n);
+  for (double& x : xyz) x = u(rng);
+  return xyz;
+}
+
+/// The (n+1)^3 nodes of a unit grid: every cell's 8 corners are cospherical.
+std::vector<double> grid_points(int n) {
+  std::vector<double> xyz;
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) xyz.insert(xyz.end(), {double(i) / n, double(j) / n, double(k) / n});
+  return xyz;
+}
+
+TEST(Delaunay3d, FilteredSignsAgreeWithExactOnes) {
+  // Random points, then near-degenerate ones: coplanar up to one ulp and grid cospherical.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  detail::StaticFilter3d box;  // the static stage over [-2, 2]^3, which holds every point below
+  const double lo[3] = {-2, -2, -2}, hi[3] = {2, 2, 2};
+  box.extend(lo);
+  box.extend(hi);
+  box.update();
+  for (int trial = 0; trial < 20000; ++trial) {
+    double p[5][3];
+    for (auto& q : p)
+      for (double& x : q) x = u(rng);
+    if (trial % 3 == 1)  // p[3] on the plane of p[0..2], rounded
+      for (int k = 0; k < 3; ++k) p[3][k] = p[0][k] + 0.3 * (p[1][k] - p[0][k]) + 0.5 * (p[2][k] - p[0][k]);
+    if (trial % 3 == 2)  // integer points: exact zeros are frequent
+      for (auto& q : p)
+        for (double& x : q) x = std::round(2 * x);
+    const auto sign = [](double x) { return (x > 0) - (x < 0); };
+    ASSERT_EQ(detail::orient3d_sign(p[0], p[1], p[2], p[3]),
+              sign(exact::orient3d(p[0], p[1], p[2], p[3])));
+    ASSERT_EQ(detail::insphere_sign(p[0], p[1], p[2], p[3], p[4]),
+              sign(exact::insphere(p[0], p[1], p[2], p[3], p[4])));
+    ASSERT_EQ(detail::orient3d_sign(box, p[0], p[1], p[2], p[3]),
+              sign(exact::orient3d(p[0], p[1], p[2], p[3])));
+    ASSERT_EQ(detail::insphere_sign(box, p[0], p[1], p[2], p[3], p[4]),
+              sign(exact::insphere(p[0], p[1], p[2], p[3], p[4])));
+  }
+}
+
+TEST(Delaunay3d, InsphereSignConvention) {
+  const double a[3] = {0, 0, 0}, b[3] = {1, 0, 0}, c[3] = {0, 1, 0}, d[3] = {0, 0, 1};
+  const double in[3] = {0.25, 0.25, 0.25}, out[3] = {2, 2, 2}, on[3] = {1, 1, 1};
+  EXPECT_EQ(detail::orient3d_sign(a, b, c, d), 1);
+  EXPECT_EQ(detail::insphere_sign(a, b, c, d, in), 1);
+  EXPECT_EQ(detail::insphere_sign(a, b, c, d, out), -1);
+  EXPECT_EQ(detail::insphere_sign(a, b, c, d, on), 0);  // (1,1,1) is on the sphere
+}
+
+TEST(Delaunay3d, SingleTetrahedron) {
+  const std::vector<double> xyz = {0, 0, 0, 0, 0, 1, 0, 1, 0, 1, 0, 0};
+  const Tetrahedralization tz = delaunay3d(xyz);
+  ASSERT_EQ(tz.num_tets(), 1u);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(tz.tet2tet[i], kNoId);
+  expect_delaunay(xyz, tz);
+  EXPECT_DOUBLE_EQ(total_volume(xyz, tz), 1.0 / 6);
+}
+
+TEST(Delaunay3d, RandomPointsInEveryOrder) {
+  const std::vector<double> xyz = random_points(3000, 1);
+  for (InsertionOrder order : kOrders) {
+    const Tetrahedralization tz = delaunay3d(xyz, order);
+    expect_delaunay(xyz, tz);
+    // About 6.5 tets per point for uniform points in a cube (fewer near the hull).
+    EXPECT_GT(tz.num_tets(), 5u * 3000);
+    EXPECT_LT(tz.num_tets(), 7u * 3000);
+  }
+}
+
+TEST(Delaunay3d, GridPointsAreCosphericalEverywhere) {
+  // Every cell of the grid is cut into tets whose circumspheres hold the cell's 8 corners on
+  // them; the tets fill the cube exactly.
+  const std::vector<double> xyz = grid_points(8);
+  for (InsertionOrder order : kOrders) {
+    const Tetrahedralization tz = delaunay3d(xyz, order);
+    expect_delaunay(xyz, tz);
+    EXPECT_NEAR(total_volume(xyz, tz), 1.0, 1e-12);
+    // 512 cells, 5 or 6 tets each (flat tets would have failed expect_delaunay).
+    EXPECT_GE(tz.num_tets(), 5u * 512);
+    EXPECT_LE(tz.num_tets(), 6u * 512);
+  }
+}
+
+TEST(Delaunay3d, IntegerPointsOfOneSphere) {
+  // All integer points with x² + y² + z² = 11² (exactly cospherical) and the centre.
+  std::vector<double> xyz;
+  for (int x = -11; x <= 11; ++x)
+    for (int y = -11; y <= 11; ++y)
+      for (int z = -11; z <= 11; ++z)
+        if (x * x + y * y + z * z == 121) xyz.insert(xyz.end(), {double(x), double(y), double(z)});
+  ASSERT_GT(xyz.size() / 3, 30u);
+  for (InsertionOrder order : kOrders) expect_delaunay(xyz, delaunay3d(xyz, order));
+  xyz.insert(xyz.end(), {0.0, 0.0, 0.0});
+  for (InsertionOrder order : kOrders) expect_delaunay(xyz, delaunay3d(xyz, order));
+}
+
+TEST(Delaunay3d, ClusteredPoints) {
+  // Tight clusters 1e-6 wide around a few centres, and points on coordinate planes.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> xyz;
+  for (int c = 0; c < 6; ++c) {
+    const double centre[3] = {u(rng), u(rng), u(rng)};
+    for (int k = 0; k < 300; ++k)
+      for (int i = 0; i < 3; ++i) xyz.push_back(centre[i] + 1e-6 * u(rng));
+  }
+  for (int k = 0; k < 300; ++k) xyz.insert(xyz.end(), {u(rng), u(rng), 0.0});
+  for (InsertionOrder order : kOrders) expect_delaunay(xyz, delaunay3d(xyz, order));
+}
+
+TEST(Delaunay3d, DuplicatesAreReportedNotInserted) {
+  std::vector<double> xyz = grid_points(3);
+  const std::size_t n = xyz.size() / 3;
+  for (std::size_t v = 0; v < n; v += 5) xyz.insert(xyz.end(), xyz.begin() + 3 * v, xyz.begin() + 3 * v + 3);
+  for (InsertionOrder order : kOrders) {
+    const Tetrahedralization tz = delaunay3d(xyz, order);
+    expect_delaunay(xyz, tz);
+    std::size_t duplicates = 0;
+    for (std::size_t q = 0; q < xyz.size() / 3; ++q) {
+      const Id d = tz.duplicate_of[q];
+      if (d == kNoId) continue;
+      ++duplicates;
+      for (int i = 0; i < 3; ++i) EXPECT_EQ(xyz[3 * q + i], xyz[3 * static_cast<std::size_t>(d) + i]);
+    }
+    EXPECT_EQ(duplicates, (n + 4) / 5);
+  }
+}
+
+TEST(Delaunay3d, CoplanarOrTooFewPointsAreInputErrors) {
+  EXPECT_THROW(delaunay3d({0, 0, 0, 1, 0, 0, 0, 1, 0}), InputError);
+  EXPECT_THROW(delaunay3d({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 0}), InputError);
+  EXPECT_THROW(delaunay3d({0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3}), InputError);
+}
+
+TEST(Delaunay3d, Deterministic) {
+  const std::vector<double> xyz = random_points(2000, 11);
+  const Tetrahedralization a = delaunay3d(xyz);
+  const Tetrahedralization b = delaunay3d(xyz);
+  EXPECT_EQ(a.tets, b.tets);
+  EXPECT_EQ(a.tet2tet, b.tet2tet);
+}
+
+TEST(Delaunay3d, BrioIsAPermutation) {
+  const std::vector<double> xyz = random_points(5000, 5);
+  std::vector<Id> order = insertion_order(xyz, InsertionOrder::kBrio);
+  std::sort(order.begin(), order.end());
+  for (std::size_t i = 0; i < order.size(); ++i) ASSERT_EQ(order[i], static_cast<Id>(i));
+}
+
+}  // namespace
+}  // namespace riemesh

@@ -1,0 +1,190 @@
+// Volumes from closed surfaces: validation of the surface, Delaunay tetrahedralisation of its
+// vertices, missing boundary counts and the tets inside.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "generate/surface_delaunay3d.hpp"
+#include "io/mesh_file.hpp"
+#include "mesh/check.hpp"
+#include "mesh/fixtures.hpp"
+#include "mesh/stats.hpp"
+
+namespace riemesh {
+namespace {
+
+/// The boundary of the tetrahedron (0,0,0), (s,0,0), (0,s,0), (0,0,s) shifted by o, outward when
+/// `outward`, starting at vertex id `first`.
+void add_tet_surface(Mesh& m, double s, double o, bool outward) {
+  const Id f = static_cast<Id>(m.num_vertices());
+  m.coords.insert(m.coords.end(), {o, o, o, o + s, o, o, o, o + s, o, o, o, o + s});
+  std::vector<Id> t = {f, f + 2, f + 1, f, f + 1, f + 3, f, f + 3, f + 2, f + 1, f + 2, f + 3};
+  if (!outward)
+    for (std::size_t k = 0; k < t.size(); k += 3) std::swap(t[k + 1], t[k + 2]);
+  m.triangles.insert(m.triangles.end(), t.begin(), t.end());
+  m.vert_ref.resize(m.num_vertices(), 0);
+  m.vert_tag.resize(m.num_vertices(), 0);
+  m.tri_ref.resize(m.num_triangles(), 1);
+  m.tri_tag.resize(m.num_triangles(), 0);
+}
+
+double volume(const Mesh& m) {
+  double sum = 0;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    const double* p[4];
+    for (int i = 0; i < 4; ++i) p[i] = &m.coords[3 * static_cast<std::size_t>(m.tets[4 * t + i])];
+    double e[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) e[i][k] = p[i + 1][k] - p[0][k];
+    sum += (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+            e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+            e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) / 6;
+  }
+  return sum;
+}
+
+TEST(SurfaceDelaunay3d, TetrahedronSurfaceGivesOneTet) {
+  Mesh s;
+  s.dim = 3;
+  add_tet_surface(s, 1.0, 0.0, true);
+  const SurfaceDelaunay d = delaunay_of_surface(s);
+  EXPECT_EQ(d.num_faces, 4u);
+  EXPECT_EQ(d.num_edges, 6u);
+  EXPECT_TRUE(d.conforming());
+  const Mesh v = volume_inside(s, d);
+  EXPECT_EQ(v.num_tets(), 1u);
+  EXPECT_TRUE(check_mesh(v).valid());
+}
+
+TEST(SurfaceDelaunay3d, ConvexIcosphereIsFilled) {
+  // A strictly convex polyhedron: its triangles are the hull's facets, all Delaunay faces.
+  const Mesh s = sphere_surface(3);
+  const SurfaceDelaunay d = delaunay_of_surface(s);
+  EXPECT_EQ(d.missing_faces, 0u);
+  EXPECT_EQ(d.missing_edges, 0u);
+  const Mesh v = volume_inside(s, d);
+  EXPECT_EQ(v.num_tets(), d.tz.num_tets());  // nothing outside a convex surface
+  EXPECT_TRUE(check_mesh(v).valid());
+  EXPECT_GT(volume(v), 0.95 * 4.0 / 3 * M_PI);
+  EXPECT_LT(volume(v), 4.0 / 3 * M_PI);
+}
+
+TEST(SurfaceDelaunay3d, NestedShellsKeepTheSpaceBetweenThem) {
+  // An outer tetrahedron of side 10 and an inner one of side 1, inward: the volume between.
+  Mesh s;
+  s.dim = 3;
+  add_tet_surface(s, 10.0, 0.0, true);
+  add_tet_surface(s, 1.0, 1.0, false);
+  const SurfaceDelaunay d = delaunay_of_surface(s);
+  ASSERT_TRUE(d.conforming());
+  const Mesh v = volume_inside(s, d);
+  EXPECT_NEAR(volume(v), (1000.0 - 1.0) / 6, 1e-9);
+  EXPECT_TRUE(check_mesh(v).valid());
+}
+
+/// A twisted triangular prism (bottom radius 1 at z = 0, top radius 0.8 at z = 1 turned by 30°,
+/// so no 5 points are cospherical), each side quad split along one diagonal or the other. One
+/// choice is the convex hull; the other is Schönhardt's polyhedron, which has no
+/// tetrahedralisation without Steiner points, so some of its triangles are no Delaunay faces.
+Mesh twisted_prism(bool other_diagonal) {
+  Mesh s;
+  s.dim = 3;
+  for (int level = 0; level < 2; ++level)
+    for (int i = 0; i < 3; ++i) {
+      const double angle = (120.0 * i + 30.0 * level) * M_PI / 180, r = level ? 0.8 : 1.0;
+      s.coords.insert(s.coords.end(), {r * std::cos(angle), r * std::sin(angle), double(level)});
+    }
+  s.triangles = {0, 2, 1, 3, 4, 5};
+  for (Id i = 0; i < 3; ++i) {
+    const Id a = i, a1 = (i + 1) % 3, b = 3 + i, b1 = 3 + (i + 1) % 3;
+    if (other_diagonal)
+      s.triangles.insert(s.triangles.end(), {a, a1, b, a1, b1, b});
+    else
+      s.triangles.insert(s.triangles.end(), {a, a1, b1, a, b1, b});
+  }
+  s.vert_ref.assign(6, 0);
+  s.vert_tag.assign(6, 0);
+  s.tri_ref.assign(8, 1);
+  s.tri_tag.assign(8, 0);
+  return s;
+}
+
+TEST(SurfaceDelaunay3d, SchonhardtPrismIsReportedNotFaked) {
+  const SurfaceDelaunay d0 = delaunay_of_surface(twisted_prism(false));
+  const SurfaceDelaunay d1 = delaunay_of_surface(twisted_prism(true));
+  // Same 6 points in convex position, same Delaunay tetrahedralisation (3 or 4 tets).
+  EXPECT_GE(d0.tz.num_tets(), 3u);
+  EXPECT_LE(d0.tz.num_tets(), 4u);
+  EXPECT_EQ(d0.tz.tets, d1.tz.tets);
+  ASSERT_NE(d0.conforming(), d1.conforming());  // exactly one is the hull
+  const SurfaceDelaunay& hull = d0.conforming() ? d0 : d1;
+  const SurfaceDelaunay& schonhardt = d0.conforming() ? d1 : d0;
+  EXPECT_GT(schonhardt.missing_faces, 0u);
+  EXPECT_GT(schonhardt.missing_edges, 0u);  // its reflex diagonals are no tet edges
+  EXPECT_THROW(volume_inside(twisted_prism(&schonhardt == &d1), schonhardt), Error);
+  const Mesh v = volume_inside(twisted_prism(&hull == &d1), hull);
+  EXPECT_EQ(v.num_tets(), hull.tz.num_tets());  // a convex surface keeps every tet
+  EXPECT_TRUE(check_mesh(v).valid());
+}
+
+TEST(SurfaceDelaunay3d, DefectsAreNamed) {
+  const auto message = [](const Mesh& m) {
+    try {
+      require_closed_surface(m);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const Mesh good = sphere_surface(1);
+  EXPECT_EQ(message(good), "no error");
+  Mesh open = good;  // one triangle removed: its 3 edges bound one triangle each
+  open.triangles.resize(open.triangles.size() - 3);
+  open.tri_ref.pop_back();
+  open.tri_tag.pop_back();
+  EXPECT_NE(message(open).find("3 edges on one triangle only (holes)"), std::string::npos);
+  Mesh flipped = good;
+  std::swap(flipped.triangles[1], flipped.triangles[2]);
+  EXPECT_NE(message(flipped).find("inconsistent orientation"), std::string::npos);
+  Mesh fin = good;  // a fin on the edge of the first triangle: that edge has 3 triangles
+  fin.coords.insert(fin.coords.end(), {5.0, 5.0, 5.0});
+  fin.triangles.insert(fin.triangles.end(),
+                       {fin.triangles[0], fin.triangles[1], static_cast<Id>(fin.num_vertices() - 1)});
+  EXPECT_NE(message(fin).find("non-manifold edges"), std::string::npos);
+  Mesh none;
+  EXPECT_NE(message(none).find("no triangles"), std::string::npos);
+}
+
+TEST(SurfaceDelaunay3d, CoincidentVerticesAreNamed) {
+  Mesh s;
+  s.dim = 3;
+  add_tet_surface(s, 1.0, 0.0, true);
+  add_tet_surface(s, 1.0, 0.0, true);  // a second copy of the same tetrahedron, own vertices
+  EXPECT_THROW(delaunay_of_surface(s), InputError);
+}
+
+TEST(SurfaceDelaunay3d, SharedSurfacesAreCounted) {
+  // The real surfaces: every one is closed and manifold; the counts are consistent. Which faces
+  // are missing is what boundary recovery will have to restore.
+  for (const char* name : {"bunny", "elephant", "fandisk", "rotor"}) {
+    const Mesh s = read_mesh(std::string(RIEMESH_SHARED_DATA) + "/surf/" + name + ".mesh");
+    const SurfaceDelaunay d = delaunay_of_surface(s);
+    EXPECT_EQ(d.num_faces, s.num_triangles()) << name;
+    EXPECT_EQ(2 * d.num_edges, 3 * d.num_faces) << name;  // closed: each edge on 2 triangles
+    EXPECT_LE(d.missing_faces, d.num_faces) << name;
+    // A face present implies its 3 edges present: missing edges touch missing faces only.
+    EXPECT_LE(d.missing_edges, 3 * d.missing_faces) << name;
+    if (d.conforming()) {
+      EXPECT_TRUE(check_mesh(volume_inside(s, d)).valid()) << name;
+    }
+    std::printf("%s: %zu of %zu faces and %zu of %zu edges missing\n", name, d.missing_faces,
+                d.num_faces, d.missing_edges, d.num_edges);
+  }
+}
+
+}  // namespace
+}  // namespace riemesh
