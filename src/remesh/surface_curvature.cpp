@@ -156,7 +156,10 @@ std::vector<VertexCurvature> vertex_curvatures(const Mesh& mesh, const Adjacency
   if (features.edge_feature.size() != adj.num_edges() ||
       sectors.corner2sector.size() != mesh.triangles.size())
     throw InputError("vertex_curvatures: features or sectors not built from this mesh");
-  std::vector<VertexCurvature> out(nv);
+  // Vertices of no triangle keep a flat frame (zero curvature, not fitted).
+  VertexCurvature unused;
+  unused.geometry = flat_geometry(Vec3::unit(2), Vec3::unit(0), Vec3::unit(1));
+  std::vector<VertexCurvature> out(nv, unused);
   Gather g;
   g.vstamp.assign(nv, 0);
   g.ring1stamp.assign(nv, 0);

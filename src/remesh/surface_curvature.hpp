@@ -43,7 +43,8 @@ struct VertexCurvature {
 /// Quadric fit of one sector: neighbours `q` around `p`, frame normal `n` (unit).
 VertexCurvature fit_quadric(const Vec3& p, const Vec3& n, const std::vector<Vec3>& q);
 
-/// Curvature at each vertex (the sector of largest |k1|).
+/// Curvature at each vertex (the sector of largest |k1|); a vertex of no triangle gets zero
+/// curvature in the frame (x, y, z), fitted = false.
 std::vector<VertexCurvature> vertex_curvatures(const Mesh& mesh, const Adjacency& adj,
                                                const SurfaceFeatures& features,
                                                const SurfaceSectors& sectors);

@@ -82,16 +82,12 @@ void mark_given_edges(const Mesh& mesh, const Adjacency& adj, SurfaceFeatures& f
 
 void find_corners(const Mesh& mesh, const Adjacency& adj, double angle, SurfaceFeatures& f) {
   const std::size_t nv = mesh.num_vertices();
-  std::vector<Id> other(2 * nv, kNoId);  // the first two feature neighbours of each vertex
   for (std::size_t e = 0; e < adj.num_edges(); ++e) {
     if (!f.edge_feature[e]) continue;
-    const Id a = adj.edges[2 * e], b = adj.edges[2 * e + 1];
-    for (const auto& [v, w] : {std::pair{a, b}, std::pair{b, a}}) {
-      const auto s = static_cast<std::size_t>(v);
-      if (f.feature_degree[s] < 2) other[2 * s + f.feature_degree[s]] = w;
-      ++f.feature_degree[s];
-    }
+    ++f.feature_degree[static_cast<std::size_t>(adj.edges[2 * e])];
+    ++f.feature_degree[static_cast<std::size_t>(adj.edges[2 * e + 1])];
   }
+  const std::vector<Id> other = feature_neighbours(adj, f);
   for (std::size_t v = 0; v < nv; ++v) {
     std::uint8_t& tag = f.vert_tag[v];
     if (mesh.vert_tag.size() == nv) tag |= mesh.vert_tag[v] & (kTagCorner | kTagRequired);
@@ -110,6 +106,21 @@ void find_corners(const Mesh& mesh, const Adjacency& adj, double angle, SurfaceF
 void FeatureOptions::validate() const {
   if (!(angle_deg > 0.0 && angle_deg < 180.0))
     throw InputError("feature angle must be in (0, 180) degrees");
+}
+
+std::vector<Id> feature_neighbours(const Adjacency& adj, const SurfaceFeatures& features) {
+  std::vector<Id> other(2 * adj.num_vertices, kNoId);
+  std::vector<int> count(adj.num_vertices, 0);
+  for (std::size_t e = 0; e < adj.num_edges(); ++e) {
+    if (!features.edge_feature[e]) continue;
+    const Id a = adj.edges[2 * e], b = adj.edges[2 * e + 1];
+    for (const auto& [v, w] : {std::pair{a, b}, std::pair{b, a}}) {
+      const auto s = static_cast<std::size_t>(v);
+      if (count[s] < 2) other[2 * s + count[s]] = w;
+      ++count[s];
+    }
+  }
+  return other;
 }
 
 std::vector<Vec3> triangle_normals(const Mesh& mesh) {

@@ -61,6 +61,10 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh, const Adjacency& adj);
 SurfaceFeatures detect_features(const Mesh& mesh, const Adjacency& adj,
                                 const FeatureOptions& options);
 
+/// The first two feature neighbours of each vertex (2 per vertex, kNoId where fewer): for a
+/// vertex inside a feature line (degree 2), its predecessor and successor on the line.
+std::vector<Id> feature_neighbours(const Adjacency& adj, const SurfaceFeatures& features);
+
 /// Sectors: the triangles of a vertex's ball linked through its non-feature edges. A smooth
 /// vertex has one sector, a vertex inside a ridge two, a corner one per wedge. Each sector has
 /// its own angle-weighted normal (one side of a ridge never sees the normal of the other).
