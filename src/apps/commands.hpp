@@ -31,5 +31,7 @@ void register_adapt(CLI::App& app);
 void register_loop(CLI::App& app);
 /// `riemesh transfer OLD.mesh OLD.sol NEW.mesh -o NEW.sol`: P1 transfer of vertex fields.
 void register_transfer(CLI::App& app);
+/// `riemesh distance A B [--samples N] [--json]`: sampled Hausdorff distances (cmd_distance.cpp).
+void register_distance(CLI::App& app);
 
 }  // namespace riemesh::cli
