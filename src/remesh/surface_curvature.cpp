@@ -149,21 +149,51 @@ VertexCurvature fit_quadric(const Vec3& p, const Vec3& n_in, const std::vector<V
   return out;
 }
 
+namespace {
+
+Gather make_gather(const Mesh& mesh) {
+  Gather g;
+  g.vstamp.assign(mesh.num_vertices(), 0);
+  g.ring1stamp.assign(mesh.num_vertices(), 0);
+  g.tstamp.assign(mesh.num_triangles(), 0);
+  return g;
+}
+
+void require_built(const Mesh& mesh, const Adjacency& adj, const SurfaceFeatures& features,
+                   const SurfaceSectors& sectors) {
+  if (features.edge_feature.size() != adj.num_edges() ||
+      sectors.corner2sector.size() != mesh.triangles.size())
+    throw InputError("surface curvature: features or sectors not built from this mesh");
+}
+
+}  // namespace
+
+std::vector<Vec3> fitted_sector_normals(const Mesh& mesh, const Adjacency& adj,
+                                        const SurfaceFeatures& features,
+                                        const SurfaceSectors& sectors) {
+  require_built(mesh, adj, features, sectors);
+  std::vector<Vec3> n = sectors.normal;
+  Gather g = make_gather(mesh);
+  std::vector<Vec3> pts;
+  for (std::size_t sec = 0; sec < sectors.num_sectors(); ++sec) {
+    const Id v = sectors.sector2vert[sec];
+    gather_points(mesh, adj, features, sectors, v, static_cast<Id>(sec), g, pts);
+    const VertexCurvature c = fit_quadric(vertex_at(mesh, v), sectors.normal[sec], pts);
+    if (c.fitted) n[sec] = normalize(c.geometry.normal);
+  }
+  return n;
+}
+
 std::vector<VertexCurvature> vertex_curvatures(const Mesh& mesh, const Adjacency& adj,
                                                const SurfaceFeatures& features,
                                                const SurfaceSectors& sectors) {
   const std::size_t nv = mesh.num_vertices();
-  if (features.edge_feature.size() != adj.num_edges() ||
-      sectors.corner2sector.size() != mesh.triangles.size())
-    throw InputError("vertex_curvatures: features or sectors not built from this mesh");
+  require_built(mesh, adj, features, sectors);
   // Vertices of no triangle keep a flat frame (zero curvature, not fitted).
   VertexCurvature unused;
   unused.geometry = flat_geometry(Vec3::unit(2), Vec3::unit(0), Vec3::unit(1));
   std::vector<VertexCurvature> out(nv, unused);
-  Gather g;
-  g.vstamp.assign(nv, 0);
-  g.ring1stamp.assign(nv, 0);
-  g.tstamp.assign(mesh.num_triangles(), 0);
+  Gather g = make_gather(mesh);
   std::vector<Vec3> pts;
   std::size_t sec = 0;
   for (std::size_t v = 0; v < nv; ++v) {

@@ -49,4 +49,11 @@ std::vector<VertexCurvature> vertex_curvatures(const Mesh& mesh, const Adjacency
                                                const SurfaceFeatures& features,
                                                const SurfaceSectors& sectors);
 
+/// The normal of each sector refined by its quadric fit (the normal of the fitted graph at the
+/// vertex; O(h²) on smooth surfaces where the angle-weighted normal is O(h) on irregular
+/// meshes). Sectors whose fit fails keep their angle-weighted normal.
+std::vector<Vec3> fitted_sector_normals(const Mesh& mesh, const Adjacency& adj,
+                                        const SurfaceFeatures& features,
+                                        const SurfaceSectors& sectors);
+
 }  // namespace riemesh
