@@ -1,0 +1,57 @@
+#pragma once
+// A first isotropic surface remesher (issue #6): local operators on a triangulated surface in
+// 3D driven by a size field — the geometric size from the curvature and `hausd`
+// (surface_metric.hpp, smallest principal size), capped by `hsiz` — with every new or moved
+// point placed on the input's smooth reconstruction (surface_projection.hpp).
+//
+// Operators, in passes of independent operations (each pass rebuilds the adjacency):
+//   split    edges longer than √2 in the size field; the new point on the reconstruction (on the
+//            feature curve for a feature edge);
+//   collapse edges shorter than 1/√2, a vertex into a neighbour: corners never move, a ridge
+//            vertex only along its feature line, link condition (no topology change), no
+//            triangle turned by more than 30° nor below quality min(0.3, ½ the old minimum), no
+//            new edge longer than √2, and the removed vertex and the new triangles within
+//            hausd of the input;
+//   swap     non-feature edges when the smallest quality of the pair grows by 5% and the new
+//            pair stays within hausd of the old edge and of the input (dihedral check);
+//   smooth   vertices to the mean of their neighbours (ridge vertices: of their two line
+//            neighbours), placed back on the reconstruction, kept when the smallest quality of
+//            the ball grows and the triangles turn by less than 30°.
+// Refs of triangles and feature edges are carried (a patch keeps its ref), corners never move.
+#include <cstddef>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "remesh/surface_features.hpp"
+
+namespace riemesh {
+
+struct SurfaceAdaptOptions {
+  double hausd = 0.01;  ///< chordal tolerance (absolute), as mmgs's -hausd
+  double hsiz = 0.0;    ///< uniform size cap (0: only the geometric size)
+  double hmin = 0.0;    ///< <= 0: hausd
+  double hmax = 0.0;    ///< <= 0: the bounding-box diagonal
+  double hgrad = 1.3;   ///< H-shock gradation of the sizes (<= 0: none)
+  FeatureOptions features;
+  int max_cycles = 12;  ///< split/collapse/swap/smooth cycles
+  bool insert = true, swap = true, move = true;
+  void validate() const;  ///< throws InputError for a bad value
+};
+
+struct SurfaceAdaptReport {
+  std::size_t splits = 0, collapses = 0, swaps = 0, moves = 0;
+  int cycles = 0;
+  std::size_t input_corners = 0, input_feature_edges = 0;
+  double q_min = 0.0, q_mean = 0.0;  ///< Euclidean triangle quality 4√3 A / Σ l² of the output
+};
+
+/// Remeshes a surface mesh (3D triangles, no tetrahedra). The output has Triangles with the
+/// input refs, its feature lines as Edges (tagged Ridges where found by angle) and Corners.
+/// Throws InputError for a mesh that is not a surface or bad options.
+Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
+                   SurfaceAdaptReport* report = nullptr);
+
+/// Euclidean quality of a triangle in 3D: 4√3 area / Σ squared edge lengths (1 equilateral).
+double triangle_quality(const double* a, const double* b, const double* c);
+
+}  // namespace riemesh

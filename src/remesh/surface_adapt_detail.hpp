@@ -1,0 +1,70 @@
+#pragma once
+// Internal state of the surface remesher (surface_adapt.cpp drives, surface_ops.cpp operates).
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "mesh/adjacency.hpp"
+#include "remesh/surface_adapt.hpp"
+#include "remesh/surface_projection.hpp"
+
+namespace riemesh::surface_detail {
+
+inline std::uint64_t edge_key(Id a, Id b) {
+  const auto lo = static_cast<std::uint64_t>(a < b ? a : b), hi = static_cast<std::uint64_t>(a < b ? b : a);
+  return (hi << 32) | lo;
+}
+
+/// The mesh being remeshed: vertices with their size, tags and projection hints; triangles
+/// (dead ones have tri[3t] == kNoId until the pass compacts them); feature edges by key.
+struct State {
+  std::vector<Vec3> x;
+  std::vector<double> h;
+  std::vector<std::uint8_t> tag;  // kTagCorner, kTagRidge
+  std::vector<Id> surf_hint, line_hint;
+  std::vector<Id> tri;
+  std::vector<std::int32_t> tref;
+  std::unordered_map<std::uint64_t, std::int32_t> feature;  // edge key -> ref
+  std::unordered_map<std::uint64_t, std::uint8_t> feature_tag;  // edge key -> kTagRidge if by angle
+
+  const SurfaceProjection* geo = nullptr;
+  const SurfaceAdaptOptions* opt = nullptr;
+
+  std::size_t num_vertices() const { return x.size(); }
+  std::size_t num_triangles() const { return tri.size() / 3; }
+  bool is_feature(Id a, Id b) const { return feature.count(edge_key(a, b)) != 0; }
+  /// Length of ab in the size field (mean of the end sizes).
+  double size_length(Id a, Id b) const {
+    return norm(x[static_cast<std::size_t>(b)] - x[static_cast<std::size_t>(a)]) /
+           (0.5 * (h[static_cast<std::size_t>(a)] + h[static_cast<std::size_t>(b)]));
+  }
+  Id add_vertex(const Vec3& p, double size, std::uint8_t t, Id sh, Id lh) {
+    x.push_back(p);
+    h.push_back(size);
+    tag.push_back(t);
+    surf_hint.push_back(sh);
+    line_hint.push_back(lh);
+    return static_cast<Id>(x.size() - 1);
+  }
+  /// Drops dead triangles and unused vertices (renumbering, order kept).
+  void compact();
+};
+
+/// Triangles around each edge of the current mesh (built at the start of each pass).
+struct Topology {
+  Adjacency adj;
+  std::vector<int> edge_count;  // triangles per edge
+  std::vector<Id> edge_tris;    // 2 per edge (first two triangles)
+};
+Topology build_topology(const State& s);
+
+std::size_t split_pass(State& s);
+std::size_t collapse_pass(State& s);
+std::size_t swap_pass(State& s);
+std::size_t smooth_pass(State& s);
+
+Vec3 tri_normal(const Vec3& a, const Vec3& b, const Vec3& c);  // unit, zero if degenerate
+double quality(const Vec3& a, const Vec3& b, const Vec3& c);
+
+}  // namespace riemesh::surface_detail
