@@ -18,6 +18,8 @@ constexpr double kCosTurn = 0.8660254037844387;  // cos 30°: largest turn of a 
 /// of the new triangles, not every point: a 10% margin keeps the densely sampled distance within
 /// hausd (measured on the shared surfaces).
 constexpr double kCheckMargin = 0.9;
+/// Lattice order of the points of a new triangle checked against the input (corners excluded).
+constexpr int kProbeOrder = 3;
 
 std::size_t us(Id i) { return static_cast<std::size_t>(i); }
 
@@ -79,13 +81,30 @@ bool keeps_input_close(const State& s, const std::vector<Tri3>& old_t,
   pts.clear();
   s.geo->check_points(lo, hi, pts);
   for (const Vec3& p : pts) {
-    double d_old = std::numeric_limits<double>::infinity();
-    for (const Tri3& t : old_t) d_old = std::min(d_old, to_tri(p, t));
-    if (d_old > hausd) continue;
-    double d_new = std::numeric_limits<double>::infinity();
-    for (const Tri3& t : new_t) d_new = std::min(d_new, to_tri(p, t));
-    if (d_new > hausd) return false;
+    bool near_new = false;
+    for (const Tri3& t : new_t)
+      if (to_tri(p, t) <= hausd) {
+        near_new = true;
+        break;
+      }
+    if (near_new) continue;
+    for (const Tri3& t : old_t)
+      if (to_tri(p, t) <= hausd) return false;  // covered before, not any more
   }
+  return true;
+}
+
+/// The B -> A half: the lattice points of the new triangles within hausd of the input.
+bool new_triangles_close(const State& s, const std::vector<Tri3>& new_t, Id hint) {
+  const double hausd = kCheckMargin * s.opt->hausd;
+  for (const Tri3& t : new_t)
+    for (int i = 0; i <= kProbeOrder; ++i)
+      for (int j = 0; i + j <= kProbeOrder; ++j) {
+        if ((i == 0 && j == 0) || i == kProbeOrder || j == kProbeOrder) continue;  // corners
+        const Vec3 q = t[0] + (static_cast<double>(i) / kProbeOrder) * (t[1] - t[0]) +
+                       (static_cast<double>(j) / kProbeOrder) * (t[2] - t[0]);
+        if (s.geo->distance(q, hint) > hausd) return false;
+      }
   return true;
 }
 
@@ -141,18 +160,32 @@ std::size_t split_pass(State& s) {
     const Id a = topo.adj.edges[2 * us(e)], b = topo.adj.edges[2 * us(e) + 1];
     const bool feat = s.is_feature(a, b);
     const Vec3 mid = 0.5 * (s.x[us(a)] + s.x[us(b)]);
-    const SurfaceProjection::Placed p =
-        feat ? s.geo->on_feature(mid, s.line_hint[us(a)]) : s.geo->on_surface(mid, s.surf_hint[us(a)]);
-    // The two halves of each triangle must keep its orientation.
-    bool ok = true;
-    for (int k = 0; k < nt && ok; ++k) {
-      Vec3 c[3];
-      corners(s, et[k], a, s.x[us(a)], c);
-      const Vec3 n = tri_normal(c[0], c[1], c[2]);
-      Vec3 c1[3], c2[3];
-      corners(s, et[k], a, p.point, c1);
-      corners(s, et[k], b, p.point, c2);
-      ok = dot(tri_normal(c1[0], c1[1], c1[2]), n) > 0.5 && dot(tri_normal(c2[0], c2[1], c2[2]), n) > 0.5;
+    // The point on the reconstruction when the halves stay within hausd of the input both ways;
+    // else the nearest point of the input itself; else no split.
+    SurfaceProjection::Placed p;
+    bool ok = false;
+    for (const bool smooth : {true, false}) {
+      p = feat ? s.geo->on_feature(mid, s.line_hint[us(a)], smooth)
+               : s.geo->on_surface(mid, s.surf_hint[us(a)], smooth);
+      ok = true;
+      std::vector<Tri3> old_t, new_t;
+      for (int k = 0; k < nt && ok; ++k) {
+        Vec3 c[3];
+        corners(s, et[k], a, s.x[us(a)], c);
+        const Vec3 n = tri_normal(c[0], c[1], c[2]);
+        Vec3 c1[3], c2[3];
+        corners(s, et[k], a, p.point, c1);
+        corners(s, et[k], b, p.point, c2);
+        // The two halves of each triangle keep its orientation.
+        ok = dot(tri_normal(c1[0], c1[1], c1[2]), n) > 0.5 &&
+             dot(tri_normal(c2[0], c2[1], c2[2]), n) > 0.5;
+        old_t.push_back({c[0], c[1], c[2]});
+        new_t.push_back({c1[0], c1[1], c1[2]});
+        new_t.push_back({c2[0], c2[1], c2[2]});
+      }
+      ok = ok && new_triangles_close(s, new_t, s.surf_hint[us(a)]) &&
+           keeps_input_close(s, old_t, new_t);
+      if (ok) break;
     }
     if (!ok) continue;
     const Id m = s.add_vertex(p.point, p.size, feat ? kTagRidge : kTagNone,
@@ -226,11 +259,11 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
     new_t.push_back({n[0], n[1], n[2]});
     const Vec3 n_old = tri_normal(c[0], c[1], c[2]), n_new = tri_normal(n[0], n[1], n[2]);
     if (dot(n_old, n_new) < kCosTurn || quality(n[0], n[1], n[2]) < qfloor) return false;
-    const Vec3 centroid = (n[0] + n[1] + n[2]) / 3.0;
-    if (s.geo->distance(centroid, s.surf_hint[us(v)]) > hausd) return false;
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
-  if (gap > hausd || !keeps_input_close(s, old_t, new_t)) return false;
+  if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)]) ||
+      !keeps_input_close(s, old_t, new_t))
+    return false;
   // Apply.
   for (Id t : bv) {
     bool has_w = false;
@@ -311,7 +344,9 @@ std::size_t swap_pass(State& s) {
     const Vec3 f1[3] = {pa, pd, pc}, f2[3] = {pd, pb, pc};
     if (std::min(to_triangle(mid_old, f1), to_triangle(mid_old, f2)) > hausd) continue;
     if (s.geo->distance(mid_new, s.surf_hint[us(c)]) > hausd) continue;
-    if (!keeps_input_close(s, {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}}, {Tri3{pa, pd, pc}, Tri3{pd, pb, pc}}))
+    const std::vector<Tri3> new_t = {Tri3{pa, pd, pc}, Tri3{pd, pb, pc}};
+    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)]) ||
+        !keeps_input_close(s, {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}}, new_t))
       continue;
     s.tri[3 * us(t1)] = a;
     s.tri[3 * us(t1) + 1] = d;
@@ -328,7 +363,6 @@ std::size_t swap_pass(State& s) {
 std::size_t smooth_pass(State& s) {
   const Topology topo = build_topology(s);
   std::size_t count = 0;
-  const double hausd = kCheckMargin * s.opt->hausd;
   for (std::size_t vi = 0; vi < s.num_vertices(); ++vi) {
     const auto v = static_cast<Id>(vi);
     if (s.tag[vi] & (kTagCorner | kTagRequired)) continue;
@@ -360,10 +394,11 @@ std::size_t smooth_pass(State& s) {
       q_old = std::min(q_old, quality(c[0], c[1], c[2]));
       q_new = std::min(q_new, quality(n[0], n[1], n[2]));
       if (dot(tri_normal(c[0], c[1], c[2]), tri_normal(n[0], n[1], n[2])) < kCosTurn) ok = false;
-      if (ok && s.geo->distance((n[0] + n[1] + n[2]) / 3.0, s.surf_hint[vi]) > hausd) ok = false;
       if (!ok) break;
     }
-    if (!ok || !(q_new > q_old) || !keeps_input_close(s, old_t, new_t)) continue;
+    if (!ok || !(q_new > q_old) || !new_triangles_close(s, new_t, p.hint) ||
+        !keeps_input_close(s, old_t, new_t))
+      continue;
     s.x[vi] = p.point;
     s.h[vi] = p.size;
     if (s.tag[vi] & kTagRidge) s.line_hint[vi] = p.hint;

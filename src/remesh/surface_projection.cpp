@@ -135,14 +135,14 @@ Vec3 SurfaceProjection::lift(const Vec3& flat, const Vec3& smooth) const {
   return l <= max_lift_ ? smooth : flat + (max_lift_ / l) * d;
 }
 
-SurfaceProjection::Placed SurfaceProjection::on_surface(const Vec3& p, Id hint) const {
+SurfaceProjection::Placed SurfaceProjection::on_surface(const Vec3& p, Id hint, bool smooth) const {
   const TriangleTree::Nearest q = tri_tree_.nearest(p, hint);
   const auto t = static_cast<std::size_t>(q.triangle);
   const Id* tri = &mesh_.triangles[3 * t];
   const Vec2 uv = barycentric(q.point, vertex_at(mesh_, tri[0]), vertex_at(mesh_, tri[1]),
                               vertex_at(mesh_, tri[2]));
   Placed out;
-  out.point = lift(q.point, rec_->point(q.triangle, uv[0], uv[1]));
+  out.point = smooth ? lift(q.point, rec_->point(q.triangle, uv[0], uv[1])) : q.point;
   out.size = (1.0 - uv[0] - uv[1]) * size_[static_cast<std::size_t>(tri[0])] +
              uv[0] * size_[static_cast<std::size_t>(tri[1])] +
              uv[1] * size_[static_cast<std::size_t>(tri[2])];
@@ -150,8 +150,8 @@ SurfaceProjection::Placed SurfaceProjection::on_surface(const Vec3& p, Id hint) 
   return out;
 }
 
-SurfaceProjection::Placed SurfaceProjection::on_feature(const Vec3& p, Id hint) const {
-  if (!line_tree_) return on_surface(p, kNoId);
+SurfaceProjection::Placed SurfaceProjection::on_feature(const Vec3& p, Id hint, bool smooth) const {
+  if (!line_tree_) return on_surface(p, kNoId, smooth);
   const TriangleTree::Nearest q = line_tree_->nearest(p, hint);
   const auto e = static_cast<std::size_t>(q.triangle);
   const Id a = line_edges_[2 * e], b = line_edges_[2 * e + 1];
@@ -159,7 +159,7 @@ SurfaceProjection::Placed SurfaceProjection::on_feature(const Vec3& p, Id hint) 
   const double l2 = dot(pb - pa, pb - pa);
   const double s = l2 > 0.0 ? std::clamp(dot(q.point - pa, pb - pa) / l2, 0.0, 1.0) : 0.0;
   Placed out;
-  out.point = lift(q.point, rec_->edge_point(a, b, s));
+  out.point = smooth ? lift(q.point, rec_->edge_point(a, b, s)) : q.point;
   out.size = (1.0 - s) * size_[static_cast<std::size_t>(a)] + s * size_[static_cast<std::size_t>(b)];
   out.hint = q.triangle;
   return out;

@@ -35,10 +35,11 @@ class SurfaceProjection {
     double size = 0.0;
     Id hint = kNoId;  ///< input triangle (surface) or feature edge index (lines) found
   };
-  /// The point of the surface for p; `hint` is a nearby input triangle or kNoId.
-  Placed on_surface(const Vec3& p, Id hint) const;
+  /// The point of the surface for p; `hint` is a nearby input triangle or kNoId. `smooth`
+  /// false: the nearest point of the input polyhedron itself (no reconstruction).
+  Placed on_surface(const Vec3& p, Id hint, bool smooth = true) const;
   /// The point of the feature lines for p; `hint` is a nearby feature edge index or kNoId.
-  Placed on_feature(const Vec3& p, Id hint) const;
+  Placed on_feature(const Vec3& p, Id hint, bool smooth = true) const;
   /// Distance from p to the input polyhedron.
   double distance(const Vec3& p, Id hint = kNoId) const { return tri_tree_.nearest(p, hint).distance; }
 
