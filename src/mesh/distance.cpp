@@ -179,6 +179,35 @@ TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, Id hint) const {
   return best;
 }
 
+bool TriangleTree::within(const Vec3& p, double r, Id* hint) const {
+  auto close = [&](Id t) {
+    const auto k = 3 * static_cast<std::size_t>(t);
+    return dist2(p, closest_point_on_triangle(p, tri_[k], tri_[k + 1], tri_[k + 2])) <= r * r;
+  };
+  if (hint && *hint != kNoId && static_cast<std::size_t>(*hint) < num_triangles() && close(*hint))
+    return true;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[static_cast<std::size_t>(stack[--top])];
+    if (box_dist2(p, n.lo, n.hi) > r * r) continue;
+    if (n.left < 0) {
+      for (int k = n.first; k < n.first + n.count; ++k) {
+        const Id t = order_[static_cast<std::size_t>(k)];
+        if (close(t)) {
+          if (hint) *hint = t;
+          return true;
+        }
+      }
+      continue;
+    }
+    stack[top++] = n.right;
+    stack[top++] = n.left;
+  }
+  return false;
+}
+
 void DistanceOptions::validate() const {
   if (samples < 1) throw InputError("distance: samples must be >= 1");
   if (!(spacing >= 0.0) || !std::isfinite(spacing))

@@ -33,6 +33,9 @@ class TriangleTree {
   /// The nearest point of the surface to p. `hint`: a triangle likely to be close (e.g. the
   /// answer for a nearby query), tried first to prune the search; kNoId for none.
   Nearest nearest(const Vec3& p, Id hint = kNoId) const;
+  /// Whether some triangle is within distance r of p (stops at the first one found; `hint` is
+  /// tried first and, when not kNoId, receives the triangle found). Cheaper than nearest.
+  bool within(const Vec3& p, double r, Id* hint = nullptr) const;
   std::size_t num_triangles() const { return tri_.size() / 3; }
 
  private:

@@ -80,17 +80,20 @@ bool keeps_input_close(const State& s, const std::vector<Tri3>& old_t,
   thread_local std::vector<Vec3> pts;  // scratch reused across calls (no shared state)
   pts.clear();
   s.geo->check_points(lo, hi, pts);
-  for (const Vec3& p : pts) {
-    bool near_new = false;
-    for (const Tri3& t : new_t)
-      if (to_tri(p, t) <= hausd) {
-        near_new = true;
-        break;
-      }
-    if (near_new) continue;
-    for (const Tri3& t : old_t)
-      if (to_tri(p, t) <= hausd) return false;  // covered before, not any more
-  }
+  // Planes of the triangles: a point farther than hausd from a triangle's plane is farther from
+  // the triangle (cheap rejection before the exact distance).
+  auto plane_far = [hausd](const Vec3& p, const Tri3& t) {
+    const Vec3 n = cross(t[1] - t[0], t[2] - t[0]);
+    const double l = norm(n);
+    return l > 0.0 && std::abs(dot(p - t[0], n)) > hausd * l;
+  };
+  auto near = [&](const Vec3& p, const std::vector<Tri3>& tris) {
+    for (const Tri3& t : tris)
+      if (!plane_far(p, t) && to_tri(p, t) <= hausd) return true;
+    return false;
+  };
+  for (const Vec3& p : pts)
+    if (!near(p, new_t) && near(p, old_t)) return false;  // covered before, not any more
   return true;
 }
 
@@ -103,7 +106,7 @@ bool new_triangles_close(const State& s, const std::vector<Tri3>& new_t, Id hint
         if ((i == 0 && j == 0) || i == kProbeOrder || j == kProbeOrder) continue;  // corners
         const Vec3 q = t[0] + (static_cast<double>(i) / kProbeOrder) * (t[1] - t[0]) +
                        (static_cast<double>(j) / kProbeOrder) * (t[2] - t[0]);
-        if (s.geo->distance(q, hint) > hausd) return false;
+        if (!s.geo->within(q, hausd, &hint)) return false;
       }
   return true;
 }
@@ -343,7 +346,8 @@ std::size_t swap_pass(State& s) {
     const Vec3 mid_old = 0.5 * (pa + pb), mid_new = 0.5 * (pc + pd);
     const Vec3 f1[3] = {pa, pd, pc}, f2[3] = {pd, pb, pc};
     if (std::min(to_triangle(mid_old, f1), to_triangle(mid_old, f2)) > hausd) continue;
-    if (s.geo->distance(mid_new, s.surf_hint[us(c)]) > hausd) continue;
+    Id hint = s.surf_hint[us(c)];
+    if (!s.geo->within(mid_new, hausd, &hint)) continue;
     const std::vector<Tri3> new_t = {Tri3{pa, pd, pc}, Tri3{pd, pb, pc}};
     if (!new_triangles_close(s, new_t, s.surf_hint[us(c)]) ||
         !keeps_input_close(s, {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}}, new_t))
