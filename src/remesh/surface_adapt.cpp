@@ -104,7 +104,7 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
   if (input.kind() != MeshKind::kSurface)
     throw InputError("adapt_surface: need a surface mesh (3D triangles, no tetrahedra)");
   const SurfaceProjection geo(input, options.features, vertex_sizes(input, options),
-                              0.5 * options.hausd, options.hausd);
+                              0.5 * options.hausd);
   State s = initial_state(input, geo);
   s.geo = &geo;
   s.opt = &options;

@@ -41,16 +41,14 @@ Mesh line_mesh(const Mesh& mesh, const std::vector<Id>& line_edges) {
 }  // namespace
 
 SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& features,
-                                     std::vector<double> size, double max_lift,
-                                     double check_spacing)
+                                     std::vector<double> size, double max_lift)
     : mesh_(input),
       adj_(build_adjacency(mesh_)),
       features_(detect_features(mesh_, adj_, features)),
       sectors_(surface_sectors(mesh_, adj_, features_)),
       tri_tree_(mesh_),
       size_(std::move(size)),
-      max_lift_(max_lift),
-      check_spacing_(check_spacing) {
+      max_lift_(max_lift) {
   if (size_.size() != mesh_.num_vertices())
     throw InputError("SurfaceProjection: one size per input vertex expected");
   sectors_.normal = fitted_sector_normals(mesh_, adj_, features_, sectors_);
@@ -63,29 +61,21 @@ SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& fe
 }
 
 void SurfaceProjection::build_grid() {
-  // A lattice on every input triangle (vertices, points on the edges, interior points), each
-  // point once: vertices, then the inner points of each edge, then the interior points of each
-  // triangle. The order grows with the size of the element relative to the tolerance, up to the
-  // order 4 that `riemesh distance` samples by default: one point per 4·hausd of edge length
-  // (between points closer than that the distance to a surface of curvature radius >> hausd
-  // cannot grow by much).
-  const double spacing = 4.0 * check_spacing_;
-  auto order = [spacing](double len) {
-    return std::clamp(static_cast<int>(std::ceil(len / spacing)), 1, 4);
-  };
+  // The lattice of order 4 on every input triangle (vertices, 3 points per edge, 3 interior
+  // points), each point once: the points `riemesh distance` samples on the input by default, so
+  // that the A -> B check of the operators (surface_ops.cpp) bounds exactly what it measures.
+  constexpr int n = 4;
   std::vector<Vec3> pts;
   for (std::size_t v = 0; v < mesh_.num_vertices(); ++v)
     if (!ball(adj_, static_cast<Id>(v)).empty()) pts.push_back(vertex_at(mesh_, static_cast<Id>(v)));
   for (std::size_t e = 0; e < adj_.num_edges(); ++e) {
     const Vec3 a = vertex_at(mesh_, adj_.edges[2 * e]), b = vertex_at(mesh_, adj_.edges[2 * e + 1]);
-    const int n = order(norm(b - a));
     for (int i = 1; i < n; ++i) pts.push_back(a + (static_cast<double>(i) / n) * (b - a));
   }
   for (std::size_t t = 0; t < mesh_.num_triangles(); ++t) {
     const Vec3 a = vertex_at(mesh_, mesh_.triangles[3 * t]);
     const Vec3 b = vertex_at(mesh_, mesh_.triangles[3 * t + 1]);
     const Vec3 c = vertex_at(mesh_, mesh_.triangles[3 * t + 2]);
-    const int n = order(std::max({norm(b - a), norm(c - b), norm(a - c)}));
     for (int i = 1; i < n; ++i)
       for (int j = 1; i + j < n; ++j)
         pts.push_back(a + (static_cast<double>(i) / n) * (b - a) + (static_cast<double>(j) / n) * (c - a));

@@ -25,9 +25,8 @@ class SurfaceProjection {
  public:
   /// Analyses `input` (copied). `size`: one size per input vertex (interpolated at placed
   /// points). `max_lift`: the largest distance between a placed point and the input polyhedron.
-  /// `check_spacing` (the tolerance): the check points are about 4 check_spacing apart.
   SurfaceProjection(const Mesh& input, const FeatureOptions& features, std::vector<double> size,
-                    double max_lift, double check_spacing);
+                    double max_lift);
   SurfaceProjection(const SurfaceProjection&) = delete;
   SurfaceProjection& operator=(const SurfaceProjection&) = delete;
 
@@ -46,7 +45,7 @@ class SurfaceProjection {
   /// Distance from p to the input polyhedron.
   double distance(const Vec3& p, Id hint = kNoId) const { return tri_tree_.nearest(p, hint).distance; }
 
-  /// The input's check points (a lattice of order 1 to 4 on every input triangle) inside the box
+  /// The input's check points (the order-4 lattice of every input triangle) inside the box
   /// [lo, hi], appended to `out` in a fixed order: the points an operator must keep within
   /// hausd of the output when they were within hausd before (surface_ops.cpp).
   void check_points(const Vec3& lo, const Vec3& hi, std::vector<Vec3>& out) const;
@@ -69,7 +68,6 @@ class SurfaceProjection {
   std::unique_ptr<TriangleTree> line_tree_;
   std::vector<double> size_;
   double max_lift_;
-  double check_spacing_;
   // Uniform grid of the check points: cell (i, j, k) holds points
   // grid_points_[grid_offsets_[c] .. grid_offsets_[c + 1]), c = (k ny + j) nx + i.
   Vec3 grid_lo_{};

@@ -82,7 +82,7 @@ TEST(SurfaceAdapt, SphereToUniformSize) {
   EXPECT_GT(r.report.q_mean, 0.9);
   std::printf("sphere: %zu triangles, hausdorff %.3e (hausd %.3e), q min %.3f mean %.3f\n",
               r.out.num_triangles(), r.hausdorff, o.hausd, r.report.q_min, r.report.q_mean);
-  EXPECT_LE(r.hausdorff, o.hausd);
+  EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12);
   // Edge lengths near hsiz.
   const Adjacency adj = build_adjacency(r.out);
   double sum = 0.0;
@@ -110,7 +110,9 @@ TEST(SurfaceAdapt, TorusKeepsGenusOne) {
   EXPECT_GE(min_quality(r.out), 0.3);
   std::printf("torus: %zu -> %zu triangles, hausdorff %.3e (hausd %.3e), q min %.3f\n",
               in.num_triangles(), r.out.num_triangles(), r.hausdorff, o.hausd, r.report.q_min);
-  EXPECT_LE(r.hausdorff, o.hausd);  // measured 4.63e-3
+  // The operators keep the order-4 lattices of input and output within 0.95 hausd of each
+  // other, which is what hausdorff_distance samples (measured 4.74e-3).
+  EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12);
 }
 
 TEST(SurfaceAdapt, CubeKeepsCornersRidgesAndRefs) {
@@ -164,7 +166,7 @@ TEST(SurfaceAdapt, FandiskRidgesStayWithinHausd) {
   EXPECT_GE(min_quality(r.out), 0.3);
   std::printf("fandisk: %zu triangles, hausdorff/hausd %.3f, q min %.3f mean %.3f\n",
               r.out.num_triangles(), r.hausdorff / o.hausd, r.report.q_min, r.report.q_mean);
-  EXPECT_LE(r.hausdorff, o.hausd);  // measured 0.976 hausd
+  EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12);  // measured 0.942 hausd
   // Ridges: the output's feature edges and the input's, as polylines, within hausd of each
   // other both ways (degenerate triangles (a, b, b) make a TriangleTree of segments).
   auto lines = [](const Mesh& m, const std::vector<Id>& edges) {
