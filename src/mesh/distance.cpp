@@ -208,6 +208,34 @@ bool TriangleTree::within(const Vec3& p, double r, Id* hint) const {
   return false;
 }
 
+void TriangleTree::overlapping(const Vec3& lo, const Vec3& hi, std::vector<Id>& out) const {
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[static_cast<std::size_t>(stack[--top])];
+    bool overlaps = true;
+    for (int c = 0; c < 3; ++c) overlaps = overlaps && n.lo[c] <= hi[c] && n.hi[c] >= lo[c];
+    if (!overlaps) continue;
+    if (n.left < 0) {
+      for (int k = n.first; k < n.first + n.count; ++k) {
+        const Id t = order_[static_cast<std::size_t>(k)];
+        const auto i = 3 * static_cast<std::size_t>(t);
+        bool hit = true;
+        for (int c = 0; c < 3; ++c) {
+          const double tlo = std::min({tri_[i][c], tri_[i + 1][c], tri_[i + 2][c]});
+          const double thi = std::max({tri_[i][c], tri_[i + 1][c], tri_[i + 2][c]});
+          hit = hit && tlo <= hi[c] && thi >= lo[c];
+        }
+        if (hit) out.push_back(t);
+      }
+      continue;
+    }
+    stack[top++] = n.right;
+    stack[top++] = n.left;
+  }
+}
+
 void DistanceOptions::validate() const {
   if (samples < 1) throw InputError("distance: samples must be >= 1");
   if (!(spacing >= 0.0) || !std::isfinite(spacing))

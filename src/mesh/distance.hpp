@@ -37,6 +37,8 @@ class TriangleTree {
   /// tried first and, when not kNoId, receives the triangle found). Cheaper than nearest.
   bool within(const Vec3& p, double r, Id* hint = nullptr) const;
   std::size_t num_triangles() const { return tri_.size() / 3; }
+  /// The triangles whose bounding boxes overlap the box [lo, hi], appended to `out`.
+  void overlapping(const Vec3& lo, const Vec3& hi, std::vector<Id>& out) const;
 
  private:
   struct Node {

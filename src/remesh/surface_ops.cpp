@@ -247,7 +247,7 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
     corners(s, t, v, s.x[us(v)], c);
     qmin_old = std::min(qmin_old, quality(c[0], c[1], c[2]));
   }
-  const double qfloor = std::min(0.3, 0.5 * qmin_old);
+  const double qfloor = std::min(0.3, qmin_old);
   const double hausd = kCheckMargin * s.opt->hausd;
   double gap = std::numeric_limits<double>::infinity();
   std::vector<Tri3> old_t, new_t;

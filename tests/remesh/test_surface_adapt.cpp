@@ -13,6 +13,7 @@
 #include "mesh/adjacency.hpp"
 #include "mesh/check.hpp"
 #include "mesh/distance.hpp"
+#include "mesh/self_intersection.hpp"
 #include "remesh/surface_adapt.hpp"
 #include "surface_test_meshes.hpp"
 
@@ -164,6 +165,7 @@ TEST(SurfaceAdapt, FandiskRidgesStayWithinHausd) {
   EXPECT_EQ(euler(r.out), 2);
   EXPECT_LT(r.out.num_triangles(), 2820u);  // mmgs at the same hausd (PEERS.md)
   EXPECT_GE(min_quality(r.out), 0.3);
+  EXPECT_EQ(find_self_intersections(r.out).pairs, 0u);
   std::printf("fandisk: %zu triangles, hausdorff/hausd %.3f, q min %.3f mean %.3f\n",
               r.out.num_triangles(), r.hausdorff / o.hausd, r.report.q_min, r.report.q_mean);
   EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12);  // measured 0.942 hausd
@@ -187,6 +189,25 @@ TEST(SurfaceAdapt, FandiskRidgesStayWithinHausd) {
   std::printf("fandisk ridges: %zu -> %zu feature edges, two-sided distance %.3e\n",
               in_edges.size() / 2, r.out.num_edges(), d);
   EXPECT_LE(d, o.hausd);
+}
+
+TEST(SurfaceAdapt, RealSurfacesKeepTopologyAndDoNotSelfIntersect) {
+  // PEERS.md's first setting (hausd = 0.2% of the bounding-box diagonal) on the other surfaces:
+  // genus (Euler characteristic), orientation (enclosed volume sign), no self-intersection,
+  // Hausdorff within 0.95 hausd at the sampled points.
+  for (const char* name : {"bunny", "elephant", "rotor"}) {
+    const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/surf/" + name + ".mesh");
+    EXPECT_EQ(find_self_intersections(in).pairs, 0u) << name;  // as CGAL says (SOURCES.md)
+    SurfaceAdaptOptions o;
+    o.hausd = 0.002 * bounding_box_diagonal(in);
+    const Outcome r = run(in, o);
+    EXPECT_TRUE(check_mesh(r.out).valid()) << name;
+    EXPECT_EQ(euler(r.out), euler(in)) << name;
+    EXPECT_GT(volume(r.out) * volume(in), 0.0) << name;
+    EXPECT_EQ(find_self_intersections(r.out).pairs, 0u) << name;
+    EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12) << name;
+    EXPECT_GE(r.report.q_min, 0.3) << name;
+  }
 }
 
 TEST(SurfaceAdapt, Deterministic) {
