@@ -20,6 +20,9 @@ using surface_detail::State;
 /// computed for 3/4 of hausd: the sampled distance then stays within hausd.
 constexpr double kCentroidFactor = 0.75;
 
+/// Largest number of consecutive split (or collapse) passes in one cycle.
+constexpr int kInnerPasses = 8;
+
 std::vector<double> vertex_sizes(const Mesh& input, const SurfaceAdaptOptions& o) {
   SurfaceMetricOptions m;
   m.hausd = kCentroidFactor * o.hausd;
@@ -115,17 +118,26 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
     const std::size_t nt = s.num_triangles();
     std::size_t changes = 0;
     if (options.insert) {
-      const std::size_t sp = surface_detail::split_pass(s);
-      const std::size_t co = surface_detail::collapse_pass(s);
-      r.splits += sp;
-      r.collapses += co;
-      changes += sp + co;
+      // Splits, then collapses, each repeated while they change much (a pass only applies
+      // independent operations): the cheap topological work before the swaps and moves.
+      for (int k = 0; k < kInnerPasses; ++k) {
+        const std::size_t sp = surface_detail::split_pass(s);
+        r.splits += sp;
+        changes += sp;
+        if (sp < std::max<std::size_t>(1, s.num_triangles() / 100)) break;
+      }
+      for (int k = 0; k < kInnerPasses; ++k) {
+        const std::size_t co = surface_detail::collapse_pass(s);
+        r.collapses += co;
+        changes += co;
+        if (co < std::max<std::size_t>(1, s.num_triangles() / 100)) break;
+      }
     }
     if (options.swap) r.swaps += surface_detail::swap_pass(s);
     if (options.move)
-      for (int k = 0; k < 2; ++k) r.moves += surface_detail::smooth_pass(s);
+      r.moves += surface_detail::smooth_pass(s);
     ++r.cycles;
-    if (changes < std::max<std::size_t>(1, nt / 200) && cycle >= 2) break;
+    if (changes < std::max<std::size_t>(1, nt / 100) && cycle >= 2) break;
   }
   if (options.swap) r.swaps += surface_detail::swap_pass(s);
   if (options.move) r.moves += surface_detail::smooth_pass(s);

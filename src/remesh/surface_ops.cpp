@@ -20,6 +20,8 @@ constexpr double kCheckMargin = 0.95;
 /// Lattice order of the points of a new triangle checked against the input (corners excluded):
 /// the order `riemesh distance` samples by default, so the check bounds what is measured.
 constexpr int kProbeOrder = 4;
+/// Smoothing leaves a vertex alone when the worst triangle of its ball is at least this good.
+constexpr double kSmoothEnough = 0.9;
 
 std::size_t us(Id i) { return static_cast<std::size_t>(i); }
 
@@ -87,9 +89,18 @@ bool keeps_input_close(const State& s, const std::vector<Tri3>& old_t,
     const double l = norm(n);
     return l > 0.0 && std::abs(dot(p - t[0], n)) > hausd * l;
   };
+  // Consecutive points come from the same grid cell: try the triangle that covered the last one
+  // first.
+  std::size_t last = 0;
   auto near = [&](const Vec3& p, const std::vector<Tri3>& tris) {
-    for (const Tri3& t : tris)
-      if (!plane_far(p, t) && to_tri(p, t) <= hausd) return true;
+    const std::size_t n = tris.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = (last + k) % n;
+      if (!plane_far(p, tris[i]) && to_tri(p, tris[i]) <= hausd) {
+        last = i;
+        return true;
+      }
+    }
     return false;
   };
   for (const Vec3& p : pts)
@@ -372,6 +383,15 @@ std::size_t smooth_pass(State& s) {
     if (s.tag[vi] & (kTagCorner | kTagRequired)) continue;
     const auto bv = ball(topo.adj, v);
     if (bv.empty()) continue;
+    // Balls whose worst triangle is already good have little to gain (and each try costs a
+    // projection and the Hausdorff checks).
+    double q_ball = 1.0;
+    for (Id t : bv) {
+      Vec3 c[3];
+      corners(s, t, v, s.x[vi], c);
+      q_ball = std::min(q_ball, quality(c[0], c[1], c[2]));
+    }
+    if (q_ball >= kSmoothEnough) continue;
     const std::vector<Id> nb = neighbours(s, topo.adj, v);
     SurfaceProjection::Placed p;
     if (s.tag[vi] & kTagRidge) {
@@ -400,7 +420,8 @@ std::size_t smooth_pass(State& s) {
       if (dot(tri_normal(c[0], c[1], c[2]), tri_normal(n[0], n[1], n[2])) < kCosTurn) ok = false;
       if (!ok) break;
     }
-    if (!ok || !(q_new > q_old) || !new_triangles_close(s, new_t, p.hint) ||
+    // A real gain only: marginal moves would oscillate from pass to pass, each paying the checks.
+    if (!ok || !(q_new > 1.02 * q_old) || !new_triangles_close(s, new_t, p.hint) ||
         !keeps_input_close(s, old_t, new_t))
       continue;
     s.x[vi] = p.point;

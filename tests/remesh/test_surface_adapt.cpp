@@ -112,7 +112,7 @@ TEST(SurfaceAdapt, TorusKeepsGenusOne) {
   std::printf("torus: %zu -> %zu triangles, hausdorff %.3e (hausd %.3e), q min %.3f\n",
               in.num_triangles(), r.out.num_triangles(), r.hausdorff, o.hausd, r.report.q_min);
   // The operators keep the order-4 lattices of input and output within 0.95 hausd of each
-  // other, which is what hausdorff_distance samples (measured 4.74e-3).
+  // other, which is what hausdorff_distance samples (measured 4.72e-3).
   EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12);
 }
 
@@ -168,7 +168,7 @@ TEST(SurfaceAdapt, FandiskRidgesStayWithinHausd) {
   EXPECT_EQ(find_self_intersections(r.out).pairs, 0u);
   std::printf("fandisk: %zu triangles, hausdorff/hausd %.3f, q min %.3f mean %.3f\n",
               r.out.num_triangles(), r.hausdorff / o.hausd, r.report.q_min, r.report.q_mean);
-  EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12);  // measured 0.942 hausd
+  EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12);  // measured 0.948 hausd
   // Ridges: the output's feature edges and the input's, as polylines, within hausd of each
   // other both ways (degenerate triangles (a, b, b) make a TriangleTree of segments).
   auto lines = [](const Mesh& m, const std::vector<Id>& edges) {
