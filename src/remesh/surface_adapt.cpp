@@ -20,6 +20,9 @@ using surface_detail::State;
 /// computed for 3/4 of hausd: the sampled distance then stays within hausd.
 constexpr double kCentroidFactor = 0.75;
 
+/// Quality below which the last passes split a triangle's longest edge (the floor).
+constexpr double kBadQuality = 0.3;
+
 /// Largest number of consecutive split (or collapse) passes in one cycle.
 constexpr int kInnerPasses = 8;
 
@@ -138,6 +141,15 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
       r.moves += surface_detail::smooth_pass(s);
     ++r.cycles;
     if (changes < std::max<std::size_t>(1, nt / 100) && cycle >= 2) break;
+  }
+  // Last touch: split the long edge of triangles still below quality 0.3 (the obtuse ones that
+  // swaps and moves could not fix under the Hausdorff checks), then swap and move around them.
+  for (int k = 0; k < 2 && options.insert; ++k) {
+    const std::size_t sp = surface_detail::split_pass(s, kBadQuality);
+    r.splits += sp;
+    if (sp == 0) break;
+    if (options.swap) r.swaps += surface_detail::swap_pass(s);
+    if (options.move) r.moves += surface_detail::smooth_pass(s);
   }
   if (options.swap) r.swaps += surface_detail::swap_pass(s);
   if (options.move) r.moves += surface_detail::smooth_pass(s);

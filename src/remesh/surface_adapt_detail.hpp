@@ -59,7 +59,9 @@ struct Topology {
 };
 Topology build_topology(const State& s);
 
-std::size_t split_pass(State& s);
+/// Splits edges longer than √2 in the size field; with bad_quality > 0, instead the longest edge
+/// of every triangle of quality below it.
+std::size_t split_pass(State& s, double bad_quality = 0.0);
 std::size_t collapse_pass(State& s);
 std::size_t swap_pass(State& s);
 std::size_t smooth_pass(State& s);

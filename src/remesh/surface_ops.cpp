@@ -156,13 +156,31 @@ Topology build_topology(const State& s) {
   return t;
 }
 
-std::size_t split_pass(State& s) {
+std::size_t split_pass(State& s, double bad_quality) {
   const Topology topo = build_topology(s);
   const std::size_t ne = topo.adj.num_edges();
   std::vector<std::pair<double, Id>> cand;
-  for (std::size_t e = 0; e < ne; ++e) {
-    const double l = s.size_length(topo.adj.edges[2 * e], topo.adj.edges[2 * e + 1]);
-    if (l > kSqrt2 && topo.edge_count[e] <= 2) cand.push_back({-l, static_cast<Id>(e)});
+  if (bad_quality > 0.0) {
+    // The longest edge of each triangle below bad_quality (the edge facing its obtuse angle).
+    for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+      const Id* v = &s.tri[3 * t];
+      if (quality(s.x[us(v[0])], s.x[us(v[1])], s.x[us(v[2])]) >= bad_quality) continue;
+      int best = 0;
+      double lbest = -1.0;
+      for (int j = 0; j < 3; ++j) {
+        const double l = norm(s.x[us(v[kTriEdge[j][1]])] - s.x[us(v[kTriEdge[j][0]])]);
+        if (l > lbest) lbest = l, best = j;
+      }
+      const Id e = topo.adj.elem2edge[3 * t + best];
+      if (topo.edge_count[us(e)] <= 2) cand.push_back({-lbest, e});
+    }
+    std::sort(cand.begin(), cand.end());
+    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+  } else {
+    for (std::size_t e = 0; e < ne; ++e) {
+      const double l = s.size_length(topo.adj.edges[2 * e], topo.adj.edges[2 * e + 1]);
+      if (l > kSqrt2 && topo.edge_count[e] <= 2) cand.push_back({-l, static_cast<Id>(e)});
+    }
   }
   std::sort(cand.begin(), cand.end());
   std::vector<char> done(s.num_triangles(), 0);
