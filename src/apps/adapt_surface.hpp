@@ -10,6 +10,7 @@ namespace riemesh::cli {
 
 struct SurfaceAdaptArgs {
   std::string input, output;
+  std::string metric;  ///< .sol with a 3D tensor or a size per vertex (may be empty)
   SurfaceAdaptOptions options;
   bool quiet = false;
 };

@@ -113,12 +113,13 @@ void print_pass(const PassStats& s, int verbosity) {
 
 /// The surface branch: geometric sizes from --hausd, capped by --hsiz (issue #6).
 void run_surface(const AdaptArgs& a, const Mesh& mesh) {
-  if (!a.metric.empty() || !a.field.empty() || a.optim)
-    throw InputError(a.input + ": surface remeshing takes --hausd and --hsiz/--hmin/--hmax so far "
-                     "(no --metric, --field or --optim)");
+  if (!a.field.empty() || a.optim)
+    throw InputError(a.input + ": surface remeshing takes --hausd, --metric and --hsiz/--hmin/"
+                     "--hmax so far (no --field or --optim)");
   SurfaceAdaptArgs s;
   s.input = a.input;
   s.output = a.output;
+  s.metric = a.metric;
   s.options.hausd = a.opt.hausd;
   s.options.hsiz = a.hsiz;
   s.options.hmin = a.opt.hmin;

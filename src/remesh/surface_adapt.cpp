@@ -34,6 +34,7 @@ std::vector<double> vertex_sizes(const Mesh& input, const SurfaceAdaptOptions& o
   if (o.hsiz > 0.0) m.hmax = m.hmax > 0.0 ? std::min(m.hmax, o.hsiz) : o.hsiz;
   if (m.hmin > 0.0 && m.hmax > 0.0 && m.hmin > m.hmax) m.hmin = m.hmax;
   m.hgrad = o.hgrad;
+  m.user_metric = &o.metric;
   const std::vector<SymMat3> metric = geometric_surface_metric(input, m, o.features);
   std::vector<double> h(metric.size());
   for (std::size_t v = 0; v < h.size(); ++v) h[v] = 1.0 / std::sqrt(eigen(metric[v]).values[2]);
@@ -97,6 +98,9 @@ void SurfaceAdaptOptions::validate() const {
   if (!(hausd > 0.0) || !std::isfinite(hausd)) throw InputError("hausd must be > 0");
   if (!(hsiz >= 0.0) || !std::isfinite(hsiz)) throw InputError("hsiz must be >= 0");
   if (max_cycles < 0) throw InputError("the number of cycles must be >= 0");
+  for (const SymMat3& m : metric)
+    if (!(det(m) > 0.0) || !(m.c[0] > 0.0) || !is_finite(m))
+      throw InputError("surface metric: a tensor is not positive definite");
   features.validate();
 }
 
@@ -109,6 +113,8 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
   options.validate();
   if (input.kind() != MeshKind::kSurface)
     throw InputError("adapt_surface: need a surface mesh (3D triangles, no tetrahedra)");
+  if (!options.metric.empty() && options.metric.size() != input.num_vertices())
+    throw InputError("adapt_surface: the metric needs one tensor per input vertex");
   const SurfaceProjection geo(input, options.features, vertex_sizes(input, options),
                               0.5 * options.hausd);
   State s = initial_state(input, geo);

@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/symmat.hpp"
 #include "mesh/mesh.hpp"
 #include "remesh/surface_features.hpp"
 
@@ -38,6 +39,9 @@ struct SurfaceAdaptOptions {
   double hmin = 0.0;    ///< <= 0: hausd
   double hmax = 0.0;    ///< <= 0: the bounding-box diagonal
   double hgrad = 1.3;   ///< H-shock gradation of the sizes (<= 0: none)
+  /// A user metric per input vertex (SPD), intersected with the geometric metric; the remesher
+  /// follows the smallest size of the result (isotropic). Empty: none.
+  std::vector<SymMat3> metric;
   FeatureOptions features;
   int max_cycles = 12;  ///< split/collapse/swap/smooth cycles
   bool insert = true, swap = true, move = true;

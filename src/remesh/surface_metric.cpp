@@ -106,6 +106,11 @@ std::vector<SymMat3> geometric_surface_metric(const Mesh& mesh, const Adjacency&
       m[v] = intersect(m[v], mc);
     }
   }
+  if (options.user_metric && !options.user_metric->empty()) {
+    if (options.user_metric->size() != nv)
+      throw InputError("geometric_surface_metric: the user metric needs one tensor per vertex");
+    for (std::size_t v = 0; v < nv; ++v) m[v] = intersect(m[v], (*options.user_metric)[v]);
+  }
   SurfaceMetricReport r;
   r.hmin = hmin;
   r.hmax = hmax;

@@ -11,7 +11,8 @@
 // `beta_fraction` of the way from α to β). A vertex on a feature line also follows the line's
 // own curvature (circle through the vertex and its two feature neighbours): h_c = α_c ρ_c along
 // the line's tangent (isotropically in the isotropic mode). Flat places get hmax. Sizes are
-// clipped to [hmin, hmax], then graded along the surface edges (metric/gradation.hpp).
+// clipped to [hmin, hmax], intersected with the user metric if any, then graded along the surface
+// edges (metric/gradation.hpp).
 #include <vector>
 
 #include "core/symmat.hpp"
@@ -30,6 +31,9 @@ struct SurfaceMetricOptions {
   bool anisotropic = false;
   double beta_fraction = 1.0;  ///< in [0, 1]: 0 isotropic, 1 the full anisotropic β (BOOK §1)
   double hgrad = 1.3;          ///< H-shock gradation threshold (> 1); <= 0: no gradation
+  /// A user (e.g. physical) metric per vertex, intersected with the geometric one before the
+  /// gradation so that the result stays geometric (BOOK.md §1); null or empty: none. Not owned.
+  const std::vector<SymMat3>* user_metric = nullptr;
   /// Throws InputError for hausd <= 0, hmin > hmax (both given), hgrad in (0, 1], or
   /// beta_fraction outside [0, 1].
   void validate() const;

@@ -26,6 +26,13 @@ fi
 "$R" adapt "$IN" -o "$TMP/hsiz.mesh" --hausd 0.0028 --hsiz 0.02 -q
 n1=$(grep -A1 '^Triangles' "$TMP/out.mesh" | tail -1); n2=$(grep -A1 '^Triangles' "$TMP/hsiz.mesh" | tail -1)
 [ "$n2" -gt "$n1" ] && ok "adapt-surface-hsiz ($n1 -> $n2)" || ko "adapt-surface-hsiz: $n1 $n2"
-expect_error adapt-surface-metric adapt "$IN" -o "$TMP/x.mesh" --metric "$TMP/none.sol"
+# --metric with a size per vertex (MMG's scalar .sol): 0.02 everywhere refines.
+{ printf 'MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n600\n1 1\n'
+  for i in $(seq 600); do echo 0.02; done; echo End; } >"$TMP/size.sol"
+"$R" adapt "$IN" -o "$TMP/met.mesh" --hausd 0.0028 --metric "$TMP/size.sol" -q; code=$?
+n3=$(grep -A1 '^Triangles' "$TMP/met.mesh" | tail -1)
+[ $code -eq 0 ] && [ "$n3" -gt "$n1" ] && ok "adapt-surface-metric ($n1 -> $n3)" || ko "adapt-surface-metric: $code $n1 $n3"
+expect_error adapt-surface-metric-missing adapt "$IN" -o "$TMP/x.mesh" --metric "$TMP/none.sol"
+expect_error adapt-surface-field adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/size.sol" --complexity 100
 expect_no_file adapt-surface-no-output "$TMP/x.mesh"
 exit $fail

@@ -98,6 +98,24 @@ TEST(SurfaceAdapt, SphereToUniformSize) {
   EXPECT_LT(mean, 1.3 * o.hsiz);
 }
 
+TEST(SurfaceAdapt, UserMetricRefines) {
+  // A user size 0.1 on the unit sphere (the geometric size for hausd 0.01 is 0.245): about
+  // 4π / (√3/4 · 0.1²) = 2900 triangles; the user metric is intersected, never relaxed.
+  const Mesh in = sphere_mesh(4, 1.0);
+  SurfaceAdaptOptions o;
+  o.hausd = 0.01;
+  const Outcome geo = run(in, o);
+  o.metric.assign(in.num_vertices(), SymMat3::diagonal(1.0 / (0.1 * 0.1)));
+  const Outcome user = run(in, o);
+  EXPECT_GT(user.out.num_triangles(), 2000u);
+  EXPECT_LT(user.out.num_triangles(), 4000u);
+  EXPECT_LT(geo.out.num_triangles(), user.out.num_triangles() / 2);
+  EXPECT_TRUE(check_mesh(user.out).valid());
+  EXPECT_GE(user.report.q_min, 0.3);
+  o.metric.resize(3);
+  EXPECT_THROW(adapt_surface(in, o), InputError);
+}
+
 TEST(SurfaceAdapt, TorusKeepsGenusOne) {
   const Mesh in = param_grid(torus_param(1.0, 0.4), 96, 48, 0, 2 * kPi, 0, 2 * kPi, true, true);
   SurfaceAdaptOptions o;

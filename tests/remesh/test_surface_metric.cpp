@@ -130,6 +130,27 @@ TEST(SurfaceMetric, GradationOnTheBunny) {
     EXPECT_TRUE(contained_in(graded[v], raw[v], 1e-9)) << v;  // sizes only shrink
 }
 
+TEST(SurfaceMetric, UserMetricIsIntersected) {
+  // A user metric with size 0.05 along x and 1 elsewhere on a sphere of radius 1 (geometric
+  // size ≈ 0.089 for hausd 1e-3): the result is inside both unit balls (⪰ both metrics).
+  const Mesh m = sphere_mesh(3, 1.0);
+  const std::vector<SymMat3> user(m.num_vertices(), SymMat3{{400.0, 0.0, 1.0, 0.0, 0.0, 1.0}});
+  SurfaceMetricOptions o;
+  o.hausd = 1e-3;
+  o.hgrad = 0.0;
+  const auto geo = geometric_surface_metric(m, o);
+  o.user_metric = &user;
+  const auto both = geometric_surface_metric(m, o);
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    EXPECT_TRUE(contained_in(both[v], geo[v], 1e-9));
+    EXPECT_TRUE(contained_in(both[v], user[v], 1e-9));
+    EXPECT_NEAR(size_along(both[v], Vec3::unit(0)), 0.05, 1e-9);
+  }
+  const std::vector<SymMat3> wrong(3, SymMat3::identity());
+  o.user_metric = &wrong;
+  EXPECT_THROW(geometric_surface_metric(m, o), InputError);
+}
+
 TEST(SurfaceMetric, RejectsBadOptions) {
   const Mesh m = sphere_mesh(1, 1.0);
   SurfaceMetricOptions o;
