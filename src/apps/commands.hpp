@@ -15,6 +15,8 @@ struct ExitStatus {
 void register_metric(CLI::App& app);
 /// `riemesh metric hessian|combine ...` on the `metric` command (cmd_metric_hessian.cpp).
 void register_metric_hessian(CLI::App& metric);
+/// `riemesh metric geometric SURFACE -o M.sol` on the `metric` command (cmd_metric_geometric.cpp).
+void register_metric_geometric(CLI::App& metric);
 /// `riemesh demo`: a short tour on embedded inputs.
 void register_demo(CLI::App& app);
 /// `riemesh check FILE`: validity report (exit 0 valid, 1 invalid, 2 unreadable).
