@@ -6,7 +6,7 @@
 quality (4√3 A / Σ l²), the validity (`riemesh check`) and the wall time (median of --runs).
 
 usage: bench/surface_bench.py [--riemesh build/riemesh] [--data ../shared/data/surf]
-                              [--hausd 0.002,0.0005] [--runs 3] [--json OUT.json]
+                              [--hausd 0.002,0.0005] [--runs 3] [--json OUT.json] [--aniso]
 """
 import argparse, json, math, os, statistics, subprocess, sys, tempfile, time
 
@@ -61,6 +61,7 @@ def main():
     ap.add_argument("--hausd", default="0.002,0.0005")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--json")
+    ap.add_argument("--aniso", action="store_true", help="anisotropic geometric metric")
     a = ap.parse_args()
     rows = []
     tmp = tempfile.mkdtemp()
@@ -76,7 +77,8 @@ def main():
             times = []
             for _ in range(a.runs):
                 t0 = time.perf_counter()
-                subprocess.run([a.riemesh, "adapt", src, "-o", out, "--hausd", repr(hausd), "--quiet"], check=True)
+                subprocess.run([a.riemesh, "adapt", src, "-o", out, "--hausd", repr(hausd), "--quiet"]
+                               + (["--aniso"] if a.aniso else []), check=True)
                 times.append(time.perf_counter() - t0)
             d = json.loads(subprocess.run([a.riemesh, "distance", src, out, "--json"], check=True,
                                           capture_output=True, text=True).stdout)

@@ -28,7 +28,7 @@ struct AdaptArgs {
   std::string field, field_name, norm = "2", recovery = "lsq";
   double hsiz = 0.0, complexity = 0.0, aniso_max = std::numeric_limits<double>::infinity();
   bool optim = false, noinsert = false, noswap = false, nomove = false, nr = false;
-  bool quiet = false;
+  bool quiet = false, aniso = false;
   int verbosity = 0;
   Adapt2dOptions opt;
 };
@@ -125,6 +125,7 @@ void run_surface(const AdaptArgs& a, const Mesh& mesh) {
   s.options.hmin = a.opt.hmin;
   s.options.hmax = std::isfinite(a.opt.hmax) ? a.opt.hmax : 0.0;
   s.options.hgrad = a.opt.hgrad;
+  s.options.anisotropic = a.aniso;
   s.options.features.angle_deg = a.opt.angle_deg;
   s.options.features.detect_angle = !a.nr;
   s.options.insert = !a.noinsert;
@@ -138,6 +139,7 @@ void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
   const Mesh mesh = read_mesh(a.input);
   if (mesh.kind() == MeshKind::kSurface) return run_surface(a, mesh);
+  if (a.aniso) throw InputError("--aniso applies to surface meshes (the 2D metric is given)");
   const int sources = (a.hsiz > 0.0) + !a.metric.empty() + !a.field.empty() + a.optim;
   if (sources > 1)
     throw InputError("--metric, --hsiz, --field and --optim contradict: give one of them");
@@ -223,6 +225,7 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--angle,--ar", a->opt.angle_deg, "Corner angle threshold (degrees)")
       ->capture_default_str();
   cmd->add_flag("--nr", a->nr, "No corner detection by angle");
+  cmd->add_flag("--aniso", a->aniso, "Surfaces: anisotropic geometric metric (BOOK.md §1)");
   cmd->add_flag("--optim", a->optim, "Improve quality at the current sizes (implied metric)");
   cmd->add_flag("--noinsert", a->noinsert, "No vertex insertion or removal");
   cmd->add_flag("--noswap", a->noswap, "No edge swaps");

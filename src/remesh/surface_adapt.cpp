@@ -26,7 +26,7 @@ constexpr double kBadQuality = 0.3;
 /// Largest number of consecutive split (or collapse) passes in one cycle.
 constexpr int kInnerPasses = 8;
 
-std::vector<double> vertex_sizes(const Mesh& input, const SurfaceAdaptOptions& o) {
+std::vector<SymMat3> vertex_metrics(const Mesh& input, const SurfaceAdaptOptions& o) {
   SurfaceMetricOptions m;
   m.hausd = kCentroidFactor * o.hausd;
   m.hmin = o.hmin;
@@ -34,11 +34,13 @@ std::vector<double> vertex_sizes(const Mesh& input, const SurfaceAdaptOptions& o
   if (o.hsiz > 0.0) m.hmax = m.hmax > 0.0 ? std::min(m.hmax, o.hsiz) : o.hsiz;
   if (m.hmin > 0.0 && m.hmax > 0.0 && m.hmin > m.hmax) m.hmin = m.hmax;
   m.hgrad = o.hgrad;
+  m.anisotropic = o.anisotropic;
+  m.beta_fraction = o.beta_fraction;
   m.user_metric = &o.metric;
-  const std::vector<SymMat3> metric = geometric_surface_metric(input, m, o.features);
-  std::vector<double> h(metric.size());
-  for (std::size_t v = 0; v < h.size(); ++v) h[v] = 1.0 / std::sqrt(eigen(metric[v]).values[2]);
-  return h;
+  std::vector<SymMat3> metric = geometric_surface_metric(input, m, o.features);
+  if (!o.anisotropic)  // isotropic: the smallest principal size in every direction
+    for (SymMat3& x : metric) x = SymMat3::diagonal(eigen(x).values[2]);
+  return metric;
 }
 
 State initial_state(const Mesh& input, const SurfaceProjection& geo) {
@@ -49,7 +51,7 @@ State initial_state(const Mesh& input, const SurfaceProjection& geo) {
   for (std::size_t v = 0; v < nv; ++v) {
     const Vec3 p{{input.coords[3 * v], input.coords[3 * v + 1], input.coords[3 * v + 2]}};
     const auto b = ball(adj, static_cast<Id>(v));
-    s.add_vertex(p, geo.sizes()[v], f.vert_tag[v] & (kTagCorner | kTagRidge),
+    s.add_vertex(p, geo.metrics()[v], f.vert_tag[v] & (kTagCorner | kTagRidge),
                  b.empty() ? kNoId : b[0], kNoId);
   }
   s.tri = input.triangles;
@@ -98,6 +100,8 @@ void SurfaceAdaptOptions::validate() const {
   if (!(hausd > 0.0) || !std::isfinite(hausd)) throw InputError("hausd must be > 0");
   if (!(hsiz >= 0.0) || !std::isfinite(hsiz)) throw InputError("hsiz must be >= 0");
   if (max_cycles < 0) throw InputError("the number of cycles must be >= 0");
+  if (!(beta_fraction >= 0.0 && beta_fraction <= 1.0))
+    throw InputError("beta fraction must be in [0, 1]");
   for (const SymMat3& m : metric)
     if (!(det(m) > 0.0) || !(m.c[0] > 0.0) || !is_finite(m))
       throw InputError("surface metric: a tensor is not positive definite");
@@ -115,7 +119,7 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
     throw InputError("adapt_surface: need a surface mesh (3D triangles, no tetrahedra)");
   if (!options.metric.empty() && options.metric.size() != input.num_vertices())
     throw InputError("adapt_surface: the metric needs one tensor per input vertex");
-  const SurfaceProjection geo(input, options.features, vertex_sizes(input, options),
+  const SurfaceProjection geo(input, options.features, vertex_metrics(input, options),
                               0.5 * options.hausd);
   State s = initial_state(input, geo);
   s.geo = &geo;

@@ -1,11 +1,12 @@
 #pragma once
-// A first isotropic surface remesher (issue #6): local operators on a triangulated surface in
-// 3D driven by a size field — the geometric size from the curvature and `hausd`
-// (surface_metric.hpp, smallest principal size), capped by `hsiz` — with every new or moved
-// point placed on the input's smooth reconstruction (surface_projection.hpp).
+// A first surface remesher (issue #6): local operators on a triangulated surface in 3D driven by
+// a metric field — the geometric metric from the curvature and `hausd` (surface_metric.hpp),
+// isotropic (its smallest principal size) or anisotropic, capped by `hsiz` — with every new or
+// moved point placed on the input's smooth reconstruction (surface_projection.hpp). Lengths and
+// qualities below are measured in the metric (the mean of the vertex metrics of a triangle).
 //
 // Operators, in passes of independent operations (each pass rebuilds the adjacency):
-//   split    edges longer than √2 in the size field; the new point on the reconstruction (on the
+//   split    edges longer than √2 in the metric; the new point on the reconstruction (on the
 //            feature curve for a feature edge);
 //   collapse edges shorter than 1/√2, a vertex into a neighbour: corners never move, a ridge
 //            vertex only along its feature line, link condition (no topology change), no
@@ -39,6 +40,10 @@ struct SurfaceAdaptOptions {
   double hmin = 0.0;    ///< <= 0: hausd
   double hmax = 0.0;    ///< <= 0: the bounding-box diagonal
   double hgrad = 1.3;   ///< H-shock gradation of the sizes (<= 0: none)
+  /// Anisotropic geometric metric (sizes αρ1 along w1, up to βρ2 along w2; BOOK.md §1), lengths
+  /// and qualities measured in it; false: the smallest principal size in every direction.
+  bool anisotropic = false;
+  double beta_fraction = 1.0;  ///< with anisotropic: 0 isotropic .. 1 the full β
   /// A user metric per input vertex (SPD), intersected with the geometric metric; the remesher
   /// follows the smallest size of the result (isotropic). Empty: none.
   std::vector<SymMat3> metric;

@@ -1,9 +1,11 @@
 #pragma once
 // Internal state of the surface remesher (surface_adapt.cpp drives, surface_ops.cpp operates).
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
 
+#include "core/symmat.hpp"
 #include "core/vec.hpp"
 #include "mesh/adjacency.hpp"
 #include "remesh/surface_adapt.hpp"
@@ -20,7 +22,7 @@ inline std::uint64_t edge_key(Id a, Id b) {
 /// (dead ones have tri[3t] == kNoId until the pass compacts them); feature edges by key.
 struct State {
   std::vector<Vec3> x;
-  std::vector<double> h;
+  std::vector<SymMat3> m;  // the metric the mesh must be unit in (I/h² when isotropic)
   std::vector<std::uint8_t> tag;  // kTagCorner, kTagRidge
   std::vector<Id> surf_hint, line_hint;
   std::vector<Id> tri;
@@ -34,14 +36,15 @@ struct State {
   std::size_t num_vertices() const { return x.size(); }
   std::size_t num_triangles() const { return tri.size() / 3; }
   bool is_feature(Id a, Id b) const { return feature.count(edge_key(a, b)) != 0; }
-  /// Length of ab in the size field (mean of the end sizes).
+  /// Length of ab in the metric field (mean of the lengths in the end metrics).
   double size_length(Id a, Id b) const {
-    return norm(x[static_cast<std::size_t>(b)] - x[static_cast<std::size_t>(a)]) /
-           (0.5 * (h[static_cast<std::size_t>(a)] + h[static_cast<std::size_t>(b)]));
+    const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+    const Vec3 d = x[ub] - x[ua];
+    return 0.5 * (std::sqrt(quadratic(m[ua], d)) + std::sqrt(quadratic(m[ub], d)));
   }
-  Id add_vertex(const Vec3& p, double size, std::uint8_t t, Id sh, Id lh) {
+  Id add_vertex(const Vec3& p, const SymMat3& metric, std::uint8_t t, Id sh, Id lh) {
     x.push_back(p);
-    h.push_back(size);
+    m.push_back(metric);
     tag.push_back(t);
     surf_hint.push_back(sh);
     line_hint.push_back(lh);
@@ -68,5 +71,8 @@ std::size_t smooth_pass(State& s);
 
 Vec3 tri_normal(const Vec3& a, const Vec3& b, const Vec3& c);  // unit, zero if degenerate
 double quality(const Vec3& a, const Vec3& b, const Vec3& c);
+/// Quality 4√3 A_M / Σ l_M² of triangle abc in the metric M (the Euclidean one for M = I/h²):
+/// A_M = ½ sqrt(det G), G the Gram matrix of two edges in M.
+double quality(const SymMat3& m, const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace riemesh::surface_detail

@@ -122,6 +122,16 @@ bool new_triangles_close(const State& s, const std::vector<Tri3>& new_t, Id hint
   return true;
 }
 
+/// The metric of triangle t: the mean of its vertex metrics, vertex `moved` (if any) taking `mm`.
+SymMat3 tri_metric(const State& s, Id t, Id moved = kNoId, const SymMat3* mm = nullptr) {
+  SymMat3 sum = SymMat3::zero();
+  for (int i = 0; i < 3; ++i) {
+    const Id v = s.tri[3 * us(t) + i];
+    sum += (v == moved && mm) ? *mm : s.m[us(v)];
+  }
+  return (1.0 / 3.0) * sum;
+}
+
 /// Local position i of the edge p -> q in triangle t (tri[i] = p, tri[i+1] = q), or -1.
 int directed(const State& s, Id t, Id p, Id q) {
   for (int i = 0; i < 3; ++i)
@@ -135,6 +145,14 @@ Vec3 tri_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 n = cross(b - a, c - a);
   const double l = norm(n);
   return l > 0.0 ? n / l : Vec3::zero();
+}
+
+double quality(const SymMat3& m, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e1 = b - a, e2 = c - a, e3 = c - b;
+  const double g11 = quadratic(m, e1), g22 = quadratic(m, e2), g12 = bilinear(m, e1, e2);
+  const double area = 0.5 * std::sqrt(std::max(0.0, g11 * g22 - g12 * g12));
+  const double l2 = g11 + g22 + quadratic(m, e3);
+  return l2 > 0.0 ? 4.0 * std::sqrt(3.0) * area / l2 : 0.0;
 }
 
 double quality(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -164,7 +182,9 @@ std::size_t split_pass(State& s, double bad_quality) {
     // The longest edge of each triangle below bad_quality (the edge facing its obtuse angle).
     for (std::size_t t = 0; t < s.num_triangles(); ++t) {
       const Id* v = &s.tri[3 * t];
-      if (quality(s.x[us(v[0])], s.x[us(v[1])], s.x[us(v[2])]) >= bad_quality) continue;
+      if (quality(tri_metric(s, static_cast<Id>(t)), s.x[us(v[0])], s.x[us(v[1])], s.x[us(v[2])]) >=
+          bad_quality)
+        continue;
       int best = 0;
       double lbest = -1.0;
       for (int j = 0; j < 3; ++j) {
@@ -220,7 +240,7 @@ std::size_t split_pass(State& s, double bad_quality) {
       if (ok) break;
     }
     if (!ok) continue;
-    const Id m = s.add_vertex(p.point, p.size, feat ? kTagRidge : kTagNone,
+    const Id m = s.add_vertex(p.point, p.metric, feat ? kTagRidge : kTagNone,
                               feat ? s.surf_hint[us(a)] : p.hint, feat ? p.hint : s.line_hint[us(a)]);
     for (int k = 0; k < nt; ++k) {
       const Id t = et[k];
@@ -274,7 +294,7 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   for (Id t : bv) {
     Vec3 c[3];
     corners(s, t, v, s.x[us(v)], c);
-    qmin_old = std::min(qmin_old, quality(c[0], c[1], c[2]));
+    qmin_old = std::min(qmin_old, quality(tri_metric(s, t), c[0], c[1], c[2]));
   }
   const double qfloor = std::min(0.3, qmin_old);
   const double hausd = kCheckMargin * s.opt->hausd;
@@ -290,7 +310,8 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
     corners(s, t, v, s.x[us(w)], n);
     new_t.push_back({n[0], n[1], n[2]});
     const Vec3 n_old = tri_normal(c[0], c[1], c[2]), n_new = tri_normal(n[0], n[1], n[2]);
-    if (dot(n_old, n_new) < kCosTurn || quality(n[0], n[1], n[2]) < qfloor) return false;
+    if (dot(n_old, n_new) < kCosTurn || quality(tri_metric(s, t, v, &s.m[us(w)]), n[0], n[1], n[2]) < qfloor)
+      return false;
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
   if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)]) ||
@@ -363,8 +384,11 @@ std::size_t swap_pass(State& s) {
     const Id c = s.tri[3 * us(t1) + (i1 + 2) % 3], d = s.tri[3 * us(t2) + (i2 + 2) % 3];
     if (c == d || find_edge(topo.adj, c, d) != kNoId) continue;
     const Vec3 &pa = s.x[us(a)], &pb = s.x[us(b)], &pc = s.x[us(c)], &pd = s.x[us(d)];
-    const double q_old = std::min(quality(pa, pb, pc), quality(pb, pa, pd));
-    const double q_new = std::min(quality(pa, pd, pc), quality(pd, pb, pc));
+    const SymMat3 &ma = s.m[us(a)], &mb = s.m[us(b)], &mc = s.m[us(c)], &md = s.m[us(d)];
+    const double q_old = std::min(quality((1.0 / 3.0) * (ma + mb + mc), pa, pb, pc),
+                                  quality((1.0 / 3.0) * (mb + ma + md), pb, pa, pd));
+    const double q_new = std::min(quality((1.0 / 3.0) * (ma + md + mc), pa, pd, pc),
+                                  quality((1.0 / 3.0) * (md + mb + mc), pd, pb, pc));
     if (!(q_new > 1.05 * q_old)) continue;
     const Vec3 n1 = tri_normal(pa, pb, pc), n2 = tri_normal(pb, pa, pd);
     const Vec3 m1 = tri_normal(pa, pd, pc), m2 = tri_normal(pd, pb, pc);
@@ -407,7 +431,7 @@ std::size_t smooth_pass(State& s) {
     for (Id t : bv) {
       Vec3 c[3];
       corners(s, t, v, s.x[vi], c);
-      q_ball = std::min(q_ball, quality(c[0], c[1], c[2]));
+      q_ball = std::min(q_ball, quality(tri_metric(s, t), c[0], c[1], c[2]));
     }
     if (q_ball >= kSmoothEnough) continue;
     const std::vector<Id> nb = neighbours(s, topo.adj, v);
@@ -433,8 +457,8 @@ std::size_t smooth_pass(State& s) {
       corners(s, t, v, p.point, n);
       old_t.push_back({c[0], c[1], c[2]});
       new_t.push_back({n[0], n[1], n[2]});
-      q_old = std::min(q_old, quality(c[0], c[1], c[2]));
-      q_new = std::min(q_new, quality(n[0], n[1], n[2]));
+      q_old = std::min(q_old, quality(tri_metric(s, t), c[0], c[1], c[2]));
+      q_new = std::min(q_new, quality(tri_metric(s, t, v, &p.metric), n[0], n[1], n[2]));
       if (dot(tri_normal(c[0], c[1], c[2]), tri_normal(n[0], n[1], n[2])) < kCosTurn) ok = false;
       if (!ok) break;
     }
@@ -443,7 +467,7 @@ std::size_t smooth_pass(State& s) {
         !keeps_input_close(s, old_t, new_t))
       continue;
     s.x[vi] = p.point;
-    s.h[vi] = p.size;
+    s.m[vi] = p.metric;
     if (s.tag[vi] & kTagRidge) s.line_hint[vi] = p.hint;
     else s.surf_hint[vi] = p.hint;
     ++count;
@@ -471,14 +495,14 @@ void State::compact() {
   for (std::size_t v = 0; v < x.size(); ++v)
     if (new_id[v] != kNoId) new_id[v] = next++;
   std::vector<Vec3> x2(us(next));
-  std::vector<double> h2(us(next));
+  std::vector<SymMat3> m2(us(next));
   std::vector<std::uint8_t> tag2(us(next));
   std::vector<Id> sh2(us(next)), lh2(us(next));
   for (std::size_t v = 0; v < x.size(); ++v) {
     const Id n = new_id[v];
     if (n == kNoId) continue;
     x2[us(n)] = x[v];
-    h2[us(n)] = h[v];
+    m2[us(n)] = m[v];
     tag2[us(n)] = tag[v];
     sh2[us(n)] = surf_hint[v];
     lh2[us(n)] = line_hint[v];
@@ -493,7 +517,7 @@ void State::compact() {
     ft2[edge_key(new_id[us(a)], new_id[us(b)])] = feature_tag[key];
   }
   x.swap(x2);
-  h.swap(h2);
+  m.swap(m2);
   tag.swap(tag2);
   surf_hint.swap(sh2);
   line_hint.swap(lh2);

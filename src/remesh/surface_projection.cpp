@@ -41,16 +41,16 @@ Mesh line_mesh(const Mesh& mesh, const std::vector<Id>& line_edges) {
 }  // namespace
 
 SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& features,
-                                     std::vector<double> size, double max_lift)
+                                     std::vector<SymMat3> metric, double max_lift)
     : mesh_(input),
       adj_(build_adjacency(mesh_)),
       features_(detect_features(mesh_, adj_, features)),
       sectors_(surface_sectors(mesh_, adj_, features_)),
       tri_tree_(mesh_),
-      size_(std::move(size)),
+      metric_(std::move(metric)),
       max_lift_(max_lift) {
-  if (size_.size() != mesh_.num_vertices())
-    throw InputError("SurfaceProjection: one size per input vertex expected");
+  if (metric_.size() != mesh_.num_vertices())
+    throw InputError("SurfaceProjection: one metric per input vertex expected");
   sectors_.normal = fitted_sector_normals(mesh_, adj_, features_, sectors_);
   rec_ = std::make_unique<SurfaceReconstruction>(mesh_, adj_, features_, sectors_);
   for (std::size_t e = 0; e < adj_.num_edges(); ++e)
@@ -149,9 +149,9 @@ SurfaceProjection::Placed SurfaceProjection::on_surface(const Vec3& p, Id hint, 
                               vertex_at(mesh_, tri[2]));
   Placed out;
   out.point = smooth ? lift(q.point, rec_->point(q.triangle, uv[0], uv[1])) : q.point;
-  out.size = (1.0 - uv[0] - uv[1]) * size_[static_cast<std::size_t>(tri[0])] +
-             uv[0] * size_[static_cast<std::size_t>(tri[1])] +
-             uv[1] * size_[static_cast<std::size_t>(tri[2])];
+  out.metric = (1.0 - uv[0] - uv[1]) * metric_[static_cast<std::size_t>(tri[0])] +
+               uv[0] * metric_[static_cast<std::size_t>(tri[1])] +
+               uv[1] * metric_[static_cast<std::size_t>(tri[2])];
   out.hint = q.triangle;
   return out;
 }
@@ -166,7 +166,7 @@ SurfaceProjection::Placed SurfaceProjection::on_feature(const Vec3& p, Id hint, 
   const double s = l2 > 0.0 ? std::clamp(dot(q.point - pa, pb - pa) / l2, 0.0, 1.0) : 0.0;
   Placed out;
   out.point = smooth ? lift(q.point, rec_->edge_point(a, b, s)) : q.point;
-  out.size = (1.0 - s) * size_[static_cast<std::size_t>(a)] + s * size_[static_cast<std::size_t>(b)];
+  out.metric = (1.0 - s) * metric_[static_cast<std::size_t>(a)] + s * metric_[static_cast<std::size_t>(b)];
   out.hint = q.triangle;
   return out;
 }

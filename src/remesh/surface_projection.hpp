@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/symmat.hpp"
 #include "core/vec.hpp"
 #include "mesh/adjacency.hpp"
 #include "mesh/distance.hpp"
@@ -23,16 +24,17 @@ namespace riemesh {
 
 class SurfaceProjection {
  public:
-  /// Analyses `input` (copied). `size`: one size per input vertex (interpolated at placed
-  /// points). `max_lift`: the largest distance between a placed point and the input polyhedron.
-  SurfaceProjection(const Mesh& input, const FeatureOptions& features, std::vector<double> size,
-                    double max_lift);
+  /// Analyses `input` (copied). `metric`: one metric per input vertex (interpolated linearly at
+  /// placed points). `max_lift`: the largest distance between a placed point and the input
+  /// polyhedron.
+  SurfaceProjection(const Mesh& input, const FeatureOptions& features,
+                    std::vector<SymMat3> metric, double max_lift);
   SurfaceProjection(const SurfaceProjection&) = delete;
   SurfaceProjection& operator=(const SurfaceProjection&) = delete;
 
   struct Placed {
     Vec3 point{};
-    double size = 0.0;
+    SymMat3 metric{};
     Id hint = kNoId;  ///< input triangle (surface) or feature edge index (lines) found
   };
   /// The point of the surface for p; `hint` is a nearby input triangle or kNoId. `smooth`
@@ -53,7 +55,7 @@ class SurfaceProjection {
   const Mesh& input() const { return mesh_; }
   const Adjacency& adjacency() const { return adj_; }
   const SurfaceFeatures& features() const { return features_; }
-  const std::vector<double>& sizes() const { return size_; }
+  const std::vector<SymMat3>& metrics() const { return metric_; }
 
  private:
   Vec3 lift(const Vec3& flat, const Vec3& smooth) const;
@@ -66,7 +68,7 @@ class SurfaceProjection {
   TriangleTree tri_tree_;
   std::vector<Id> line_edges_;  // 2 per feature edge (input vertex ids)
   std::unique_ptr<TriangleTree> line_tree_;
-  std::vector<double> size_;
+  std::vector<SymMat3> metric_;
   double max_lift_;
   // Uniform grid of the check points: cell (i, j, k) holds points
   // grid_points_[grid_offsets_[c] .. grid_offsets_[c + 1]), c = (k ny + j) nx + i.

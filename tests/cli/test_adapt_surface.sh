@@ -32,6 +32,13 @@ n1=$(grep -A1 '^Triangles' "$TMP/out.mesh" | tail -1); n2=$(grep -A1 '^Triangles
 "$R" adapt "$IN" -o "$TMP/met.mesh" --hausd 0.0028 --metric "$TMP/size.sol" -q; code=$?
 n3=$(grep -A1 '^Triangles' "$TMP/met.mesh" | tail -1)
 [ $code -eq 0 ] && [ "$n3" -gt "$n1" ] && ok "adapt-surface-metric ($n1 -> $n3)" || ko "adapt-surface-metric: $code $n1 $n3"
+# --aniso: the anisotropic geometric metric; fewer triangles, still valid and within hausd.
+"$R" adapt "$IN" -o "$TMP/aniso.mesh" --hausd 0.0028 --aniso -q; code=$?
+n4=$(grep -A1 '^Triangles' "$TMP/aniso.mesh" | tail -1)
+[ $code -eq 0 ] && [ "$n4" -lt "$n1" ] && "$R" check "$TMP/aniso.mesh" >/dev/null && ok "adapt-surface-aniso ($n1 -> $n4)" || ko "adapt-surface-aniso: $code $n1 $n4"
+json=$("$R" distance "$IN" "$TMP/aniso.mesh" --json)
+/usr/bin/python3 -c "import json,sys; sys.exit(0 if json.loads(sys.argv[1])['hausdorff'] <= 0.0028 else 1)" "$json" && ok adapt-surface-aniso-hausdorff || ko "adapt-surface-aniso-hausdorff: $json"
+expect_error adapt-aniso-planar adapt "$SHARED/data/2d/aile.mesh" -o "$TMP/y.mesh" --hsiz 1 --aniso
 expect_error adapt-surface-metric-missing adapt "$IN" -o "$TMP/x.mesh" --metric "$TMP/none.sol"
 expect_error adapt-surface-field adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/size.sol" --complexity 100
 expect_no_file adapt-surface-no-output "$TMP/x.mesh"
