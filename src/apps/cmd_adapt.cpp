@@ -1,4 +1,5 @@
-// `riemesh adapt`: remesh to a metric field (2D for now), with MMG-compatible spellings.
+// `riemesh adapt`: remesh to a metric field (2D) or to geometric sizes (surfaces), with
+// MMG-compatible spellings.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -6,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "apps/adapt_surface.hpp"
 #include "apps/commands.hpp"
 #include "apps/field_args.hpp"
 #include "core/error.hpp"
@@ -26,7 +28,7 @@ struct AdaptArgs {
   std::string field, field_name, norm = "2", recovery = "lsq";
   double hsiz = 0.0, complexity = 0.0, aniso_max = std::numeric_limits<double>::infinity();
   bool optim = false, noinsert = false, noswap = false, nomove = false, nr = false;
-  bool quiet = false;
+  bool quiet = false, aniso = false;
   int verbosity = 0;
   Adapt2dOptions opt;
 };
@@ -109,8 +111,35 @@ void print_pass(const PassStats& s, int verbosity) {
                  s.len_max, s.q_mean);
 }
 
+/// The surface branch: geometric sizes from --hausd, capped by --hsiz (issue #6).
+void run_surface(const AdaptArgs& a, const Mesh& mesh) {
+  if (!a.field.empty() || a.optim)
+    throw InputError(a.input + ": surface remeshing takes --hausd, --metric and --hsiz/--hmin/"
+                     "--hmax so far (no --field or --optim)");
+  SurfaceAdaptArgs s;
+  s.input = a.input;
+  s.output = a.output;
+  s.metric = a.metric;
+  s.options.hausd = a.opt.hausd;
+  s.options.hsiz = a.hsiz;
+  s.options.hmin = a.opt.hmin;
+  s.options.hmax = std::isfinite(a.opt.hmax) ? a.opt.hmax : 0.0;
+  s.options.hgrad = a.opt.hgrad;
+  s.options.anisotropic = a.aniso;
+  s.options.features.angle_deg = a.opt.angle_deg;
+  s.options.features.detect_angle = !a.nr;
+  s.options.insert = !a.noinsert;
+  s.options.swap = !a.noswap;
+  s.options.move = !a.nomove;
+  s.quiet = a.quiet || a.verbosity < 0;
+  run_adapt_surface(s, mesh);
+}
+
 void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
+  const Mesh mesh = read_mesh(a.input);
+  if (mesh.kind() == MeshKind::kSurface) return run_surface(a, mesh);
+  if (a.aniso) throw InputError("--aniso applies to surface meshes (the 2D metric is given)");
   const int sources = (a.hsiz > 0.0) + !a.metric.empty() + !a.field.empty() + a.optim;
   if (sources > 1)
     throw InputError("--metric, --hsiz, --field and --optim contradict: give one of them");
@@ -138,7 +167,6 @@ void run(AdaptArgs& a) {
   a.opt.interp = parse_interp_scheme(a.interp);
   if (a.optim && a.opt.hgrad > 0.0) a.opt.hgrad = 0.0;  // the implied sizes are kept as they are
   a.opt.validate();
-  const Mesh mesh = read_mesh(a.input);
   if (mesh.dim != 2 || !mesh.tets.empty())
     throw InputError(a.input + ": only planar (2D) meshes can be adapted so far; surface and "
                      "volume remeshing are issues #6 and #7");
@@ -197,6 +225,7 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--angle,--ar", a->opt.angle_deg, "Corner angle threshold (degrees)")
       ->capture_default_str();
   cmd->add_flag("--nr", a->nr, "No corner detection by angle");
+  cmd->add_flag("--aniso", a->aniso, "Surfaces: anisotropic geometric metric (BOOK.md §1)");
   cmd->add_flag("--optim", a->optim, "Improve quality at the current sizes (implied metric)");
   cmd->add_flag("--noinsert", a->noinsert, "No vertex insertion or removal");
   cmd->add_flag("--noswap", a->noswap, "No edge swaps");

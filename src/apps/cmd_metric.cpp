@@ -180,6 +180,7 @@ void register_metric(CLI::App& app) {
   len->callback([args] { length_cmd(*args); });
 
   register_metric_hessian(*metric);
+  register_metric_geometric(*metric);
 }
 
 }  // namespace riemesh::cli

@@ -15,6 +15,8 @@ struct ExitStatus {
 void register_metric(CLI::App& app);
 /// `riemesh metric hessian|combine ...` on the `metric` command (cmd_metric_hessian.cpp).
 void register_metric_hessian(CLI::App& metric);
+/// `riemesh metric geometric SURFACE -o M.sol` on the `metric` command (cmd_metric_geometric.cpp).
+void register_metric_geometric(CLI::App& metric);
 /// `riemesh demo`: a short tour on embedded inputs.
 void register_demo(CLI::App& app);
 /// `riemesh check FILE`: validity report (exit 0 valid, 1 invalid, 2 unreadable).
@@ -37,5 +39,7 @@ void register_mesh(CLI::App& app);
 void register_transfer(CLI::App& app);
 /// `riemesh unsteady`: the unsteady fixed-point loop on moving fronts (cmd_unsteady.cpp).
 void register_unsteady(CLI::App& app);
+/// `riemesh distance A B [--samples N] [--json]`: sampled Hausdorff distances (cmd_distance.cpp).
+void register_distance(CLI::App& app);
 
 }  // namespace riemesh::cli

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   riemesh::cli::register_transfer(app);
   riemesh::cli::register_unsteady(app);
   riemesh::cli::register_mesh(app);
+  riemesh::cli::register_distance(app);
   std::vector<std::string> args(argv + 1, argv + argc);
   riemesh::cli::translate_mmg_spellings(args);
   std::reverse(args.begin(), args.end());  // CLI11 parses a vector from its back

@@ -1,0 +1,307 @@
+#include "mesh/distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/error.hpp"
+
+namespace riemesh {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kLeafSize = 4;
+
+Vec3 vertex_at(const Mesh& mesh, Id v) {
+  const double* p = &mesh.coords[3 * static_cast<std::size_t>(v)];
+  return {{p[0], p[1], p[2]}};
+}
+
+Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double l2 = dot(ab, ab);
+  if (!(l2 > 0.0)) return a;
+  return a + std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) * ab;
+}
+
+double dist2(const Vec3& a, const Vec3& b) {
+  const Vec3 d = a - b;
+  return dot(d, d);
+}
+
+/// Squared distance from p to a box (0 inside).
+double box_dist2(const Vec3& p, const double (&lo)[3], const double (&hi)[3]) {
+  double s = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const double d = p[c] < lo[c] ? lo[c] - p[c] : (p[c] > hi[c] ? p[c] - hi[c] : 0.0);
+    s += d * d;
+  }
+  return s;
+}
+
+void require_triangles_3d(const Mesh& mesh) {
+  if (mesh.dim != 3 || mesh.triangles.empty())
+    throw InputError("distance: need a 3D mesh with triangles");
+  const auto nv = static_cast<Id>(mesh.num_vertices());
+  for (Id v : mesh.triangles)
+    if (v < 0 || v >= nv) throw InputError("distance: triangle vertex id out of range");
+}
+
+double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return 0.5 * norm(cross(b - a, c - a));
+}
+
+}  // namespace
+
+Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a;
+  const Vec3 n = cross(ab, ac);
+  if (!(dot(n, n) > 1e-28 * dot(ab, ab) * dot(ac, ac))) {
+    // Degenerate: the closest point of its three sides.
+    const Vec3 q[3] = {closest_on_segment(p, a, b), closest_on_segment(p, b, c),
+                       closest_on_segment(p, c, a)};
+    int best = 0;
+    for (int i = 1; i < 3; ++i)
+      if (dist2(p, q[i]) < dist2(p, q[best])) best = i;
+    return q[best];
+  }
+  const Vec3 ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double inv = 1.0 / (va + vb + vc);
+  return a + (vb * inv) * ab + (vc * inv) * ac;
+}
+
+TriangleTree::TriangleTree(const Mesh& mesh) {
+  require_triangles_3d(mesh);
+  const std::size_t nt = mesh.num_triangles();
+  tri_.resize(3 * nt);
+  std::vector<double> centroid(3 * nt);
+  for (std::size_t t = 0; t < nt; ++t) {
+    for (int i = 0; i < 3; ++i) tri_[3 * t + i] = vertex_at(mesh, mesh.triangles[3 * t + i]);
+    for (int c = 0; c < 3; ++c)
+      centroid[3 * t + c] = (tri_[3 * t][c] + tri_[3 * t + 1][c] + tri_[3 * t + 2][c]) / 3.0;
+  }
+  order_.resize(nt);
+  std::iota(order_.begin(), order_.end(), Id{0});
+  nodes_.reserve(2 * nt / kLeafSize + 2);
+  build(0, static_cast<int>(nt), centroid);
+}
+
+int TriangleTree::build(int first, int count, std::vector<double>& centroid) {
+  const int id = static_cast<int>(nodes_.size());
+  nodes_.push_back(Node{});
+  Node node{};
+  double clo[3] = {kInf, kInf, kInf}, chi[3] = {-kInf, -kInf, -kInf};
+  for (int c = 0; c < 3; ++c) {
+    node.lo[c] = kInf;
+    node.hi[c] = -kInf;
+  }
+  for (int k = first; k < first + count; ++k) {
+    const auto t = static_cast<std::size_t>(order_[static_cast<std::size_t>(k)]);
+    for (int c = 0; c < 3; ++c) {
+      for (int i = 0; i < 3; ++i) {
+        node.lo[c] = std::min(node.lo[c], tri_[3 * t + i][c]);
+        node.hi[c] = std::max(node.hi[c], tri_[3 * t + i][c]);
+      }
+      clo[c] = std::min(clo[c], centroid[3 * t + c]);
+      chi[c] = std::max(chi[c], centroid[3 * t + c]);
+    }
+  }
+  if (count <= kLeafSize) {
+    node.first = first;
+    node.count = count;
+    nodes_[static_cast<std::size_t>(id)] = node;
+    return id;
+  }
+  // Median split along the longest axis of the centroids' box (ties broken by id: deterministic).
+  int axis = 0;
+  for (int c = 1; c < 3; ++c)
+    if (chi[c] - clo[c] > chi[axis] - clo[axis]) axis = c;
+  const int half = count / 2;
+  auto begin = order_.begin() + first;
+  std::nth_element(begin, begin + half, begin + count, [&](Id x, Id y) {
+    const double cx = centroid[3 * static_cast<std::size_t>(x) + axis];
+    const double cy = centroid[3 * static_cast<std::size_t>(y) + axis];
+    return cx < cy || (cx == cy && x < y);
+  });
+  node.left = build(first, half, centroid);
+  node.right = build(first + half, count - half, centroid);
+  nodes_[static_cast<std::size_t>(id)] = node;
+  return id;
+}
+
+void TriangleTree::consider(const Vec3& p, Id t, Nearest& best) const {
+  const auto k = 3 * static_cast<std::size_t>(t);
+  const Vec3 q = closest_point_on_triangle(p, tri_[k], tri_[k + 1], tri_[k + 2]);
+  const double d = std::sqrt(dist2(p, q));
+  if (d < best.distance || (d == best.distance && t < best.triangle)) {
+    best.distance = d;
+    best.triangle = t;
+    best.point = q;
+  }
+}
+
+TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, Id hint) const {
+  Nearest best;
+  if (hint != kNoId && static_cast<std::size_t>(hint) < num_triangles()) consider(p, hint, best);
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[static_cast<std::size_t>(stack[--top])];
+    if (box_dist2(p, n.lo, n.hi) > best.distance * best.distance) continue;
+    if (n.left < 0) {
+      for (int k = n.first; k < n.first + n.count; ++k)
+        consider(p, order_[static_cast<std::size_t>(k)], best);
+      continue;
+    }
+    // Push the farther child first so that the nearer one is searched first.
+    const Node& l = nodes_[static_cast<std::size_t>(n.left)];
+    const Node& r = nodes_[static_cast<std::size_t>(n.right)];
+    const bool left_first = box_dist2(p, l.lo, l.hi) <= box_dist2(p, r.lo, r.hi);
+    stack[top++] = left_first ? n.right : n.left;
+    stack[top++] = left_first ? n.left : n.right;
+  }
+  return best;
+}
+
+bool TriangleTree::within(const Vec3& p, double r, Id* hint) const {
+  auto close = [&](Id t) {
+    const auto k = 3 * static_cast<std::size_t>(t);
+    return dist2(p, closest_point_on_triangle(p, tri_[k], tri_[k + 1], tri_[k + 2])) <= r * r;
+  };
+  if (hint && *hint != kNoId && static_cast<std::size_t>(*hint) < num_triangles() && close(*hint))
+    return true;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[static_cast<std::size_t>(stack[--top])];
+    if (box_dist2(p, n.lo, n.hi) > r * r) continue;
+    if (n.left < 0) {
+      for (int k = n.first; k < n.first + n.count; ++k) {
+        const Id t = order_[static_cast<std::size_t>(k)];
+        if (close(t)) {
+          if (hint) *hint = t;
+          return true;
+        }
+      }
+      continue;
+    }
+    stack[top++] = n.right;
+    stack[top++] = n.left;
+  }
+  return false;
+}
+
+void TriangleTree::overlapping(const Vec3& lo, const Vec3& hi, std::vector<Id>& out) const {
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[static_cast<std::size_t>(stack[--top])];
+    bool overlaps = true;
+    for (int c = 0; c < 3; ++c) overlaps = overlaps && n.lo[c] <= hi[c] && n.hi[c] >= lo[c];
+    if (!overlaps) continue;
+    if (n.left < 0) {
+      for (int k = n.first; k < n.first + n.count; ++k) {
+        const Id t = order_[static_cast<std::size_t>(k)];
+        const auto i = 3 * static_cast<std::size_t>(t);
+        bool hit = true;
+        for (int c = 0; c < 3; ++c) {
+          const double tlo = std::min({tri_[i][c], tri_[i + 1][c], tri_[i + 2][c]});
+          const double thi = std::max({tri_[i][c], tri_[i + 1][c], tri_[i + 2][c]});
+          hit = hit && tlo <= hi[c] && thi >= lo[c];
+        }
+        if (hit) out.push_back(t);
+      }
+      continue;
+    }
+    stack[top++] = n.right;
+    stack[top++] = n.left;
+  }
+}
+
+void DistanceOptions::validate() const {
+  if (samples < 1) throw InputError("distance: samples must be >= 1");
+  if (!(spacing >= 0.0) || !std::isfinite(spacing))
+    throw InputError("distance: spacing must be >= 0");
+}
+
+OneSidedDistance one_sided_distance(const Mesh& from, const TriangleTree& to,
+                                    const DistanceOptions& options) {
+  options.validate();
+  require_triangles_3d(from);
+  OneSidedDistance out;
+  double weighted = 0.0, total_area = 0.0;
+  Id hint = kNoId;
+  for (std::size_t t = 0; t < from.num_triangles(); ++t) {
+    const Vec3 a = vertex_at(from, from.triangles[3 * t]);
+    const Vec3 b = vertex_at(from, from.triangles[3 * t + 1]);
+    const Vec3 c = vertex_at(from, from.triangles[3 * t + 2]);
+    int n = options.samples;
+    if (options.spacing > 0.0) {
+      const double longest = std::sqrt(std::max({dist2(a, b), dist2(b, c), dist2(c, a)}));
+      // Capped so that a wild spacing cannot ask for billions of points per triangle.
+      n = std::max(n, static_cast<int>(std::min(4096.0, std::ceil(longest / options.spacing))));
+    }
+    double sum = 0.0;
+    int count = 0;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+        const Vec3 p = a + u * (b - a) + v * (c - a);
+        const TriangleTree::Nearest q = to.nearest(p, hint);
+        hint = q.triangle;
+        sum += q.distance;
+        ++count;
+        if (q.distance > out.max || out.samples == 0) {
+          out.max = q.distance;
+          out.where = p;
+        }
+        ++out.samples;
+      }
+    const double area = triangle_area(a, b, c);
+    weighted += area * sum / count;
+    total_area += area;
+  }
+  out.mean = total_area > 0.0 ? weighted / total_area : 0.0;
+  return out;
+}
+
+HausdorffDistance hausdorff_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options) {
+  HausdorffDistance h;
+  h.a_to_b = one_sided_distance(a, TriangleTree(b), options);
+  h.b_to_a = one_sided_distance(b, TriangleTree(a), options);
+  return h;
+}
+
+double bounding_box_diagonal(const Mesh& mesh) {
+  const std::size_t nv = mesh.num_vertices();
+  if (nv == 0) return 0.0;
+  double lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};
+  for (std::size_t v = 0; v < nv; ++v)
+    for (int c = 0; c < mesh.dim; ++c) {
+      lo[c] = std::min(lo[c], mesh.coords[static_cast<std::size_t>(mesh.dim) * v + c]);
+      hi[c] = std::max(hi[c], mesh.coords[static_cast<std::size_t>(mesh.dim) * v + c]);
+    }
+  double s = 0.0;
+  for (int c = 0; c < mesh.dim; ++c) s += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+  return std::sqrt(s);
+}
+
+}  // namespace riemesh

@@ -1,0 +1,23 @@
+#pragma once
+// Self-intersections of a triangle surface: pairs of triangles that meet other than along what
+// they share (issue #6: a remeshed surface must not intersect itself).
+#include <cstddef>
+
+#include "mesh/mesh.hpp"
+
+namespace riemesh {
+
+struct SelfIntersections {
+  std::size_t pairs = 0;             ///< intersecting pairs found (up to the cap)
+  Id first_a = kNoId, first_b = kNoId;  ///< the first pair, in triangle order
+};
+
+/// Pairs of triangles of a 3D mesh that intersect: triangles with no common vertex that touch
+/// or cross (an edge of one meets the other), and triangles with one common vertex that meet
+/// elsewhere than at it. Triangles sharing an edge are not tested, nor are coplanar overlaps (an
+/// edge parallel to the other triangle's plane never counts): the test finds crossings and
+/// folds through the surface, which is what remeshing can introduce. Candidate pairs come from
+/// an AABB tree; stops after `max_pairs`. Throws InputError for a mesh that is not 3D.
+SelfIntersections find_self_intersections(const Mesh& mesh, std::size_t max_pairs = 1000);
+
+}  // namespace riemesh

@@ -1,0 +1,181 @@
+// The surface remesher's driver: sizes, state, cycles of passes, output (surface_adapt.hpp).
+#include "remesh/surface_adapt.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/eigen.hpp"
+#include "core/error.hpp"
+#include "remesh/surface_adapt_detail.hpp"
+#include "remesh/surface_curvature.hpp"
+#include "remesh/surface_metric.hpp"
+
+namespace riemesh {
+namespace {
+
+using surface_detail::State;
+
+/// The equilateral triangle whose edges have the chordal gap g on a sphere has its centroid
+/// (4/3) g from the sphere (circumradius L/√3 instead of the half-chord L/2), so the sizes are
+/// computed for 3/4 of hausd: the sampled distance then stays within hausd.
+constexpr double kCentroidFactor = 0.75;
+
+/// Quality below which the last passes split a triangle's longest edge (the floor).
+constexpr double kBadQuality = 0.3;
+
+/// Largest number of consecutive split (or collapse) passes in one cycle.
+constexpr int kInnerPasses = 8;
+
+std::vector<SymMat3> vertex_metrics(const Mesh& input, const SurfaceAdaptOptions& o) {
+  SurfaceMetricOptions m;
+  m.hausd = kCentroidFactor * o.hausd;
+  m.hmin = o.hmin;
+  m.hmax = o.hmax;
+  if (o.hsiz > 0.0) m.hmax = m.hmax > 0.0 ? std::min(m.hmax, o.hsiz) : o.hsiz;
+  if (m.hmin > 0.0 && m.hmax > 0.0 && m.hmin > m.hmax) m.hmin = m.hmax;
+  m.hgrad = o.hgrad;
+  m.anisotropic = o.anisotropic;
+  m.beta_fraction = o.beta_fraction;
+  m.user_metric = &o.metric;
+  std::vector<SymMat3> metric = geometric_surface_metric(input, m, o.features);
+  if (!o.anisotropic)  // isotropic: the smallest principal size in every direction
+    for (SymMat3& x : metric) x = SymMat3::diagonal(eigen(x).values[2]);
+  return metric;
+}
+
+State initial_state(const Mesh& input, const SurfaceProjection& geo) {
+  State s;
+  const std::size_t nv = input.num_vertices();
+  const Adjacency& adj = geo.adjacency();
+  const SurfaceFeatures& f = geo.features();
+  for (std::size_t v = 0; v < nv; ++v) {
+    const Vec3 p{{input.coords[3 * v], input.coords[3 * v + 1], input.coords[3 * v + 2]}};
+    const auto b = ball(adj, static_cast<Id>(v));
+    s.add_vertex(p, geo.metrics()[v], f.vert_tag[v] & (kTagCorner | kTagRidge),
+                 b.empty() ? kNoId : b[0], kNoId);
+  }
+  s.tri = input.triangles;
+  s.tref = input.tri_ref.size() == input.num_triangles() ? input.tri_ref
+                                                         : std::vector<std::int32_t>(input.num_triangles(), 0);
+  // Feature edges with the ref of the listed edge when there is one.
+  for (std::size_t e = 0; e < adj.num_edges(); ++e)
+    if (f.edge_feature[e]) {
+      const auto key = surface_detail::edge_key(adj.edges[2 * e], adj.edges[2 * e + 1]);
+      s.feature[key] = 0;
+      s.feature_tag[key] = (f.edge_feature[e] & kFeatureAngle) ? kTagRidge : kTagNone;
+    }
+  for (std::size_t e = 0; e < input.num_edges(); ++e) {
+    const auto key = surface_detail::edge_key(input.edges[2 * e], input.edges[2 * e + 1]);
+    if (s.feature.count(key) && input.edge_ref.size() == input.num_edges())
+      s.feature[key] = input.edge_ref[e];
+  }
+  s.compact();  // drops vertices of no triangle
+  return s;
+}
+
+Mesh output_mesh(const State& s) {
+  Mesh m;
+  m.dim = 3;
+  for (const Vec3& p : s.x) m.coords.insert(m.coords.end(), {p[0], p[1], p[2]});
+  m.vert_ref.assign(s.num_vertices(), 0);
+  m.vert_tag.resize(s.num_vertices());
+  for (std::size_t v = 0; v < s.num_vertices(); ++v) m.vert_tag[v] = s.tag[v] & kTagCorner;
+  m.triangles = s.tri;
+  m.tri_ref = s.tref;
+  m.tri_tag.assign(s.num_triangles(), kTagNone);
+  std::vector<std::uint64_t> keys;
+  for (const auto& kv : s.feature) keys.push_back(kv.first);
+  std::sort(keys.begin(), keys.end());  // deterministic order
+  for (std::uint64_t k : keys) {
+    m.edges.insert(m.edges.end(), {static_cast<Id>(k & 0xffffffffu), static_cast<Id>(k >> 32)});
+    m.edge_ref.push_back(s.feature.at(k));
+    m.edge_tag.push_back(s.feature_tag.at(k));
+  }
+  return m;
+}
+
+}  // namespace
+
+void SurfaceAdaptOptions::validate() const {
+  if (!(hausd > 0.0) || !std::isfinite(hausd)) throw InputError("hausd must be > 0");
+  if (!(hsiz >= 0.0) || !std::isfinite(hsiz)) throw InputError("hsiz must be >= 0");
+  if (max_cycles < 0) throw InputError("the number of cycles must be >= 0");
+  if (!(beta_fraction >= 0.0 && beta_fraction <= 1.0))
+    throw InputError("beta fraction must be in [0, 1]");
+  for (const SymMat3& m : metric)
+    if (!(det(m) > 0.0) || !(m.c[0] > 0.0) || !is_finite(m))
+      throw InputError("surface metric: a tensor is not positive definite");
+  features.validate();
+}
+
+double triangle_quality(const double* a, const double* b, const double* c) {
+  return surface_detail::quality({{a[0], a[1], a[2]}}, {{b[0], b[1], b[2]}}, {{c[0], c[1], c[2]}});
+}
+
+Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
+                   SurfaceAdaptReport* report) {
+  options.validate();
+  if (input.kind() != MeshKind::kSurface)
+    throw InputError("adapt_surface: need a surface mesh (3D triangles, no tetrahedra)");
+  if (!options.metric.empty() && options.metric.size() != input.num_vertices())
+    throw InputError("adapt_surface: the metric needs one tensor per input vertex");
+  const SurfaceProjection geo(input, options.features, vertex_metrics(input, options),
+                              0.5 * options.hausd);
+  State s = initial_state(input, geo);
+  s.geo = &geo;
+  s.opt = &options;
+  SurfaceAdaptReport r;
+  r.input_corners = geo.features().num_corners;
+  r.input_feature_edges = geo.features().num_feature_edges;
+  for (int cycle = 0; cycle < options.max_cycles; ++cycle) {
+    const std::size_t nt = s.num_triangles();
+    std::size_t changes = 0;
+    if (options.insert) {
+      // Splits, then collapses, each repeated while they change much (a pass only applies
+      // independent operations): the cheap topological work before the swaps and moves.
+      for (int k = 0; k < kInnerPasses; ++k) {
+        const std::size_t sp = surface_detail::split_pass(s);
+        r.splits += sp;
+        changes += sp;
+        if (sp < std::max<std::size_t>(1, s.num_triangles() / 100)) break;
+      }
+      for (int k = 0; k < kInnerPasses; ++k) {
+        const std::size_t co = surface_detail::collapse_pass(s);
+        r.collapses += co;
+        changes += co;
+        if (co < std::max<std::size_t>(1, s.num_triangles() / 100)) break;
+      }
+    }
+    if (options.swap) r.swaps += surface_detail::swap_pass(s);
+    if (options.move)
+      r.moves += surface_detail::smooth_pass(s);
+    ++r.cycles;
+    if (changes < std::max<std::size_t>(1, nt / 100) && cycle >= 2) break;
+  }
+  // Last touch: split the long edge of triangles still below quality 0.3 (the obtuse ones that
+  // swaps and moves could not fix under the Hausdorff checks), then swap and move around them.
+  for (int k = 0; k < 2 && options.insert; ++k) {
+    const std::size_t sp = surface_detail::split_pass(s, kBadQuality);
+    r.splits += sp;
+    if (sp == 0) break;
+    if (options.swap) r.swaps += surface_detail::swap_pass(s);
+    if (options.move) r.moves += surface_detail::smooth_pass(s);
+  }
+  if (options.swap) r.swaps += surface_detail::swap_pass(s);
+  if (options.move) r.moves += surface_detail::smooth_pass(s);
+  Mesh out = output_mesh(s);
+  r.q_min = 1.0;
+  double sum = 0.0;
+  for (std::size_t t = 0; t < out.num_triangles(); ++t) {
+    const double q = triangle_quality(&out.coords[3 * static_cast<std::size_t>(out.triangles[3 * t])],
+                                      &out.coords[3 * static_cast<std::size_t>(out.triangles[3 * t + 1])],
+                                      &out.coords[3 * static_cast<std::size_t>(out.triangles[3 * t + 2])]);
+    r.q_min = std::min(r.q_min, q);
+    sum += q;
+  }
+  r.q_mean = out.num_triangles() ? sum / static_cast<double>(out.num_triangles()) : 0.0;
+  if (report) *report = r;
+  return out;
+}
+
+}  // namespace riemesh

@@ -1,0 +1,142 @@
+#include "remesh/surface_metric.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+
+#include "core/eigen.hpp"
+#include "core/error.hpp"
+#include "metric/geometric.hpp"
+#include "metric/intersection.hpp"
+
+namespace riemesh {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Vec3 vertex_at(const Mesh& mesh, Id v) {
+  const double* p = &mesh.coords[3 * static_cast<std::size_t>(v)];
+  return {{p[0], p[1], p[2]}};
+}
+
+double bbox_diagonal(const Mesh& mesh) {
+  Vec3 lo{{kInf, kInf, kInf}}, hi{{-kInf, -kInf, -kInf}};
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v)
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], mesh.coords[3 * v + c]);
+      hi[c] = std::max(hi[c], mesh.coords[3 * v + c]);
+    }
+  return norm(hi - lo);
+}
+
+/// Chord length on a circle of radius ρ whose gap to the arc is hausd: 2 sqrt(hausd(2ρ − hausd)),
+/// 2ρ when hausd >= ρ (the chord cannot deviate by more than ρ from a half circle).
+double chord_for_gap(double rho, double hausd) {
+  if (std::isinf(rho)) return kInf;
+  return hausd >= rho ? 2.0 * rho : 2.0 * std::sqrt(hausd * (2.0 * rho - hausd));
+}
+
+/// The metric of one vertex from its curvature (before the feature line).
+SymMat3 vertex_metric(const SurfaceGeometry& g, const SurfaceMetricOptions& o, double hmin,
+                      double hmax) {
+  if (std::isinf(g.rho1)) return SymMat3::diagonal(1.0 / (hmax * hmax));
+  GeometricTolerance tol;
+  tol.kind = GeometricTolerance::kRelativeGap;
+  tol.value = std::min(1.0, o.hausd / g.rho1);
+  if (!o.anisotropic) return surface_metric_isotropic(g, tol, hmin, hmax);
+  return surface_metric_anisotropic(g, tol, hmin, hmax, o.beta_fraction);
+}
+
+/// Smallest and largest principal sizes of a metric.
+void principal_sizes(const SymMat3& m, double& smallest, double& largest) {
+  const SymEigen<3> e = eigen(m);
+  smallest = std::min(smallest, 1.0 / std::sqrt(e.values[2]));
+  largest = std::max(largest, 1.0 / std::sqrt(e.values[0]));
+}
+
+}  // namespace
+
+void SurfaceMetricOptions::validate() const {
+  if (!(hausd > 0.0) || !std::isfinite(hausd)) throw InputError("hausd must be > 0");
+  if (hmin > 0.0 && hmax > 0.0 && hmin > hmax) throw InputError("hmin must be <= hmax");
+  if (!std::isfinite(hmin) || !std::isfinite(hmax)) throw InputError("hmin and hmax must be finite");
+  if (hgrad > 0.0 && !(hgrad > 1.0)) throw InputError("hgrad must be > 1 (or <= 0: no gradation)");
+  if (!(beta_fraction >= 0.0 && beta_fraction <= 1.0))
+    throw InputError("beta fraction must be in [0, 1]");
+}
+
+double feature_line_size(const Vec3& a, const Vec3& v, const Vec3& b, double hausd) {
+  // Circumradius of (a, v, b): |va| |vb| |ab| / (2 |va × vb|).
+  const Vec3 va = a - v, vb = b - v;
+  const double twice_area = norm(cross(va, vb));
+  const double la = norm(va), lb = norm(vb);
+  if (!(twice_area > 1e-12 * la * lb)) return kInf;  // straight (or a repeated point)
+  return chord_for_gap(la * lb * norm(b - a) / (2.0 * twice_area), hausd);
+}
+
+std::vector<SymMat3> geometric_surface_metric(const Mesh& mesh, const Adjacency& adj,
+                                              const SurfaceFeatures& features,
+                                              const std::vector<VertexCurvature>& curvature,
+                                              const SurfaceMetricOptions& options,
+                                              SurfaceMetricReport* report) {
+  options.validate();
+  const std::size_t nv = mesh.num_vertices();
+  if (curvature.size() != nv || features.vert_tag.size() != nv)
+    throw InputError("geometric_surface_metric: curvature or features not built from this mesh");
+  const double hmax = options.hmax > 0.0 ? options.hmax : bbox_diagonal(mesh);
+  const double hmin = options.hmin > 0.0 ? options.hmin : std::min(options.hausd, hmax);
+  if (!(hmax > 0.0)) throw InputError("geometric_surface_metric: the surface has no extent");
+  const std::vector<Id> line = feature_neighbours(adj, features);
+  std::vector<SymMat3> m(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    m[v] = vertex_metric(curvature[v].geometry, options, hmin, hmax);
+    if (features.feature_degree[v] != 2 || (features.vert_tag[v] & kTagCorner)) continue;
+    const Vec3 a = vertex_at(mesh, line[2 * v]), p = vertex_at(mesh, static_cast<Id>(v));
+    const Vec3 b = vertex_at(mesh, line[2 * v + 1]);
+    const double hc = std::clamp(feature_line_size(a, p, b, options.hausd), hmin, hmax);
+    if (hc >= hmax) continue;
+    if (!options.anisotropic) {
+      m[v] = intersect(m[v], SymMat3::diagonal(1.0 / (hc * hc)));
+    } else {
+      // Size hc along the line's tangent, nothing imposed across it.
+      const Vec3 t = normalize(b - a);
+      const SymMat3 mc =
+          SymMat3::diagonal(1.0 / (hmax * hmax)) + (1.0 / (hc * hc) - 1.0 / (hmax * hmax)) * outer(t);
+      m[v] = intersect(m[v], mc);
+    }
+  }
+  if (options.user_metric && !options.user_metric->empty()) {
+    if (options.user_metric->size() != nv)
+      throw InputError("geometric_surface_metric: the user metric needs one tensor per vertex");
+    for (std::size_t v = 0; v < nv; ++v) m[v] = intersect(m[v], (*options.user_metric)[v]);
+  }
+  SurfaceMetricReport r;
+  r.hmin = hmin;
+  r.hmax = hmax;
+  if (options.hgrad > 0.0) {
+    GradationOptions g;
+    g.mode = GradationMode::kHShock;
+    g.threshold = options.hgrad;
+    r.gradation = gradate<3>(std::span<const double>(mesh.coords),
+                             std::span<const int32_t>(adj.edges), std::span<SymMat3>(m), g);
+  }
+  r.smallest = kInf;
+  r.largest = 0.0;
+  for (const SymMat3& x : m) principal_sizes(x, r.smallest, r.largest);
+  if (report) *report = r;
+  return m;
+}
+
+std::vector<SymMat3> geometric_surface_metric(const Mesh& mesh,
+                                              const SurfaceMetricOptions& options,
+                                              const FeatureOptions& feature_options,
+                                              SurfaceMetricReport* report) {
+  const Adjacency adj = build_adjacency(mesh);
+  const SurfaceFeatures f = detect_features(mesh, adj, feature_options);
+  const SurfaceSectors s = surface_sectors(mesh, adj, f);
+  return geometric_surface_metric(mesh, adj, f, vertex_curvatures(mesh, adj, f, s), options,
+                                  report);
+}
+
+}  // namespace riemesh

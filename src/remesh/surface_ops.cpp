@@ -1,0 +1,530 @@
+// The passes of the surface remesher: split, collapse, swap, smooth (surface_adapt.hpp).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <span>
+
+#include "mesh/distance.hpp"
+#include "remesh/surface_adapt_detail.hpp"
+
+namespace riemesh::surface_detail {
+namespace {
+
+constexpr double kSqrt2 = 1.4142135623730951;
+constexpr double kCosTurn = 0.8660254037844387;  // cos 30°: largest turn of a triangle's normal
+/// The Hausdorff checks bound the distance by this fraction of hausd at the lattice points
+/// (margin for rounding and for users who sample more densely).
+constexpr double kCheckMargin = 0.95;
+/// Lattice order of the points of a new triangle checked against the input (corners excluded):
+/// the order `riemesh distance` samples by default, so the check bounds what is measured.
+constexpr int kProbeOrder = 4;
+/// Smoothing leaves a vertex alone when the worst triangle of its ball is at least this good.
+constexpr double kSmoothEnough = 0.9;
+
+std::size_t us(Id i) { return static_cast<std::size_t>(i); }
+
+/// The neighbours of v (the other vertices of its ball), sorted, unique.
+std::vector<Id> neighbours(const State& s, const Adjacency& adj, Id v) {
+  std::vector<Id> n;
+  for (Id t : ball(adj, v))
+    for (int i = 0; i < 3; ++i)
+      if (s.tri[3 * us(t) + i] != v) n.push_back(s.tri[3 * us(t) + i]);
+  std::sort(n.begin(), n.end());
+  n.erase(std::unique(n.begin(), n.end()), n.end());
+  return n;
+}
+
+bool any_dirty(std::span<const Id> tris, const std::vector<char>& dirty) {
+  for (Id t : tris)
+    if (dirty[us(t)]) return true;
+  return false;
+}
+
+void mark(std::span<const Id> tris, std::vector<char>& dirty) {
+  for (Id t : tris) dirty[us(t)] = 1;
+}
+
+/// Triangle t's corners with vertex `from` at position `p` (the others at their place).
+void corners(const State& s, Id t, Id from, const Vec3& p, Vec3 (&c)[3]) {
+  for (int i = 0; i < 3; ++i) {
+    const Id v = s.tri[3 * us(t) + i];
+    c[i] = v == from ? p : s.x[us(v)];
+  }
+}
+
+/// Distance from p to triangle abc.
+double to_triangle(const Vec3& p, const Vec3 (&c)[3]) {
+  return norm(p - closest_point_on_triangle(p, c[0], c[1], c[2]));
+}
+
+using Tri3 = std::array<Vec3, 3>;
+
+double to_tri(const Vec3& p, const Tri3& t) {
+  return norm(p - closest_point_on_triangle(p, t[0], t[1], t[2]));
+}
+
+/// The A -> B half of the Hausdorff check: input check points within hausd of the old triangles
+/// stay within hausd of the new ones (the new triangles cover the same footprint, so a point
+/// the old ones covered is the new ones' business). Without it, errors accumulate: each
+/// operation would be checked against the current mesh only, never against the input.
+bool keeps_input_close(const State& s, const std::vector<Tri3>& old_t,
+                       const std::vector<Tri3>& new_t) {
+  const double hausd = kCheckMargin * s.opt->hausd;
+  Vec3 lo = old_t[0][0], hi = old_t[0][0];
+  for (const Tri3& t : old_t)
+    for (const Vec3& p : t)
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = std::min(lo[c], p[c] - hausd);
+        hi[c] = std::max(hi[c], p[c] + hausd);
+      }
+  thread_local std::vector<Vec3> pts;  // scratch reused across calls (no shared state)
+  pts.clear();
+  s.geo->check_points(lo, hi, pts);
+  // Planes of the triangles: a point farther than hausd from a triangle's plane is farther from
+  // the triangle (cheap rejection before the exact distance).
+  auto plane_far = [hausd](const Vec3& p, const Tri3& t) {
+    const Vec3 n = cross(t[1] - t[0], t[2] - t[0]);
+    const double l = norm(n);
+    return l > 0.0 && std::abs(dot(p - t[0], n)) > hausd * l;
+  };
+  // Consecutive points come from the same grid cell: try the triangle that covered the last one
+  // first.
+  std::size_t last = 0;
+  auto near = [&](const Vec3& p, const std::vector<Tri3>& tris) {
+    const std::size_t n = tris.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = (last + k) % n;
+      if (!plane_far(p, tris[i]) && to_tri(p, tris[i]) <= hausd) {
+        last = i;
+        return true;
+      }
+    }
+    return false;
+  };
+  for (const Vec3& p : pts)
+    if (!near(p, new_t) && near(p, old_t)) return false;  // covered before, not any more
+  return true;
+}
+
+/// The B -> A half: the lattice points of the new triangles within hausd of the input.
+bool new_triangles_close(const State& s, const std::vector<Tri3>& new_t, Id hint) {
+  const double hausd = kCheckMargin * s.opt->hausd;
+  for (const Tri3& t : new_t)
+    for (int i = 0; i <= kProbeOrder; ++i)
+      for (int j = 0; i + j <= kProbeOrder; ++j) {
+        if ((i == 0 && j == 0) || i == kProbeOrder || j == kProbeOrder) continue;  // corners
+        const Vec3 q = t[0] + (static_cast<double>(i) / kProbeOrder) * (t[1] - t[0]) +
+                       (static_cast<double>(j) / kProbeOrder) * (t[2] - t[0]);
+        if (!s.geo->within(q, hausd, &hint)) return false;
+      }
+  return true;
+}
+
+/// The metric of triangle t: the mean of its vertex metrics, vertex `moved` (if any) taking `mm`.
+SymMat3 tri_metric(const State& s, Id t, Id moved = kNoId, const SymMat3* mm = nullptr) {
+  SymMat3 sum = SymMat3::zero();
+  for (int i = 0; i < 3; ++i) {
+    const Id v = s.tri[3 * us(t) + i];
+    sum += (v == moved && mm) ? *mm : s.m[us(v)];
+  }
+  return (1.0 / 3.0) * sum;
+}
+
+/// Local position i of the edge p -> q in triangle t (tri[i] = p, tri[i+1] = q), or -1.
+int directed(const State& s, Id t, Id p, Id q) {
+  for (int i = 0; i < 3; ++i)
+    if (s.tri[3 * us(t) + i] == p && s.tri[3 * us(t) + (i + 1) % 3] == q) return i;
+  return -1;
+}
+
+}  // namespace
+
+Vec3 tri_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = cross(b - a, c - a);
+  const double l = norm(n);
+  return l > 0.0 ? n / l : Vec3::zero();
+}
+
+double quality(const SymMat3& m, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e1 = b - a, e2 = c - a, e3 = c - b;
+  const double g11 = quadratic(m, e1), g22 = quadratic(m, e2), g12 = bilinear(m, e1, e2);
+  const double area = 0.5 * std::sqrt(std::max(0.0, g11 * g22 - g12 * g12));
+  const double l2 = g11 + g22 + quadratic(m, e3);
+  return l2 > 0.0 ? 4.0 * std::sqrt(3.0) * area / l2 : 0.0;
+}
+
+double quality(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double area = 0.5 * norm(cross(b - a, c - a));
+  const double l2 = dot(b - a, b - a) + dot(c - b, c - b) + dot(a - c, a - c);
+  return l2 > 0.0 ? 4.0 * std::sqrt(3.0) * area / l2 : 0.0;
+}
+
+Topology build_topology(const State& s) {
+  Topology t;
+  t.adj = build_adjacency(s.tri, 3, s.num_vertices());
+  t.edge_count.assign(t.adj.num_edges(), 0);
+  t.edge_tris.assign(2 * t.adj.num_edges(), kNoId);
+  for (std::size_t k = 0; k < t.adj.elem2edge.size(); ++k) {
+    const auto e = us(t.adj.elem2edge[k]);
+    if (t.edge_count[e] < 2) t.edge_tris[2 * e + t.edge_count[e]] = static_cast<Id>(k / 3);
+    ++t.edge_count[e];
+  }
+  return t;
+}
+
+std::size_t split_pass(State& s, double bad_quality) {
+  const Topology topo = build_topology(s);
+  const std::size_t ne = topo.adj.num_edges();
+  std::vector<std::pair<double, Id>> cand;
+  if (bad_quality > 0.0) {
+    // The longest edge of each triangle below bad_quality (the edge facing its obtuse angle).
+    for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+      const Id* v = &s.tri[3 * t];
+      if (quality(tri_metric(s, static_cast<Id>(t)), s.x[us(v[0])], s.x[us(v[1])], s.x[us(v[2])]) >=
+          bad_quality)
+        continue;
+      int best = 0;
+      double lbest = -1.0;
+      for (int j = 0; j < 3; ++j) {
+        const double l = norm(s.x[us(v[kTriEdge[j][1]])] - s.x[us(v[kTriEdge[j][0]])]);
+        if (l > lbest) lbest = l, best = j;
+      }
+      const Id e = topo.adj.elem2edge[3 * t + best];
+      if (topo.edge_count[us(e)] <= 2) cand.push_back({-lbest, e});
+    }
+    std::sort(cand.begin(), cand.end());
+    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+  } else {
+    for (std::size_t e = 0; e < ne; ++e) {
+      const double l = s.size_length(topo.adj.edges[2 * e], topo.adj.edges[2 * e + 1]);
+      if (l > kSqrt2 && topo.edge_count[e] <= 2) cand.push_back({-l, static_cast<Id>(e)});
+    }
+  }
+  std::sort(cand.begin(), cand.end());
+  std::vector<char> done(s.num_triangles(), 0);
+  std::size_t count = 0;
+  for (const auto& [neg, e] : cand) {
+    const int nt = topo.edge_count[us(e)];
+    const Id* et = &topo.edge_tris[2 * us(e)];
+    if (done[us(et[0])] || (nt == 2 && done[us(et[1])])) continue;
+    const Id a = topo.adj.edges[2 * us(e)], b = topo.adj.edges[2 * us(e) + 1];
+    const bool feat = s.is_feature(a, b);
+    const Vec3 mid = 0.5 * (s.x[us(a)] + s.x[us(b)]);
+    // The point on the reconstruction when the halves stay within hausd of the input both ways;
+    // else the nearest point of the input itself; else no split.
+    SurfaceProjection::Placed p;
+    bool ok = false;
+    for (const bool smooth : {true, false}) {
+      p = feat ? s.geo->on_feature(mid, s.line_hint[us(a)], smooth)
+               : s.geo->on_surface(mid, s.surf_hint[us(a)], smooth);
+      ok = true;
+      std::vector<Tri3> old_t, new_t;
+      for (int k = 0; k < nt && ok; ++k) {
+        Vec3 c[3];
+        corners(s, et[k], a, s.x[us(a)], c);
+        const Vec3 n = tri_normal(c[0], c[1], c[2]);
+        Vec3 c1[3], c2[3];
+        corners(s, et[k], a, p.point, c1);
+        corners(s, et[k], b, p.point, c2);
+        // The two halves of each triangle keep its orientation.
+        ok = dot(tri_normal(c1[0], c1[1], c1[2]), n) > 0.5 &&
+             dot(tri_normal(c2[0], c2[1], c2[2]), n) > 0.5;
+        old_t.push_back({c[0], c[1], c[2]});
+        new_t.push_back({c1[0], c1[1], c1[2]});
+        new_t.push_back({c2[0], c2[1], c2[2]});
+      }
+      ok = ok && new_triangles_close(s, new_t, s.surf_hint[us(a)]) &&
+           keeps_input_close(s, old_t, new_t);
+      if (ok) break;
+    }
+    if (!ok) continue;
+    const Id m = s.add_vertex(p.point, p.metric, feat ? kTagRidge : kTagNone,
+                              feat ? s.surf_hint[us(a)] : p.hint, feat ? p.hint : s.line_hint[us(a)]);
+    for (int k = 0; k < nt; ++k) {
+      const Id t = et[k];
+      done[us(t)] = 1;
+      int i = directed(s, t, a, b);
+      if (i < 0) i = directed(s, t, b, a);
+      const Id pv = s.tri[3 * us(t) + i], qv = s.tri[3 * us(t) + (i + 1) % 3];
+      const Id rv = s.tri[3 * us(t) + (i + 2) % 3];
+      s.tri[3 * us(t)] = pv;
+      s.tri[3 * us(t) + 1] = m;
+      s.tri[3 * us(t) + 2] = rv;
+      s.tri.insert(s.tri.end(), {m, qv, rv});
+      s.tref.push_back(s.tref[us(t)]);
+    }
+    if (feat) {
+      const std::uint64_t key = edge_key(a, b);
+      const std::int32_t ref = s.feature[key];
+      const std::uint8_t tag = s.feature_tag[key];
+      s.feature.erase(key);
+      s.feature_tag.erase(key);
+      for (Id x : {a, b}) {
+        s.feature[edge_key(x, m)] = ref;
+        s.feature_tag[edge_key(x, m)] = tag;
+      }
+    }
+    ++count;
+  }
+  return count;
+}
+
+namespace {
+
+/// Tries to collapse v into w (see surface_adapt.hpp); applies it and returns true when allowed.
+bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<char>& dirty) {
+  if (s.tag[us(v)] & (kTagCorner | kTagRequired)) return false;
+  const bool feat = s.is_feature(v, w);
+  if ((s.tag[us(v)] & kTagRidge) && !feat) return false;
+  const int nt = topo.edge_count[us(e)];
+  if (nt < 1 || nt > 2 || (nt == 1 && !feat)) return false;
+  const auto bv = ball(topo.adj, v), bw = ball(topo.adj, w);
+  if (any_dirty(bv, dirty) || any_dirty(bw, dirty)) return false;
+  // Link condition: the common neighbours of v and w are the apexes of the edge's triangles.
+  const std::vector<Id> nv = neighbours(s, topo.adj, v), nw = neighbours(s, topo.adj, w);
+  std::vector<Id> common;
+  std::set_intersection(nv.begin(), nv.end(), nw.begin(), nw.end(), std::back_inserter(common));
+  if (static_cast<int>(common.size()) != nt) return false;
+  // New edges not too long.
+  for (Id x : nv)
+    if (x != w && s.size_length(w, x) > kSqrt2) return false;
+  double qmin_old = 1.0;
+  for (Id t : bv) {
+    Vec3 c[3];
+    corners(s, t, v, s.x[us(v)], c);
+    qmin_old = std::min(qmin_old, quality(tri_metric(s, t), c[0], c[1], c[2]));
+  }
+  const double qfloor = std::min(0.3, qmin_old);
+  const double hausd = kCheckMargin * s.opt->hausd;
+  double gap = std::numeric_limits<double>::infinity();
+  std::vector<Tri3> old_t, new_t;
+  for (Id t : bv) {
+    bool has_w = false;
+    for (int i = 0; i < 3; ++i) has_w |= s.tri[3 * us(t) + i] == w;
+    Vec3 c[3], n[3];
+    corners(s, t, v, s.x[us(v)], c);
+    old_t.push_back({c[0], c[1], c[2]});
+    if (has_w) continue;
+    corners(s, t, v, s.x[us(w)], n);
+    new_t.push_back({n[0], n[1], n[2]});
+    const Vec3 n_old = tri_normal(c[0], c[1], c[2]), n_new = tri_normal(n[0], n[1], n[2]);
+    if (dot(n_old, n_new) < kCosTurn || quality(tri_metric(s, t, v, &s.m[us(w)]), n[0], n[1], n[2]) < qfloor)
+      return false;
+    gap = std::min(gap, to_triangle(s.x[us(v)], n));
+  }
+  if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)]) ||
+      !keeps_input_close(s, old_t, new_t))
+    return false;
+  // Apply.
+  for (Id t : bv) {
+    bool has_w = false;
+    for (int i = 0; i < 3; ++i) has_w |= s.tri[3 * us(t) + i] == w;
+    for (int i = 0; i < 3; ++i) {
+      Id& x = s.tri[3 * us(t) + i];
+      if (has_w) x = kNoId;
+      else if (x == v) x = w;
+    }
+  }
+  for (Id x : nv) {
+    const std::uint64_t key = edge_key(v, x);
+    const auto it = s.feature.find(key);
+    if (it == s.feature.end()) continue;
+    if (x != w) {
+      s.feature[edge_key(w, x)] = it->second;
+      s.feature_tag[edge_key(w, x)] = s.feature_tag[key];
+    }
+    s.feature.erase(key);
+    s.feature_tag.erase(key);
+  }
+  mark(bv, dirty);
+  mark(bw, dirty);
+  return true;
+}
+
+}  // namespace
+
+std::size_t collapse_pass(State& s) {
+  const Topology topo = build_topology(s);
+  std::vector<std::pair<double, Id>> cand;
+  for (std::size_t e = 0; e < topo.adj.num_edges(); ++e) {
+    const double l = s.size_length(topo.adj.edges[2 * e], topo.adj.edges[2 * e + 1]);
+    if (l < 1.0 / kSqrt2) cand.push_back({l, static_cast<Id>(e)});
+  }
+  std::sort(cand.begin(), cand.end());
+  std::vector<char> dirty(s.num_triangles(), 0);
+  std::size_t count = 0;
+  for (const auto& [l, e] : cand) {
+    const Id a = topo.adj.edges[2 * us(e)], b = topo.adj.edges[2 * us(e) + 1];
+    if (try_collapse(s, topo, e, a, b, dirty) || try_collapse(s, topo, e, b, a, dirty)) ++count;
+  }
+  s.compact();
+  return count;
+}
+
+std::size_t swap_pass(State& s) {
+  const Topology topo = build_topology(s);
+  std::vector<char> dirty(s.num_triangles(), 0);
+  std::size_t count = 0;
+  const double hausd = kCheckMargin * s.opt->hausd;
+  for (std::size_t e = 0; e < topo.adj.num_edges(); ++e) {
+    if (topo.edge_count[e] != 2) continue;
+    const Id a = topo.adj.edges[2 * e], b = topo.adj.edges[2 * e + 1];
+    if (s.is_feature(a, b)) continue;
+    Id t1 = topo.edge_tris[2 * e], t2 = topo.edge_tris[2 * e + 1];
+    if (dirty[us(t1)] || dirty[us(t2)]) continue;
+    int i1 = directed(s, t1, a, b);
+    if (i1 < 0) {
+      std::swap(t1, t2);
+      i1 = directed(s, t1, a, b);
+    }
+    const int i2 = directed(s, t2, b, a);
+    if (i1 < 0 || i2 < 0) continue;  // inconsistent orientation: leave alone
+    const Id c = s.tri[3 * us(t1) + (i1 + 2) % 3], d = s.tri[3 * us(t2) + (i2 + 2) % 3];
+    if (c == d || find_edge(topo.adj, c, d) != kNoId) continue;
+    const Vec3 &pa = s.x[us(a)], &pb = s.x[us(b)], &pc = s.x[us(c)], &pd = s.x[us(d)];
+    const SymMat3 &ma = s.m[us(a)], &mb = s.m[us(b)], &mc = s.m[us(c)], &md = s.m[us(d)];
+    const double q_old = std::min(quality((1.0 / 3.0) * (ma + mb + mc), pa, pb, pc),
+                                  quality((1.0 / 3.0) * (mb + ma + md), pb, pa, pd));
+    const double q_new = std::min(quality((1.0 / 3.0) * (ma + md + mc), pa, pd, pc),
+                                  quality((1.0 / 3.0) * (md + mb + mc), pd, pb, pc));
+    if (!(q_new > 1.05 * q_old)) continue;
+    const Vec3 n1 = tri_normal(pa, pb, pc), n2 = tri_normal(pb, pa, pd);
+    const Vec3 m1 = tri_normal(pa, pd, pc), m2 = tri_normal(pd, pb, pc);
+    if (dot(m1, n1) < kCosTurn || dot(m1, n2) < kCosTurn || dot(m2, n1) < kCosTurn ||
+        dot(m2, n2) < kCosTurn)
+      continue;
+    // Dihedral/Hausdorff check: the old edge stays near the new pair, the new edge near the input.
+    const Vec3 mid_old = 0.5 * (pa + pb), mid_new = 0.5 * (pc + pd);
+    const Vec3 f1[3] = {pa, pd, pc}, f2[3] = {pd, pb, pc};
+    if (std::min(to_triangle(mid_old, f1), to_triangle(mid_old, f2)) > hausd) continue;
+    Id hint = s.surf_hint[us(c)];
+    if (!s.geo->within(mid_new, hausd, &hint)) continue;
+    const std::vector<Tri3> new_t = {Tri3{pa, pd, pc}, Tri3{pd, pb, pc}};
+    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)]) ||
+        !keeps_input_close(s, {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}}, new_t))
+      continue;
+    s.tri[3 * us(t1)] = a;
+    s.tri[3 * us(t1) + 1] = d;
+    s.tri[3 * us(t1) + 2] = c;
+    s.tri[3 * us(t2)] = d;
+    s.tri[3 * us(t2) + 1] = b;
+    s.tri[3 * us(t2) + 2] = c;
+    dirty[us(t1)] = dirty[us(t2)] = 1;
+    ++count;
+  }
+  return count;
+}
+
+std::size_t smooth_pass(State& s) {
+  const Topology topo = build_topology(s);
+  std::size_t count = 0;
+  for (std::size_t vi = 0; vi < s.num_vertices(); ++vi) {
+    const auto v = static_cast<Id>(vi);
+    if (s.tag[vi] & (kTagCorner | kTagRequired)) continue;
+    const auto bv = ball(topo.adj, v);
+    if (bv.empty()) continue;
+    // Balls whose worst triangle is already good have little to gain (and each try costs a
+    // projection and the Hausdorff checks).
+    double q_ball = 1.0;
+    for (Id t : bv) {
+      Vec3 c[3];
+      corners(s, t, v, s.x[vi], c);
+      q_ball = std::min(q_ball, quality(tri_metric(s, t), c[0], c[1], c[2]));
+    }
+    if (q_ball >= kSmoothEnough) continue;
+    const std::vector<Id> nb = neighbours(s, topo.adj, v);
+    SurfaceProjection::Placed p;
+    if (s.tag[vi] & kTagRidge) {
+      Id line[2];
+      int k = 0;
+      for (Id x : nb)
+        if (s.is_feature(v, x) && k < 3) line[std::min(k++, 1)] = x;
+      if (k != 2) continue;
+      p = s.geo->on_feature(0.5 * (s.x[us(line[0])] + s.x[us(line[1])]), s.line_hint[vi]);
+    } else {
+      Vec3 mean = Vec3::zero();
+      for (Id x : nb) mean += s.x[us(x)];
+      p = s.geo->on_surface(mean / static_cast<double>(nb.size()), s.surf_hint[vi]);
+    }
+    double q_old = 1.0, q_new = 1.0;
+    bool ok = true;
+    std::vector<Tri3> old_t, new_t;
+    for (Id t : bv) {
+      Vec3 c[3], n[3];
+      corners(s, t, v, s.x[vi], c);
+      corners(s, t, v, p.point, n);
+      old_t.push_back({c[0], c[1], c[2]});
+      new_t.push_back({n[0], n[1], n[2]});
+      q_old = std::min(q_old, quality(tri_metric(s, t), c[0], c[1], c[2]));
+      q_new = std::min(q_new, quality(tri_metric(s, t, v, &p.metric), n[0], n[1], n[2]));
+      if (dot(tri_normal(c[0], c[1], c[2]), tri_normal(n[0], n[1], n[2])) < kCosTurn) ok = false;
+      if (!ok) break;
+    }
+    // A real gain only: marginal moves would oscillate from pass to pass, each paying the checks.
+    if (!ok || !(q_new > 1.02 * q_old) || !new_triangles_close(s, new_t, p.hint) ||
+        !keeps_input_close(s, old_t, new_t))
+      continue;
+    s.x[vi] = p.point;
+    s.m[vi] = p.metric;
+    if (s.tag[vi] & kTagRidge) s.line_hint[vi] = p.hint;
+    else s.surf_hint[vi] = p.hint;
+    ++count;
+  }
+  return count;
+}
+
+void State::compact() {
+  std::vector<Id> new_id(x.size(), kNoId);
+  std::vector<Id> t2;
+  std::vector<std::int32_t> r2;
+  Id next = 0;
+  for (std::size_t t = 0; t < num_triangles(); ++t) {
+    if (tri[3 * t] == kNoId) continue;
+    for (int i = 0; i < 3; ++i) {
+      const Id v = tri[3 * t + i];
+      if (new_id[us(v)] == kNoId) new_id[us(v)] = next++;
+    }
+    t2.insert(t2.end(), {tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]});
+    r2.push_back(tref[t]);
+  }
+  // Keep the old relative order of vertices (new_id above follows triangle order): renumber
+  // by increasing old id for determinism and locality.
+  next = 0;
+  for (std::size_t v = 0; v < x.size(); ++v)
+    if (new_id[v] != kNoId) new_id[v] = next++;
+  std::vector<Vec3> x2(us(next));
+  std::vector<SymMat3> m2(us(next));
+  std::vector<std::uint8_t> tag2(us(next));
+  std::vector<Id> sh2(us(next)), lh2(us(next));
+  for (std::size_t v = 0; v < x.size(); ++v) {
+    const Id n = new_id[v];
+    if (n == kNoId) continue;
+    x2[us(n)] = x[v];
+    m2[us(n)] = m[v];
+    tag2[us(n)] = tag[v];
+    sh2[us(n)] = surf_hint[v];
+    lh2[us(n)] = line_hint[v];
+  }
+  for (Id& v : t2) v = new_id[us(v)];
+  std::unordered_map<std::uint64_t, std::int32_t> f2;
+  std::unordered_map<std::uint64_t, std::uint8_t> ft2;
+  for (const auto& [key, ref] : feature) {
+    const auto a = static_cast<Id>(key & 0xffffffffu), b = static_cast<Id>(key >> 32);
+    if (new_id[us(a)] == kNoId || new_id[us(b)] == kNoId) continue;
+    f2[edge_key(new_id[us(a)], new_id[us(b)])] = ref;
+    ft2[edge_key(new_id[us(a)], new_id[us(b)])] = feature_tag[key];
+  }
+  x.swap(x2);
+  m.swap(m2);
+  tag.swap(tag2);
+  surf_hint.swap(sh2);
+  line_hint.swap(lh2);
+  tri.swap(t2);
+  tref.swap(r2);
+  feature.swap(f2);
+  feature_tag.swap(ft2);
+}
+
+}  // namespace riemesh::surface_detail

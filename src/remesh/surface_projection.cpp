@@ -1,0 +1,174 @@
+#include "remesh/surface_projection.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "remesh/surface_curvature.hpp"
+
+namespace riemesh {
+namespace {
+
+Vec3 vertex_at(const Mesh& mesh, Id v) {
+  const double* p = &mesh.coords[3 * static_cast<std::size_t>(v)];
+  return {{p[0], p[1], p[2]}};
+}
+
+/// Barycentric coordinates (u, v) of q (a point of triangle abc) on b and c.
+Vec2 barycentric(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e1 = b - a, e2 = c - a, d = q - a;
+  const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+  const double det = d11 * d22 - d12 * d12;
+  if (!(det > 0.0)) return {{0.0, 0.0}};
+  const double r1 = dot(d, e1), r2 = dot(d, e2);
+  double u = (d22 * r1 - d12 * r2) / det, v = (d11 * r2 - d12 * r1) / det;
+  u = std::clamp(u, 0.0, 1.0);
+  v = std::clamp(v, 0.0, 1.0 - u);
+  return {{u, v}};
+}
+
+/// The feature edges of the input as degenerate triangles (a, b, b), for a TriangleTree.
+Mesh line_mesh(const Mesh& mesh, const std::vector<Id>& line_edges) {
+  Mesh m;
+  m.dim = 3;
+  m.coords = mesh.coords;
+  for (std::size_t e = 0; 2 * e < line_edges.size(); ++e)
+    m.triangles.insert(m.triangles.end(), {line_edges[2 * e], line_edges[2 * e + 1],
+                                           line_edges[2 * e + 1]});
+  return m;
+}
+
+}  // namespace
+
+SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& features,
+                                     std::vector<SymMat3> metric, double max_lift)
+    : mesh_(input),
+      adj_(build_adjacency(mesh_)),
+      features_(detect_features(mesh_, adj_, features)),
+      sectors_(surface_sectors(mesh_, adj_, features_)),
+      tri_tree_(mesh_),
+      metric_(std::move(metric)),
+      max_lift_(max_lift) {
+  if (metric_.size() != mesh_.num_vertices())
+    throw InputError("SurfaceProjection: one metric per input vertex expected");
+  sectors_.normal = fitted_sector_normals(mesh_, adj_, features_, sectors_);
+  rec_ = std::make_unique<SurfaceReconstruction>(mesh_, adj_, features_, sectors_);
+  for (std::size_t e = 0; e < adj_.num_edges(); ++e)
+    if (features_.edge_feature[e])
+      line_edges_.insert(line_edges_.end(), {adj_.edges[2 * e], adj_.edges[2 * e + 1]});
+  if (!line_edges_.empty()) line_tree_ = std::make_unique<TriangleTree>(line_mesh(mesh_, line_edges_));
+  build_grid();
+}
+
+void SurfaceProjection::build_grid() {
+  // The lattice of order 4 on every input triangle (vertices, 3 points per edge, 3 interior
+  // points), each point once: the points `riemesh distance` samples on the input by default, so
+  // that the A -> B check of the operators (surface_ops.cpp) bounds exactly what it measures.
+  constexpr int n = 4;
+  std::vector<Vec3> pts;
+  for (std::size_t v = 0; v < mesh_.num_vertices(); ++v)
+    if (!ball(adj_, static_cast<Id>(v)).empty()) pts.push_back(vertex_at(mesh_, static_cast<Id>(v)));
+  for (std::size_t e = 0; e < adj_.num_edges(); ++e) {
+    const Vec3 a = vertex_at(mesh_, adj_.edges[2 * e]), b = vertex_at(mesh_, adj_.edges[2 * e + 1]);
+    for (int i = 1; i < n; ++i) pts.push_back(a + (static_cast<double>(i) / n) * (b - a));
+  }
+  for (std::size_t t = 0; t < mesh_.num_triangles(); ++t) {
+    const Vec3 a = vertex_at(mesh_, mesh_.triangles[3 * t]);
+    const Vec3 b = vertex_at(mesh_, mesh_.triangles[3 * t + 1]);
+    const Vec3 c = vertex_at(mesh_, mesh_.triangles[3 * t + 2]);
+    for (int i = 1; i < n; ++i)
+      for (int j = 1; i + j < n; ++j)
+        pts.push_back(a + (static_cast<double>(i) / n) * (b - a) + (static_cast<double>(j) / n) * (c - a));
+  }
+  Vec3 lo = pts[0], hi = pts[0];
+  for (const Vec3& p : pts)
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], p[c]);
+      hi[c] = std::max(hi[c], p[c]);
+    }
+  // About 4 points per occupied cell of a surface: cell ~ 2 sqrt(area / points).
+  double area = 0.0;
+  for (std::size_t t = 0; t < mesh_.num_triangles(); ++t) {
+    const Vec3 a = vertex_at(mesh_, mesh_.triangles[3 * t]);
+    area += 0.5 * norm(cross(vertex_at(mesh_, mesh_.triangles[3 * t + 1]) - a,
+                             vertex_at(mesh_, mesh_.triangles[3 * t + 2]) - a));
+  }
+  const double ext = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300});
+  cell_ = std::max(2.0 * std::sqrt(area / static_cast<double>(pts.size())), ext / 256.0);
+  grid_lo_ = lo;
+  nx_ = static_cast<int>((hi[0] - lo[0]) / cell_) + 1;
+  ny_ = static_cast<int>((hi[1] - lo[1]) / cell_) + 1;
+  nz_ = static_cast<int>((hi[2] - lo[2]) / cell_) + 1;
+  const std::size_t ncell = static_cast<std::size_t>(nx_) * ny_ * nz_;
+  auto cell_of = [&](const Vec3& p) {
+    const int i = std::min(nx_ - 1, static_cast<int>((p[0] - lo[0]) / cell_));
+    const int j = std::min(ny_ - 1, static_cast<int>((p[1] - lo[1]) / cell_));
+    const int k = std::min(nz_ - 1, static_cast<int>((p[2] - lo[2]) / cell_));
+    return (static_cast<std::size_t>(k) * ny_ + j) * nx_ + i;
+  };
+  grid_offsets_.assign(ncell + 1, 0);
+  for (const Vec3& p : pts) ++grid_offsets_[cell_of(p) + 1];
+  for (std::size_t c = 0; c < ncell; ++c) grid_offsets_[c + 1] += grid_offsets_[c];
+  grid_points_.resize(pts.size());
+  std::vector<Id> fill(grid_offsets_.begin(), grid_offsets_.end() - 1);
+  for (const Vec3& p : pts) grid_points_[static_cast<std::size_t>(fill[cell_of(p)]++)] = p;
+}
+
+void SurfaceProjection::check_points(const Vec3& lo, const Vec3& hi, std::vector<Vec3>& out) const {
+  int a[3], b[3];
+  const int n[3] = {nx_, ny_, nz_};
+  for (int c = 0; c < 3; ++c) {
+    a[c] = std::clamp(static_cast<int>(std::floor((lo[c] - grid_lo_[c]) / cell_)), 0, n[c] - 1);
+    b[c] = std::clamp(static_cast<int>(std::floor((hi[c] - grid_lo_[c]) / cell_)), 0, n[c] - 1);
+    if (hi[c] < grid_lo_[c] || lo[c] > grid_lo_[c] + n[c] * cell_) return;
+  }
+  for (int k = a[2]; k <= b[2]; ++k)
+    for (int j = a[1]; j <= b[1]; ++j)
+      for (int i = a[0]; i <= b[0]; ++i) {
+        const std::size_t c = (static_cast<std::size_t>(k) * ny_ + j) * nx_ + i;
+        for (Id q = grid_offsets_[c]; q < grid_offsets_[c + 1]; ++q) {
+          const Vec3& p = grid_points_[static_cast<std::size_t>(q)];
+          bool inside = true;
+          for (int d = 0; d < 3; ++d) inside = inside && p[d] >= lo[d] && p[d] <= hi[d];
+          if (inside) out.push_back(p);
+        }
+      }
+}
+
+Vec3 SurfaceProjection::lift(const Vec3& flat, const Vec3& smooth) const {
+  const Vec3 d = smooth - flat;
+  const double l = norm(d);
+  return l <= max_lift_ ? smooth : flat + (max_lift_ / l) * d;
+}
+
+SurfaceProjection::Placed SurfaceProjection::on_surface(const Vec3& p, Id hint, bool smooth) const {
+  const TriangleTree::Nearest q = tri_tree_.nearest(p, hint);
+  const auto t = static_cast<std::size_t>(q.triangle);
+  const Id* tri = &mesh_.triangles[3 * t];
+  const Vec2 uv = barycentric(q.point, vertex_at(mesh_, tri[0]), vertex_at(mesh_, tri[1]),
+                              vertex_at(mesh_, tri[2]));
+  Placed out;
+  out.point = smooth ? lift(q.point, rec_->point(q.triangle, uv[0], uv[1])) : q.point;
+  out.metric = (1.0 - uv[0] - uv[1]) * metric_[static_cast<std::size_t>(tri[0])] +
+               uv[0] * metric_[static_cast<std::size_t>(tri[1])] +
+               uv[1] * metric_[static_cast<std::size_t>(tri[2])];
+  out.hint = q.triangle;
+  return out;
+}
+
+SurfaceProjection::Placed SurfaceProjection::on_feature(const Vec3& p, Id hint, bool smooth) const {
+  if (!line_tree_) return on_surface(p, kNoId, smooth);
+  const TriangleTree::Nearest q = line_tree_->nearest(p, hint);
+  const auto e = static_cast<std::size_t>(q.triangle);
+  const Id a = line_edges_[2 * e], b = line_edges_[2 * e + 1];
+  const Vec3 pa = vertex_at(mesh_, a), pb = vertex_at(mesh_, b);
+  const double l2 = dot(pb - pa, pb - pa);
+  const double s = l2 > 0.0 ? std::clamp(dot(q.point - pa, pb - pa) / l2, 0.0, 1.0) : 0.0;
+  Placed out;
+  out.point = smooth ? lift(q.point, rec_->edge_point(a, b, s)) : q.point;
+  out.metric = (1.0 - s) * metric_[static_cast<std::size_t>(a)] + s * metric_[static_cast<std::size_t>(b)];
+  out.hint = q.triangle;
+  return out;
+}
+
+}  // namespace riemesh

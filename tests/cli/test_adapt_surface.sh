@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# riemesh adapt on a surface mesh: output valid, closed, within --hausd of the input (measured
+# with riemesh distance), MMG spellings, and the options the surface branch refuses.
+set -u
+. "$(dirname "$0")/cli_lib.sh"
+
+IN="$SHARED/data/surf/rotor.mesh"
+# rotor's bounding-box diagonal is 1.41058: --hausd 0.0028 is 0.2% of it (PEERS.md's mmgs row).
+"$R" adapt "$IN" -o "$TMP/out.mesh" --hausd 0.0028 2>"$TMP/err"; code=$?
+if [ $code -eq 0 ] && grep -q "riemesh: surface 1200 -> " "$TMP/err"; then ok adapt-surface-runs; else ko "adapt-surface-runs: $code $(cat "$TMP/err")"; fi
+"$R" check "$TMP/out.mesh" >/dev/null && ok adapt-surface-valid || ko adapt-surface-valid
+json=$("$R" distance "$IN" "$TMP/out.mesh" --json)
+if /usr/bin/python3 -c "import json,sys; j=json.loads(sys.argv[1]); sys.exit(0 if j['hausdorff'] <= 0.0028 else 1)" "$json"; then
+  ok adapt-surface-hausdorff
+else
+  ko "adapt-surface-hausdorff: $json"
+fi
+# MMG spellings and --quiet: nothing on stderr; same output as the long spellings.
+"$R" adapt -in "$IN" -out "$TMP/mmg.mesh" -hausd 0.0028 -v -1 2>"$TMP/err2"; code=$?
+if [ $code -eq 0 ] && [ ! -s "$TMP/err2" ] && cmp -s "$TMP/out.mesh" "$TMP/mmg.mesh"; then
+  ok adapt-surface-mmg-spellings
+else
+  ko "adapt-surface-mmg-spellings: $code $(cat "$TMP/err2")"
+fi
+# --hsiz caps the size: more triangles than with --hausd alone.
+"$R" adapt "$IN" -o "$TMP/hsiz.mesh" --hausd 0.0028 --hsiz 0.02 -q
+n1=$(grep -A1 '^Triangles' "$TMP/out.mesh" | tail -1); n2=$(grep -A1 '^Triangles' "$TMP/hsiz.mesh" | tail -1)
+[ "$n2" -gt "$n1" ] && ok "adapt-surface-hsiz ($n1 -> $n2)" || ko "adapt-surface-hsiz: $n1 $n2"
+# --metric with a size per vertex (MMG's scalar .sol): 0.02 everywhere refines.
+{ printf 'MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n600\n1 1\n'
+  for i in $(seq 600); do echo 0.02; done; echo End; } >"$TMP/size.sol"
+"$R" adapt "$IN" -o "$TMP/met.mesh" --hausd 0.0028 --metric "$TMP/size.sol" -q; code=$?
+n3=$(grep -A1 '^Triangles' "$TMP/met.mesh" | tail -1)
+[ $code -eq 0 ] && [ "$n3" -gt "$n1" ] && ok "adapt-surface-metric ($n1 -> $n3)" || ko "adapt-surface-metric: $code $n1 $n3"
+# --aniso: the anisotropic geometric metric; fewer triangles, still valid and within hausd.
+"$R" adapt "$IN" -o "$TMP/aniso.mesh" --hausd 0.0028 --aniso -q; code=$?
+n4=$(grep -A1 '^Triangles' "$TMP/aniso.mesh" | tail -1)
+[ $code -eq 0 ] && [ "$n4" -lt "$n1" ] && "$R" check "$TMP/aniso.mesh" >/dev/null && ok "adapt-surface-aniso ($n1 -> $n4)" || ko "adapt-surface-aniso: $code $n1 $n4"
+json=$("$R" distance "$IN" "$TMP/aniso.mesh" --json)
+/usr/bin/python3 -c "import json,sys; sys.exit(0 if json.loads(sys.argv[1])['hausdorff'] <= 0.0028 else 1)" "$json" && ok adapt-surface-aniso-hausdorff || ko "adapt-surface-aniso-hausdorff: $json"
+expect_error adapt-aniso-planar adapt "$SHARED/data/2d/aile.mesh" -o "$TMP/y.mesh" --hsiz 1 --aniso
+expect_error adapt-surface-metric-missing adapt "$IN" -o "$TMP/x.mesh" --metric "$TMP/none.sol"
+expect_error adapt-surface-field adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/size.sol" --complexity 100
+expect_no_file adapt-surface-no-output "$TMP/x.mesh"
+exit $fail

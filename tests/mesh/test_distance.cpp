@@ -1,0 +1,149 @@
+// Point–triangle distance, the AABB tree against brute force, and sampled Hausdorff distances on
+// analytic cases (parallel planes, nested squares, sphere vs inflated sphere).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/error.hpp"
+#include "mesh/distance.hpp"
+#include "mesh/fixtures.hpp"
+
+using namespace riemesh;
+
+namespace {
+
+/// The square [0, s]² at height z, n x n cells, each split along one diagonal (`flip` picks
+/// the other one, so that two such meshes do not share their triangles).
+Mesh square(int n, double s, double z, bool flip) {
+  Mesh m = unit_square(n, n);
+  Mesh out;
+  out.dim = 3;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v)
+    out.coords.insert(out.coords.end(), {s * m.coords[2 * v], s * m.coords[2 * v + 1], z});
+  out.triangles = m.triangles;
+  if (flip) {
+    out.triangles.clear();
+    const auto id = [n](int i, int j) { return static_cast<Id>(j * (n + 1) + i); };
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        out.triangles.insert(out.triangles.end(), {id(i, j), id(i + 1, j), id(i, j + 1),
+                                                   id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  }
+  out.tri_ref.assign(out.num_triangles(), 1);
+  return out;
+}
+
+Mesh sphere(int s, double r) {
+  Mesh m = sphere_surface(s);
+  for (double& c : m.coords) c *= r;
+  return m;
+}
+
+TEST(Distance, ClosestPointRegions) {
+  const Vec3 a{{0, 0, 0}}, b{{1, 0, 0}}, c{{0, 1, 0}};
+  auto near = [](const Vec3& x, const Vec3& y) { return norm(x - y) < 1e-15; };
+  EXPECT_TRUE(near(closest_point_on_triangle({{0.2, 0.3, 5}}, a, b, c), {{0.2, 0.3, 0}}));  // face
+  EXPECT_TRUE(near(closest_point_on_triangle({{-1, -2, 1}}, a, b, c), a));                  // vertex
+  EXPECT_TRUE(near(closest_point_on_triangle({{3, -0.5, 0}}, a, b, c), b));
+  EXPECT_TRUE(near(closest_point_on_triangle({{-0.1, 4, 0}}, a, b, c), c));
+  EXPECT_TRUE(near(closest_point_on_triangle({{0.5, -1, 2}}, a, b, c), {{0.5, 0, 0}}));     // edge ab
+  EXPECT_TRUE(near(closest_point_on_triangle({{-3, 0.25, 0}}, a, b, c), {{0, 0.25, 0}}));   // edge ac
+  EXPECT_TRUE(near(closest_point_on_triangle({{1, 1, 0}}, a, b, c), {{0.5, 0.5, 0}}));      // edge bc
+  // Degenerate triangles: a segment and a point.
+  EXPECT_TRUE(near(closest_point_on_triangle({{0.5, 1, 0}}, a, b, 0.5 * b), {{0.5, 0, 0}}));
+  EXPECT_TRUE(near(closest_point_on_triangle({{0.5, 1, 0}}, a, a, a), a));
+}
+
+TEST(Distance, TreeMatchesBruteForce) {
+  // A bumpy sphere and random points inside, on and outside it.
+  Mesh m = sphere(3, 1.0);
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> bump(-0.05, 0.05), box(-1.5, 1.5);
+  for (double& c : m.coords) c += bump(rng);
+  const TriangleTree tree(m);
+  for (int k = 0; k < 500; ++k) {
+    const Vec3 p{{box(rng), box(rng), box(rng)}};
+    double brute = std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < m.num_triangles(); ++t) {
+      Vec3 v[3];
+      for (int i = 0; i < 3; ++i)
+        for (int c = 0; c < 3; ++c) v[i][c] = m.coords[3 * m.triangles[3 * t + i] + c];
+      brute = std::min(brute, norm(p - closest_point_on_triangle(p, v[0], v[1], v[2])));
+    }
+    const auto q = tree.nearest(p, k % 2 ? static_cast<Id>(k) : kNoId);
+    EXPECT_EQ(q.distance, brute) << k;
+    EXPECT_NEAR(norm(q.point - p), q.distance, 1e-15);
+  }
+}
+
+TEST(Distance, ParallelPlanes) {
+  // Two squares 0.1 apart, triangulated differently: every sample is exactly 0.1 away.
+  const Mesh a = square(5, 1.0, 0.0, false), b = square(7, 1.0, 0.1, true);
+  const HausdorffDistance h = hausdorff_distance(a, b, {});
+  EXPECT_NEAR(h.a_to_b.max, 0.1, 1e-15);
+  EXPECT_NEAR(h.a_to_b.mean, 0.1, 1e-15);
+  EXPECT_NEAR(h.b_to_a.max, 0.1, 1e-15);
+  EXPECT_NEAR(h.two_sided(), 0.1, 1e-15);
+  EXPECT_EQ(h.a_to_b.samples, 50u * 15u);  // 2·5² triangles, 15 lattice points (order 4)
+}
+
+TEST(Distance, OneSidedIsNotSymmetric) {
+  // [0,1]² inside [0,2]² in one plane: A → B is 0; B → A is √2, at the corner (2, 2).
+  const Mesh a = square(4, 1.0, 0.0, false), b = square(4, 2.0, 0.0, true);
+  const HausdorffDistance h = hausdorff_distance(a, b, {});
+  EXPECT_EQ(h.a_to_b.max, 0.0);
+  EXPECT_NEAR(h.b_to_a.max, std::sqrt(2.0), 1e-14);
+  EXPECT_NEAR(h.b_to_a.where[0], 2.0, 1e-14);
+  EXPECT_NEAR(h.b_to_a.where[1], 2.0, 1e-14);
+  // Mean of the distance to [0,1]² over [0,2]²: (∫∫ dist)/4, with the three outer unit
+  // squares: two of mean 1/2 (distance to an edge) and one of mean E|(x,y)| on [0,1]² ≈ 0.7652.
+  // (2·0.5 + 0.7652)/4 = 0.4413; the order-4 lattice per triangle approximates it within 2%.
+  EXPECT_NEAR(h.b_to_a.mean, 0.4413, 0.01);
+}
+
+TEST(Distance, SphereAndInflatedSphere) {
+  // Icospheres of radius 1 and 1.1 (different subdivisions): the exact spheres are 0.1 apart,
+  // and each mesh lies within its sagitta δ = R − (distance of the flattest triangle's plane
+  // to the centre) inside its sphere; so every distance is within 0.1 ± (δa + δb).
+  const Mesh a = sphere(3, 1.0), b = sphere(4, 1.1);
+  auto sagitta = [](const Mesh& m, double r) {
+    double d = 0.0;
+    for (std::size_t t = 0; t < m.num_triangles(); ++t) {
+      Vec3 v[3];
+      for (int i = 0; i < 3; ++i)
+        for (int c = 0; c < 3; ++c) v[i][c] = m.coords[3 * m.triangles[3 * t + i] + c];
+      const Vec3 n = normalize(cross(v[1] - v[0], v[2] - v[0]));
+      d = std::max(d, r - dot(n, v[0]));
+    }
+    return d;
+  };
+  const double delta = sagitta(a, 1.0) + sagitta(b, 1.1);
+  EXPECT_LT(delta, 0.01);
+  DistanceOptions o;
+  o.samples = 6;
+  const HausdorffDistance h = hausdorff_distance(a, b, o);
+  EXPECT_GT(h.a_to_b.max, 0.1 - delta);
+  EXPECT_LT(h.a_to_b.max, 0.1 + delta);
+  EXPECT_GT(h.b_to_a.max, 0.1 - delta);
+  EXPECT_LT(h.two_sided(), 0.1 + delta);
+  EXPECT_NEAR(h.a_to_b.mean, 0.1, delta);
+  // Identical surfaces: zero both ways.
+  EXPECT_LT(hausdorff_distance(a, a, o).two_sided(), 1e-15);  // rounding of the lattice points
+}
+
+TEST(Distance, SpacingRefinesTheLattice) {
+  const Mesh a = square(1, 1.0, 0.0, false), b = square(1, 1.0, 0.0, true);
+  DistanceOptions o;
+  o.samples = 1;
+  o.spacing = 0.1;  // longest edge √2: order ceil(14.1) = 15, 136 points per triangle
+  EXPECT_EQ(one_sided_distance(a, TriangleTree(b), o).samples, 2u * 136u);
+  o.spacing = -1.0;
+  EXPECT_THROW(o.validate(), InputError);
+  o.spacing = 0.0;
+  o.samples = 0;
+  EXPECT_THROW(o.validate(), InputError);
+  EXPECT_THROW(TriangleTree(unit_square(2, 2)), InputError);  // 2D
+}
+
+}  // namespace

@@ -1,0 +1,57 @@
+// Self-intersection test of triangle surfaces: crossing, touching and separate pairs, shared
+// vertices and edges, a sphere and a sphere with one vertex pushed through the other side.
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "mesh/fixtures.hpp"
+#include "mesh/self_intersection.hpp"
+
+using namespace riemesh;
+
+namespace {
+
+Mesh two_triangles(const std::vector<double>& coords, const std::vector<Id>& tris) {
+  Mesh m;
+  m.dim = 3;
+  m.coords = coords;
+  m.triangles = tris;
+  m.tri_ref.assign(tris.size() / 3, 1);
+  return m;
+}
+
+TEST(SelfIntersection, Pairs) {
+  // A triangle in z = 0 and one standing across it (x = 0.25 plane, through its interior).
+  const std::vector<double> flat = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  std::vector<double> c = flat;
+  c.insert(c.end(), {0.25, 0.2, -1, 0.25, 0.2, 1, 0.25, 0.6, 0});
+  EXPECT_EQ(find_self_intersections(two_triangles(c, {0, 1, 2, 3, 4, 5})).pairs, 1u);
+  // The same triangle lifted above: separate.
+  c = flat;
+  c.insert(c.end(), {0.25, 0.2, 0.5, 0.25, 0.2, 1, 0.25, 0.6, 0.7});
+  EXPECT_EQ(find_self_intersections(two_triangles(c, {0, 1, 2, 3, 4, 5})).pairs, 0u);
+  // Sharing vertex 0 and nothing else: not an intersection.
+  c = flat;
+  c.insert(c.end(), {0, 0, 1, -1, 0, 1});
+  EXPECT_EQ(find_self_intersections(two_triangles(c, {0, 1, 2, 0, 3, 4})).pairs, 0u);
+  // Sharing vertex 0, the other's far edge piercing the first: an intersection.
+  c = flat;
+  c.insert(c.end(), {0.3, 0.3, -1, 0.3, 0.3, 1});
+  EXPECT_EQ(find_self_intersections(two_triangles(c, {0, 1, 2, 0, 3, 4})).pairs, 1u);
+  // Sharing an edge: never tested (even folded onto each other).
+  c = flat;
+  c.insert(c.end(), {0.5, 0.4, 0});
+  EXPECT_EQ(find_self_intersections(two_triangles(c, {0, 1, 2, 1, 0, 3})).pairs, 0u);
+}
+
+TEST(SelfIntersection, SphereAndADentThroughIt) {
+  Mesh m = sphere_surface(3);
+  EXPECT_EQ(find_self_intersections(m).pairs, 0u);
+  // Vertex 0 moved to the antipode's far side: its triangles cross the other hemisphere.
+  for (int c = 0; c < 3; ++c) m.coords[c] *= -1.5;
+  const SelfIntersections s = find_self_intersections(m);
+  EXPECT_GT(s.pairs, 0u);
+  EXPECT_NE(s.first_a, kNoId);
+  EXPECT_THROW(find_self_intersections(unit_square(2, 2)), InputError);
+}
+
+}  // namespace
