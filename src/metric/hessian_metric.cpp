@@ -146,6 +146,10 @@ double normalize(const Mesh& mesh, const Shapes<D>& s, const HessianMetricOption
   };
   const double target = std::log(o.complexity);
   double x = std::log(k0), y = log_complexity(x);
+  // Without size or anisotropy bounds nothing is clipped and C(K) = K^{D/2} C(1) exactly: one
+  // step of slope D/2 lands on N (to round-off), with no second pass over the elements.
+  if (!(o.hmin > 0.0) && !std::isfinite(o.hmax) && !std::isfinite(o.aniso_max))
+    return std::exp(x + (target - y) / (0.5 * D));
   double x_prev = 0.0, y_prev = 0.0;
   for (int it = 0; it < 60 && std::abs(y - target) > 1e-12; ++it) {
     double slope = 0.5 * D;
