@@ -21,6 +21,7 @@ constexpr double kLongEdge = 1.4142135623730951;   // √2
 constexpr double kShortEdge = 0.7071067811865476;  // 1/√2
 constexpr double kCollapseBelow = 0.9;             // as in 2D
 constexpr double kSwapBelow = 0.6;                 // swaps are tried around tets worse than this
+constexpr double kSwapMaxLength = 1.5;            // swaps create no edge longer than this
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
 
 std::string num(double v) {
@@ -169,14 +170,14 @@ long swap_sweep(TetMesh& m, PassStats& st) {
     std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
     bool applied = false;
     for (const auto& [i, j] : kTetEdge) {
-      const Outcome o = swap_edge(m, v[i], v[j], 1e-3);
+      const Outcome o = swap_edge(m, v[i], v[j], 1e-3, kSwapMaxLength);
       if (o == Outcome::kApplied) {
         applied = true;
         break;
       }
     }
     for (int i = 0; i < 4 && !applied; ++i) {
-      if (swap_face(m, 4 * t + i, 1e-3) == Outcome::kApplied) applied = true;
+      if (swap_face(m, 4 * t + i, 1e-3, kSwapMaxLength) == Outcome::kApplied) applied = true;
     }
     if (applied) ++done;
     else ++st.rejected;

@@ -18,7 +18,7 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric) {
   double worst = 1.0;
   for (const Id t : ball) {
     worst = std::min(worst, tet_quality(m, t));
-    if (worst <= old_worst) break;
+    if (!(worst > 0.0)) break;
   }
   if (worst > old_worst) return Outcome::kApplied;
   m.xyz[v] = old_p, m.metric[v] = old_m;

@@ -66,12 +66,13 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits);
 
 /// Replaces the shell of the interior edge (a, b) (3 to 7 tets, no listed face on it) by the
 /// best triangulation of its ring (2n − 4 tets) when that raises the shell's worst quality by
-/// more than min_gain.
-Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain);
+/// more than min_gain; no new edge longer than max_length in the metric.
+Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length);
 
 /// Replaces the two tets on the unlisted interior face at `slot` by three tets around the edge
-/// joining their apexes, when that raises the worst quality by more than min_gain.
-Outcome swap_face(TetMesh& m, Id slot, double min_gain);
+/// joining their apexes, when that raises the worst quality by more than min_gain and that edge
+/// is not longer than max_length in the metric.
+Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length);
 
 /// Moves v to p (with its new metric) when every tet of its ball stays valid and the ball's
 /// worst quality improves.

@@ -67,7 +67,7 @@ void emit(const RingTriangulation& r, const Id* p, Id a, Id b, std::int32_t ref,
 
 }  // namespace
 
-Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain) {
+Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length) {
   thread_local std::vector<Id> shell;
   thread_local std::vector<NewTet> tets;
   collect_shell(m, a, b, shell);
@@ -77,13 +77,19 @@ Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain) {
   if (!shell_ring(m, shell, a, b, p)) return Outcome::kRejectedTopology;
   double old_worst = 1.0;
   for (const Id t : shell) old_worst = std::min(old_worst, tet_quality(m, t));
-  // Best triangulation of the ring polygon: maximise the worst tet (dynamic programming).
+  // Best triangulation of the ring polygon: maximise the worst tet (dynamic programming), with
+  // no diagonal of the ring longer than max_length.
+  bool ok[kMaxShell][kMaxShell];
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      ok[i][j] = j == i + 1 || (i == 0 && j == n - 1) || edge_length(m, p[i], p[j]) <= max_length;
   RingTriangulation r;
   for (int len = 1; len < n; ++len)
     for (int i = 0; i + len < n; ++i) {
       const int j = i + len;
       r.q[i][j] = len == 1 ? 2.0 : -1.0;
       for (int k = i + 1; k < j; ++k) {
+        if (!ok[i][k] || !ok[k][j]) continue;
         double q = std::min(r.q[i][k], r.q[k][j]);
         if (q <= r.q[i][j]) continue;
         q = std::min(q, tet_quality(m, a, p[i], p[k], p[j]));
@@ -101,7 +107,7 @@ Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain) {
   return Outcome::kApplied;
 }
 
-Outcome swap_face(TetMesh& m, Id slot, double min_gain) {
+Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length) {
   const Id r = m.tadj[slot];
   if (r == kNoId || m.fbdy[slot]) return Outcome::kRejectedTopology;
   const Id t = slot / 4, u = r / 4;
@@ -110,6 +116,7 @@ Outcome swap_face(TetMesh& m, Id slot, double min_gain) {
   const Id d = m.tv[4 * t + i], e = m.tv[4 * u + r % 4];
   const Id f[3] = {m.tv[4 * t + kTetFace[i][0]], m.tv[4 * t + kTetFace[i][1]],
                    m.tv[4 * t + kTetFace[i][2]]};
+  if (edge_length(m, d, e) > max_length) return Outcome::kRejectedQuality;
   const double old_worst = std::min(tet_quality(m, t), tet_quality(m, u));
   NewTet tets[3];
   double worst = 1.0;
