@@ -22,6 +22,8 @@ constexpr double kShortEdge = 0.7071067811865476;  // 1/√2
 constexpr double kCollapseBelow = 0.9;             // as in 2D
 constexpr double kSwapBelow = 0.6;                 // swaps are tried around tets worse than this
 constexpr double kSwapMaxLength = 1.5;            // swaps create no edge longer than this
+constexpr double kBad = 0.45;                      // tets below this are removed by collapses
+constexpr double kBadMaxLength = 1.6;               // ... creating edges no longer than this
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
 
 std::string num(double v) {
@@ -185,6 +187,37 @@ long swap_sweep(TetMesh& m, PassStats& st) {
   return done;
 }
 
+/// The tets worse than kBad: each loses its worst edge by a collapse that does not lower the
+/// worst quality of the ball (edges up to kBadMaxLength), its vertices tried in turn.
+long bad_tet_sweep(TetMesh& m, PassStats& st) {
+  std::vector<Id> bad;
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t)
+    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kBad)
+      bad.push_back(static_cast<Id>(t));
+  long done = 0;
+  for (const Id t : bad) {
+    if (!m.tet_alive(t) || tet_quality(m, t) >= kBad) continue;
+    Candidate edges[6];
+    for (int k = 0; k < 6; ++k) {
+      const Id a = m.tv[4 * t + kTetEdge[k][0]], b = m.tv[4 * t + kTetEdge[k][1]];
+      edges[k] = {edge_length(m, a, b), a, b};
+    }
+    std::sort(edges, edges + 6, [](const Candidate& x, const Candidate& y) {
+      return x.length != y.length ? x.length < y.length : (x.a != y.a ? x.a < y.a : x.b < y.b);
+    });
+    bool applied = false;
+    for (int k = 0; k < 6 && !applied; ++k)
+      for (const auto& [from, to] : {std::pair{edges[k].a, edges[k].b}, std::pair{edges[k].b, edges[k].a}})
+        if (collapse_edge(m, from, to, {1.0, kBadMaxLength}) == Outcome::kApplied) {
+          applied = true;
+          break;
+        }
+    if (applied) ++done;
+    else ++st.rejected;
+  }
+  return done;
+}
+
 long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
   TetMesh& m = ctx.mesh();
   std::vector<std::uint8_t> wanted(m.vertex_capacity(), 0);
@@ -197,7 +230,14 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
     if (!wanted[vi] || !m.vert_alive(v)) continue;
     NewVertex3 target;
     if (!ctx.smoothing_target(v, target)) continue;
-    if (move_vertex(m, v, target.p, target.metric) == Outcome::kApplied) {
+    bool moved = move_vertex(m, v, target.p, target.metric) == Outcome::kApplied;
+    // A refused target: try the way there at half and a quarter.
+    const Vec3 from = m.xyz[v];
+    for (double f = 0.5; !moved && f > 0.2; f *= 0.5) {
+      const Vec3 p = from + f * (target.p - from);
+      moved = move_vertex(m, v, p, ctx.metric_for(p, v)) == Outcome::kApplied;
+    }
+    if (moved) {
       ctx.inherit_hint(v);
       ++done;
     } else {
@@ -265,6 +305,7 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
   TetMesh& m = ctx.mesh();
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
+  double prev_in = 0.0, prev_qmin = 0.0;
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();
     PassStats st;
@@ -277,12 +318,21 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
       if (options.swap) st.swaps += swap_sweep(m, st);
       if (options.move) st.moves += smooth_sweep(ctx, st);
     }
+    if (options.insert) st.collapses += bad_tet_sweep(m, st);
+    if (options.swap) st.swaps += swap_sweep(m, st);
     summarize(m, st);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);
     if (on_pass) on_pass(st);
+    // Converged as in 2D (fewer than 0.5% of the vertices inserted or removed, or no new low of
+    // that count for 3 passes), or when a pass changed neither the fraction of edges in band
+    // (by 0.1%) nor the worst quality (by 0.001): then a few edges only cycle between split
+    // and collapse.
     const long ops = st.splits + st.collapses;
-    if (ops <= static_cast<long>(st.vertices / 200) || pass - best_pass >= 3) {
+    const bool still =
+        pass > 1 && std::abs(st.len_in - prev_in) < 1e-3 && st.q_min < prev_qmin + 1e-3;
+    prev_in = st.len_in, prev_qmin = st.q_min;
+    if (ops <= static_cast<long>(st.vertices / 200) || pass - best_pass >= 3 || still) {
       result.report.converged = true;
       break;
     }

@@ -7,8 +7,7 @@ namespace riemesh {
 
 Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric) {
   thread_local std::vector<Id> ball;
-  if (m.vkind[v] == VertexKind::kFixed || m.vkind[v] == VertexKind::kRidge)
-    return Outcome::kRejectedTopology;
+  if (m.vkind[v] == VertexKind::kFixed) return Outcome::kRejectedTopology;
   collect_ball(m, v, ball);
   double old_worst = 1.0;
   for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));

@@ -75,7 +75,8 @@ Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length);
 Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length);
 
 /// Moves v to p (with its new metric) when every tet of its ball stays valid and the ball's
-/// worst quality improves.
+/// worst quality improves. Fixed vertices never move; keeping a boundary vertex on its plane or
+/// ridge line is the caller's job (p is taken as given).
 Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric);
 
 }  // namespace riemesh

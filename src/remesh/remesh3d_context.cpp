@@ -170,7 +170,7 @@ void Remesh3dContext::inherit_hint(Id v) {
 
 bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out) const {
   const VertexKind k = mesh_.vkind[v];
-  if (k != VertexKind::kInterior && k != VertexKind::kPlanar) return false;
+  if (k == VertexKind::kFixed) return false;
   thread_local std::vector<Id> ball, nbrs;
   collect_ball(mesh_, v, ball);
   nbrs.clear();
@@ -193,6 +193,9 @@ bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out) const {
   if (k == VertexKind::kPlanar) {
     const Plane* pl = plane(mesh_.vplane[2 * v]);
     out.p = out.p - (dot(pl->n, out.p) - pl->d) * pl->n;
+  } else if (k == VertexKind::kRidge) {  // onto the line through p where the two planes meet
+    const Vec3 d = normalize(cross(plane(mesh_.vplane[2 * v])->n, plane(mesh_.vplane[2 * v + 1])->n));
+    out.p = p + dot(out.p - p, d) * d;
   }
   out.kind = k;
   out.metric = metric_for(out.p, v);

@@ -30,7 +30,8 @@ class Remesh3dContext {
   SymMat3 metric_for(const Vec3& p, Id hint_vertex) const;
 
   /// Where smoothing would put v: the mean of the unit-length points seen from its neighbours,
-  /// projected on its plane for a planar boundary vertex. False when v may not move.
+  /// projected on its plane for a planar boundary vertex, on its line for a ridge vertex.
+  /// False when v may not move.
   bool smoothing_target(Id v, NewVertex3& out) const;
 
   /// Records, for vertex v just created or moved, the background tet of the last metric_for.
