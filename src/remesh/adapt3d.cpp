@@ -83,30 +83,39 @@ std::vector<SymMat3> prepare_metrics(const Mesh& in, const Adjacency& adj,
 struct Candidate {
   double length;
   Id a, b;
+  Id tet;  // a tet holding the edge when it was listed (a hint: the mesh changes)
 };
 
-/// The unique live edges (a < b), sorted.
-std::vector<std::pair<Id, Id>> all_edges(const TetMesh& m) {
-  std::vector<std::pair<Id, Id>> e;
+struct Edge {
+  Id a, b, tet;
+};
+
+/// The unique live edges (a < b), sorted, each with the first tet holding it.
+std::vector<Edge> all_edges(const TetMesh& m) {
+  std::vector<Edge> e;
   e.reserve(7 * m.num_live_tets());
   for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
     if (!m.tet_alive(static_cast<Id>(t))) continue;
     for (const auto& [i, j] : kTetEdge) {
       const Id a = m.tv[4 * t + i], b = m.tv[4 * t + j];
-      e.emplace_back(std::min(a, b), std::max(a, b));
+      e.push_back({std::min(a, b), std::max(a, b), static_cast<Id>(t)});
     }
   }
-  std::sort(e.begin(), e.end());
-  e.erase(std::unique(e.begin(), e.end()), e.end());
+  std::sort(e.begin(), e.end(), [](const Edge& x, const Edge& y) {
+    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.tet < y.tet;
+  });
+  e.erase(std::unique(e.begin(), e.end(), [](const Edge& x, const Edge& y) {
+            return x.a == y.a && x.b == y.b;
+          }), e.end());
   return e;
 }
 
 template <class Select>
 std::vector<Candidate> candidates(const TetMesh& m, Select select, bool longer_first) {
   std::vector<Candidate> out;
-  for (const auto& [a, b] : all_edges(m)) {
+  for (const auto& [a, b, t] : all_edges(m)) {
     const double l = edge_length(m, a, b);
-    if (select(l)) out.push_back({l, a, b});
+    if (select(l)) out.push_back({l, a, b, t});
   }
   std::sort(out.begin(), out.end(), [longer_first](const Candidate& x, const Candidate& y) {
     if (x.length != y.length) return longer_first ? x.length > y.length : x.length < y.length;
@@ -122,12 +131,12 @@ long split_sweeps(Remesh3dContext& ctx, PassStats& st) {
     long done = 0;
     for (const Candidate& c : candidates(m, [](double l) { return l > kLongEdge; }, true)) {
       NewVertex3 nv;
-      if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || !ctx.split_point(c.a, c.b, nv)) {
+      if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || !ctx.split_point(c.a, c.b, nv, c.tet)) {
         ++st.rejected;
         continue;
       }
       Id created = kNoId;
-      if (split_edge(m, c.a, c.b, nv, 0.0, &created) == Outcome::kApplied) {
+      if (split_edge(m, c.a, c.b, nv, 0.0, &created, c.tet) == Outcome::kApplied) {
         ctx.inherit_hint(created);
         ++done;
       } else {
@@ -172,7 +181,7 @@ long swap_sweep(TetMesh& m, PassStats& st) {
     std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
     bool applied = false;
     for (const auto& [i, j] : kTetEdge) {
-      const Outcome o = swap_edge(m, v[i], v[j], 1e-3, kSwapMaxLength);
+      const Outcome o = swap_edge(m, v[i], v[j], 1e-3, kSwapMaxLength, t);
       if (o == Outcome::kApplied) {
         applied = true;
         break;
@@ -200,7 +209,7 @@ long bad_tet_sweep(TetMesh& m, PassStats& st) {
     Candidate edges[6];
     for (int k = 0; k < 6; ++k) {
       const Id a = m.tv[4 * t + kTetEdge[k][0]], b = m.tv[4 * t + kTetEdge[k][1]];
-      edges[k] = {edge_length(m, a, b), a, b};
+      edges[k] = {edge_length(m, a, b), a, b, t};
     }
     std::sort(edges, edges + 6, [](const Candidate& x, const Candidate& y) {
       return x.length != y.length ? x.length < y.length : (x.a != y.a ? x.a < y.a : x.b < y.b);
@@ -250,7 +259,7 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
 void summarize(const TetMesh& m, PassStats& st) {
   long n = 0, in = 0;
   double sum = 0, lmin = std::numeric_limits<double>::infinity(), lmax = 0;
-  for (const auto& [a, b] : all_edges(m)) {
+  for (const auto& [a, b, t] : all_edges(m)) {
     const double l = edge_length(m, a, b);
     ++n, sum += l, lmin = std::min(lmin, l), lmax = std::max(lmax, l);
     in += (l >= kShortEdge && l <= kLongEdge) ? 1 : 0;
@@ -272,7 +281,7 @@ void summarize(const TetMesh& m, PassStats& st) {
 std::string stall_reason(const TetMesh& m) {
   double worst = 0, lw = 1;
   Id wa = kNoId, wb = kNoId;
-  for (const auto& [a, b] : all_edges(m)) {
+  for (const auto& [a, b, t] : all_edges(m)) {
     const double l = edge_length(m, a, b);
     const double badness = l > 1.0 ? l : 1.0 / l;
     if (badness > worst) worst = badness, wa = a, wb = b, lw = l;

@@ -53,9 +53,10 @@ struct NewVertex3 {
 
 /// Splits edge (a, b) at nv: every tet of its shell is cut in two. Rejected (geometry) when a
 /// new tet would be flat or inverted, (quality) when one would be below min_quality. Listed
-/// faces on the edge are split with their refs. *created receives the new vertex.
+/// faces on the edge are split with their refs. *created receives the new vertex. `hint`: a
+/// tet that may hold the edge (saves the search).
 Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_quality,
-                   Id* created);
+                   Id* created, Id hint = kNoId);
 
 /// Removes `from` by merging it into `to` (they must be joined). Rejected by the boundary rules
 /// (a fixed vertex never goes; a planar vertex only along an edge inside its plane; a ridge
@@ -67,7 +68,7 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits);
 /// Replaces the shell of the interior edge (a, b) (3 to 7 tets, no listed face on it) by the
 /// best triangulation of its ring (2n − 4 tets) when that raises the shell's worst quality by
 /// more than min_gain; no new edge longer than max_length in the metric.
-Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length);
+Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length, Id hint = kNoId);
 
 /// Replaces the two tets on the unlisted interior face at `slot` by three tets around the edge
 /// joining their apexes, when that raises the worst quality by more than min_gain and that edge

@@ -131,9 +131,9 @@ void Remesh3dContext::classify_vertices() {
   }
 }
 
-bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out) const {
+bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
   thread_local std::vector<Id> shell;
-  collect_shell(mesh_, a, b, shell);
+  collect_shell(mesh_, a, b, shell, hint);
   std::int32_t refs[2];
   int n = 0;
   if (shell.empty() || !edge_face_refs(mesh_, shell, a, b, refs, n)) return false;

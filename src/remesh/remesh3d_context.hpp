@@ -23,8 +23,8 @@ class Remesh3dContext {
   const std::vector<std::int32_t>& edge_refs() const { return edge_refs_; }
 
   /// The vertex to insert on edge (a, b) (its metric midpoint) and its kind; false when the
-  /// boundary rules forbid splitting the edge.
-  bool split_point(Id a, Id b, NewVertex3& out) const;
+  /// boundary rules forbid splitting the edge. `hint`: a tet that may hold the edge.
+  bool split_point(Id a, Id b, NewVertex3& out, Id hint = kNoId) const;
 
   /// The metric at p from the background field, the walk starting near hint_vertex.
   SymMat3 metric_for(const Vec3& p, Id hint_vertex) const;

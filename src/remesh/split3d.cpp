@@ -4,10 +4,10 @@
 namespace riemesh {
 
 Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_quality,
-                   Id* created) {
+                   Id* created, Id hint) {
   thread_local std::vector<Id> shell;
   thread_local std::vector<NewTet> tets;
-  collect_shell(m, a, b, shell);
+  collect_shell(m, a, b, shell, hint);
   if (shell.empty()) return Outcome::kRejectedTopology;
   // Geometry first, on the positions (the vertex is created only when the split goes ahead).
   const Id x = m.add_vertex(nv.p, nv.metric);

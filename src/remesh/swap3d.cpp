@@ -67,10 +67,10 @@ void emit(const RingTriangulation& r, const Id* p, Id a, Id b, std::int32_t ref,
 
 }  // namespace
 
-Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length) {
+Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length, Id hint) {
   thread_local std::vector<Id> shell;
   thread_local std::vector<NewTet> tets;
-  collect_shell(m, a, b, shell);
+  collect_shell(m, a, b, shell, hint);
   const int n = static_cast<int>(shell.size());
   if (n < 3 || n > kMaxShell) return Outcome::kRejectedTopology;
   Id p[kMaxShell];

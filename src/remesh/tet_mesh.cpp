@@ -116,10 +116,43 @@ void collect_ball(const TetMesh& m, Id v, std::vector<Id>& out) {
   }
 }
 
-void collect_shell(const TetMesh& m, Id a, Id b, std::vector<Id>& out) {
-  collect_ball(m, a, out);
-  out.erase(std::remove_if(out.begin(), out.end(), [&](Id t) { return tet_index(m, t, b) < 0; }),
-            out.end());
+Id find_edge_tet(const TetMesh& m, Id a, Id b) {
+  const Id start = m.vtet[a];
+  if (start == kNoId || !m.vert_alive(b)) return kNoId;
+  thread_local std::vector<Id> queue;
+  const std::uint32_t s = next_stamp(m);
+  queue.assign(1, start);
+  m.mark[start] = s;
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const Id t = queue[k];
+    if (tet_index(m, t, b) >= 0) return t;
+    const int i = tet_index(m, t, a);
+    for (int j = 0; j < 4; ++j) {
+      const Id r = m.tadj[4 * t + j];
+      if (j == i || r == kNoId) continue;
+      if (m.mark[r / 4] != s) m.mark[r / 4] = s, queue.push_back(r / 4);
+    }
+  }
+  return kNoId;
+}
+
+void collect_shell(const TetMesh& m, Id a, Id b, std::vector<Id>& out, Id hint) {
+  out.clear();
+  if (hint == kNoId || !m.tet_alive(hint) || tet_index(m, hint, a) < 0 || tet_index(m, hint, b) < 0)
+    hint = find_edge_tet(m, a, b);
+  if (hint == kNoId) return;
+  // Turn around the edge: across the two faces of each tet that hold it.
+  const std::uint32_t s = next_stamp(m);
+  out.push_back(hint);
+  m.mark[hint] = s;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const Id t = out[k];
+    for (int j = 0; j < 4; ++j) {
+      const Id v = m.tv[4 * t + j], r = m.tadj[4 * t + j];
+      if (v == a || v == b || r == kNoId) continue;
+      if (m.mark[r / 4] != s) m.mark[r / 4] = s, out.push_back(r / 4);
+    }
+  }
 }
 
 bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewTet> tets,

@@ -81,8 +81,13 @@ inline int tet_index(const TetMesh& m, Id t, Id v) {
 /// The tets around vertex v (walk through the faces that hold v), in walk order.
 void collect_ball(const TetMesh& m, Id v, std::vector<Id>& out);
 
-/// The tets around edge (a, b), from a's ball; empty when a and b are not joined.
-void collect_shell(const TetMesh& m, Id a, Id b, std::vector<Id>& out);
+/// A tet holding edge (a, b), searched in a's ball (stopping at the first), or kNoId when a
+/// and b are not joined.
+Id find_edge_tet(const TetMesh& m, Id a, Id b);
+
+/// The tets around edge (a, b), turning around it from `hint` when that tet holds the edge
+/// (else from find_edge_tet); empty when a and b are not joined.
+void collect_shell(const TetMesh& m, Id a, Id b, std::vector<Id>& out, Id hint = kNoId);
 
 /// A tet to create in replace_cavity.
 struct NewTet {
