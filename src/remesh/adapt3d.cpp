@@ -20,6 +20,7 @@ namespace {
 constexpr double kLongEdge = 1.4142135623730951;   // √2
 constexpr double kShortEdge = 0.7071067811865476;  // 1/√2
 constexpr double kCollapseBelow = 0.9;             // as in 2D
+constexpr int kSplitSweeps = 3;              // per pass, as in 2D (1 or 2: slower to settle)
 constexpr double kSwapBelow = 0.6;                 // swaps are tried around tets worse than this
 constexpr double kSwapMaxLength = 1.5;            // swaps create no edge longer than this
 constexpr double kBad = 0.45;                      // tets below this are removed by collapses
@@ -139,7 +140,7 @@ std::vector<Candidate> candidates(const TetMesh& m, Select select, bool longer_f
 long split_sweeps(Remesh3dContext& ctx, PassStats& st) {
   TetMesh& m = ctx.mesh();
   long total = 0;
-  for (int sweep = 0; sweep < 3; ++sweep) {
+  for (int sweep = 0; sweep < kSplitSweeps; ++sweep) {
     long done = 0;
     for (const Candidate& c : candidates(m, [](double l) { return l > kLongEdge; }, true)) {
       NewVertex3 nv;

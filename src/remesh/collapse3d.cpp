@@ -45,10 +45,8 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
       if (x != from && x != to && edge_length(m, to, x) > limits.max_length)
         return Outcome::kRejectedQuality;
     }
-  double old_worst = 1.0;
-  for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));
-  const double floor = std::min(limits.min_quality, old_worst);
   tets.clear();
+  double new_worst = 1.0;
   for (const Id t : ball) {
     if (tet_index(m, t, to) >= 0) continue;
     NewTet n{};
@@ -59,8 +57,14 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
     n.ref = m.tref[t];
     const double q = tet_quality(m, n.v);
     if (!(q > 0.0)) return Outcome::kRejectedGeometry;
-    if (q < floor) return Outcome::kRejectedQuality;
+    new_worst = std::min(new_worst, q);
     tets.push_back(n);
+  }
+  // Below the floor only when the ball was already worse (its worst quality, computed only then).
+  if (new_worst < limits.min_quality) {
+    double old_worst = 1.0;
+    for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));
+    if (new_worst < old_worst) return Outcome::kRejectedQuality;
   }
   const Substitution subst[1] = {{to, from}};
   if (!replace_cavity(m, ball, tets, subst)) return Outcome::kRejectedTopology;
