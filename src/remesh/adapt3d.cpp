@@ -25,6 +25,7 @@ constexpr double kSwapBelow = 0.6;                 // swaps are tried around tet
 constexpr double kSwapMaxLength = 1.5;            // swaps create no edge longer than this
 constexpr double kBad = 0.45;                      // tets below this are removed by collapses
 constexpr double kBadMaxLength = 1.6;               // ... creating edges no longer than this
+constexpr double kVeryShort = 0.55;                // shorter edges go with those limits too
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
 
 std::string num(double v) {
@@ -240,6 +241,24 @@ long bad_tet_sweep(TetMesh& m, PassStats& st) {
   return done;
 }
 
+/// Edges shorter than kVeryShort: collapsed with the relaxed limits of the bad tets.
+long short_edge_sweep(TetMesh& m, PassStats& st) {
+  long done = 0;
+  for (const Candidate& c : candidates(m, [](double l) { return l < kVeryShort; }, false)) {
+    if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || edge_length(m, c.a, c.b) >= kVeryShort)
+      continue;
+    bool applied = false;
+    for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
+      if (collapse_edge(m, from, to, {kBad, kBadMaxLength}) == Outcome::kApplied) {
+        applied = true;
+        break;
+      }
+    if (applied) ++done;
+    else ++st.rejected;
+  }
+  return done;
+}
+
 long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
   TetMesh& m = ctx.mesh();
   std::vector<std::uint8_t> wanted(m.vertex_capacity(), 0);
@@ -340,7 +359,7 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
       if (options.swap) st.swaps += swap_sweep(m, st);
       if (options.move) st.moves += smooth_sweep(ctx, st);
     }
-    if (options.insert) st.collapses += bad_tet_sweep(m, st);
+    if (options.insert) st.collapses += bad_tet_sweep(m, st) + short_edge_sweep(m, st);
     if (options.swap) st.swaps += swap_sweep(m, st);
     summarize(m, st);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
