@@ -39,6 +39,26 @@ PY
 "$R" adapt "$C" --metric "$TMP/s.sol" -o "$TMP/s.mesh" -q && "$R" check "$TMP/s.mesh" >/dev/null &&
   ok adapt3d-sizes || ko adapt3d-sizes
 
+# --fields: a field linear in x, y, z comes back exact (P1 transfer) at every output vertex.
+/usr/bin/python3 - "$C" "$TMP/u.sol" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+i = toks.index('Vertices'); n = int(toks[i + 1])
+p = [[float(t) for t in toks[i + 2 + 4 * k:i + 5 + 4 * k]] for k in range(n)]
+open(sys.argv[2], 'w').write('MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n%d\n1 1\n' % n +
+                             ''.join('%r\n' % (x + 2 * y + 3 * z) for x, y, z in p) + 'End\n')
+PY
+"$R" adapt "$C" --hsiz 0.2 --fields "$TMP/u.sol" --out-fields "$TMP/uo.sol" -o "$TMP/f.mesh" -q &&
+  /usr/bin/python3 - "$TMP/f.mesh" "$TMP/uo.sol" <<'PY' && ok fields-transfer || ko fields-transfer
+import sys
+toks = open(sys.argv[1]).read().split()
+i = toks.index('Vertices'); n = int(toks[i + 1])
+p = [[float(t) for t in toks[i + 2 + 4 * k:i + 5 + 4 * k]] for k in range(n)]
+s = open(sys.argv[2]).read().split()
+j = s.index('SolAtVertices'); vals = [float(v) for v in s[j + 4:j + 4 + n]]
+sys.exit(0 if len(vals) == n and max(abs(v - (x + 2 * y + 3 * z)) for v, (x, y, z) in zip(vals, p)) < 1e-9 else 1)
+PY
+
 # --nosurf: the boundary triangles are those of the input.
 "$R" adapt "$C" -hsiz 0.2 -nosurf -o "$TMP/n.mesh" -q && ok adapt3d-nosurf || ko adapt3d-nosurf
 [ "$(ntri "$TMP/n.mesh")" = "$(ntri "$C")" ] && ok nosurf-keeps-surface || ko "nosurf-keeps-surface: $(ntri "$TMP/n.mesh") vs $(ntri "$C")"
