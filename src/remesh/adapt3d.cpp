@@ -359,8 +359,12 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
       if (options.swap) st.swaps += swap_sweep(m, st);
       if (options.move) st.moves += smooth_sweep(ctx, st);
     }
-    if (options.insert) st.collapses += bad_tet_sweep(m, st) + short_edge_sweep(m, st);
-    if (options.swap) st.swaps += swap_sweep(m, st);
+    // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
+    if (options.insert) st.collapses += short_edge_sweep(m, st);
+    for (int k = 0; k < 2; ++k) {
+      if (options.insert) st.collapses += bad_tet_sweep(m, st);
+      if (options.swap) st.swaps += swap_sweep(m, st);
+    }
     summarize(m, st);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);
