@@ -1,5 +1,5 @@
-// `riemesh adapt`: remesh to a metric field (2D) or to geometric sizes (surfaces), with
-// MMG-compatible spellings.
+// `riemesh adapt`: remesh to a metric field (planar triangles or tetrahedra) or to geometric sizes
+// (surfaces), with MMG-compatible spellings.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +18,7 @@
 #include "metric/recovery.hpp"
 #include "metric/metric.hpp"
 #include "remesh/adapt2d.hpp"
+#include "remesh/adapt3d.hpp"
 #include "remesh/transfer.hpp"
 
 namespace riemesh::cli {
@@ -28,7 +29,7 @@ struct AdaptArgs {
   std::string field, field_name, norm = "2", recovery = "lsq";
   double hsiz = 0.0, complexity = 0.0, aniso_max = std::numeric_limits<double>::infinity();
   bool optim = false, noinsert = false, noswap = false, nomove = false, nr = false;
-  bool quiet = false, aniso = false;
+  bool quiet = false, aniso = false, nosurf = false;
   int verbosity = 0;
   Adapt2dOptions opt;
 };
@@ -100,9 +101,9 @@ std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
   return implied_metric_of_used(mesh);
 }
 
-void print_pass(const PassStats& s, int verbosity) {
-  std::fprintf(stderr, "pass %2d: %zu vertices %zu triangles, lengths in [1/√2, √2] %.1f%%, q_min %.3f (%.2f s)\n",
-               s.pass, s.vertices, s.triangles, 100.0 * s.len_in, s.q_min, s.seconds);
+void print_pass(const PassStats& s, int verbosity, const char* elements = "triangles") {
+  std::fprintf(stderr, "pass %2d: %zu vertices %zu %s, lengths in [1/√2, √2] %.1f%%, q_min %.3f (%.2f s)\n",
+               s.pass, s.vertices, s.triangles, elements, 100.0 * s.len_in, s.q_min, s.seconds);
   if (verbosity > 0)
     std::fprintf(stderr,
                  "         %ld splits %ld collapses %ld swaps %ld moves %ld refused; length "
@@ -133,6 +134,63 @@ void run_surface(const AdaptArgs& a, const Mesh& mesh) {
   s.options.move = !a.nomove;
   s.quiet = a.quiet || a.verbosity < 0;
   run_adapt_surface(s, mesh);
+}
+
+/// The 3D metric field: --metric (6 tensor coefficients or sizes), --hsiz, or --optim.
+std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
+  const std::size_t nv = mesh.num_vertices();
+  if (!a.field.empty())
+    throw InputError("--field (Hessian metric) is 2D only so far: give --metric, --hsiz or --optim");
+  if (!a.metric.empty()) {
+    for (const Field& f : read_sol(a.metric, mesh)) {
+      std::vector<SymMat3> out(nv);
+      if (f.kind == FieldKind::kSymTensor) {
+        for (std::size_t v = 0; v < nv; ++v) {
+          for (int k = 0; k < 6; ++k) out[v].c[k] = f.values[6 * v + k];
+          require_metric(out[v], a.metric + ": vertex " + std::to_string(v + 1));
+        }
+        return out;
+      }
+      if (f.kind == FieldKind::kScalar) {
+        for (std::size_t v = 0; v < nv; ++v) {
+          const double h = f.values[v];
+          if (!(h > 0.0) || !std::isfinite(h))
+            throw InputError(a.metric + ": size at vertex " + std::to_string(v + 1) +
+                             " is not a positive number");
+          out[v] = isotropic_metric<3>(h);
+        }
+        return out;
+      }
+    }
+    throw InputError(a.metric + ": no scalar or symmetric tensor field in SolAtVertices");
+  }
+  if (a.hsiz > 0.0) return std::vector<SymMat3>(nv, isotropic_metric<3>(a.hsiz));
+  return implied_metric<3>(mesh.coords, mesh.tets);
+}
+
+/// A tetrahedral mesh: adapt3d (planar boundary patches remeshed, curved ones kept).
+void run3d(const AdaptArgs& a, const Mesh& mesh) {
+  const std::vector<SymMat3> metrics = load_metric3(a, mesh);
+  const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
+  Adapt3dOptions opt;
+  static_cast<Adapt2dOptions&>(opt) = a.opt;
+  opt.keep_surface = a.nosurf;
+  const Adapt3dResult r = adapt3d(mesh, metrics, opt, [&](const PassStats& s) {
+    if (!a.quiet) print_pass(s, a.verbosity, "tetrahedra");
+  });
+  if (!a.quiet)
+    for (const std::string& note : r.report.notes)
+      std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
+  if (!r.report.converged && !a.quiet)
+    std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
+                 r.report.passes.size(), r.report.stall_reason.c_str());
+  write_mesh(r.mesh, a.output);
+  if (!a.fields.empty()) write_sol(a.out_fields, transfer_p1(mesh, fields, r.mesh), 3);
+  if (!a.out_metric.empty()) {
+    Field f{"metric", FieldKind::kSymTensor, {}};
+    for (const SymMat3& m : r.metrics) f.values.insert(f.values.end(), m.c, m.c + 6);
+    write_sol(a.out_metric, {f}, 3);
+  }
 }
 
 void run(AdaptArgs& a) {
@@ -167,12 +225,12 @@ void run(AdaptArgs& a) {
   a.opt.interp = parse_interp_scheme(a.interp);
   if (a.optim && a.opt.hgrad > 0.0) a.opt.hgrad = 0.0;  // the implied sizes are kept as they are
   a.opt.validate();
-  if (mesh.dim != 2 || !mesh.tets.empty())
-    throw InputError(a.input + ": only planar (2D) meshes can be adapted so far; surface and "
-                     "volume remeshing are issues #6 and #7");
+  if (a.verbosity < 0) a.quiet = true;  // MMG's -v -1: silent
+  if (mesh.kind() == MeshKind::kVolume) return run3d(a, mesh);
+  if (mesh.dim != 2)
+    throw InputError(a.input + ": only planar, surface and tetrahedral meshes can be adapted");
   const std::vector<SymMat2> metrics = load_metric(a, mesh);
   const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
-  if (a.verbosity < 0) a.quiet = true;  // MMG's -v -1: silent
   const bool progress = !a.quiet;
   const Adapt2dResult r = adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
     if (progress) print_pass(s, a.verbosity);
@@ -197,11 +255,14 @@ void run(AdaptArgs& a) {
 void register_adapt(CLI::App& app) {
   auto a = std::make_shared<AdaptArgs>();
   auto* cmd = app.add_subcommand(
-      "adapt", "Remesh a planar triangle mesh to a metric field (unit mesh in the metric)");
+      "adapt",
+      "Remesh a planar triangle mesh or a tetrahedral volume to a metric field (unit mesh in "
+      "the metric). 3D: planar boundary patches are remeshed with the volume; curved boundary "
+      "surfaces are kept as given (--nosurf semantics) until the surface remesher lands");
   cmd->add_option("input,--in", a->input, "Input mesh (.mesh, .meshb, .msh)")->required();
   cmd->add_option("-o,--output,--out", a->output, "Output mesh (.mesh, .meshb, .msh, .vtu)");
   cmd->add_option("--metric,--met,--sol", a->metric,
-                  "Metric field (.sol/.solb: symmetric tensors m11 m12 m22, or sizes)");
+                  "Metric field (.sol/.solb: symmetric tensors m11 m12 m22 [m13 m23 m33], or sizes)");
   cmd->add_option("--out-metric", a->out_metric, "Write the metric at the output vertices (.sol)");
   cmd->add_option("--field", a->field,
                   "Solution (.sol): adapt to its Lp-optimal Hessian metric of complexity N and "
@@ -226,6 +287,7 @@ void register_adapt(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--nr", a->nr, "No corner detection by angle");
   cmd->add_flag("--aniso", a->aniso, "Surfaces: anisotropic geometric metric (BOOK.md §1)");
+  cmd->add_flag("--nosurf", a->nosurf, "3D: keep the boundary surface untouched");
   cmd->add_flag("--optim", a->optim, "Improve quality at the current sizes (implied metric)");
   cmd->add_flag("--noinsert", a->noinsert, "No vertex insertion or removal");
   cmd->add_flag("--noswap", a->noswap, "No edge swaps");
@@ -240,7 +302,7 @@ void register_adapt(CLI::App& app) {
   cmd->add_flag("--quiet,-q", a->quiet, "No progress lines");
   cmd->footer(
       "MMG spellings are accepted: -in -out -met -sol -hmin -hmax -hsiz -hgrad -hausd -ar -nr "
-      "-noinsert -noswap -nomove -optim -v N.");
+      "-noinsert -noswap -nomove -nosurf -optim -v N.");
   cmd->callback([a] { run(*a); });
 }
 

@@ -7,9 +7,9 @@
 namespace riemesh::cli {
 namespace {
 
-constexpr std::array<std::string_view, 15> kLongWithOneDash = {
-    "-in",    "-out",   "-met",   "-sol",  "-hmin",     "-hmax",   "-hsiz",  "-hgrad",
-    "-hausd", "-ar",    "-nr",    "-optim", "-noinsert", "-noswap", "-nomove"};
+constexpr std::array<std::string_view, 16> kLongWithOneDash = {
+    "-in",    "-out", "-met",   "-sol",      "-hmin",   "-hmax",   "-hsiz",  "-hgrad",
+    "-hausd", "-ar",  "-nr",    "-optim",    "-noinsert", "-noswap", "-nomove", "-nosurf"};
 
 bool is_integer(const std::string& s) {
   if (s.empty()) return false;

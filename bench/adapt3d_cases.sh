@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The 3D adaptation cases of ../shared/PEERS.md (UGAWG cube: linear, polar-1, polar-2) run
+# through the independent harness in ../shared/bench (metric re-evaluated analytically on each
+# new mesh, measured by evaluate.py), with `riemesh adapt` as the remesher. Prints the harness's
+# table of the last pass per case.
+#   bench/adapt3d_cases.sh [PASSES] [CASE ...]      (default: 8 passes, the cases below)
+# Needs build/riemesh (scripts/build.sh) and Debian's python3-numpy and time.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+H=$(cd ../shared/bench && pwd)
+R=$PWD/build/riemesh
+passes=${1:-8}
+shift || true
+cases=("$@")
+[ ${#cases[@]} -gt 0 ] || cases=(linear3d polar1-3d polar2-3d)
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+for c in "${cases[@]}"; do
+  # --hgrad 0: the UGAWG fields are prescribed exactly; gradation would change them.
+  /usr/bin/python3 "$H/iterate.py" "$c" --workdir "$out/$c" --passes "$passes" --label "$c" \
+    --cmd "$R adapt {mesh} --metric {sol} -o {out} -q --hgrad 0" >> "$out/results.jsonl"
+done
+/usr/bin/python3 "$H/summarize.py" "$out/results.jsonl" --last
+[ -z "${KEEP_RESULTS:-}" ] || cp "$out/results.jsonl" "$KEEP_RESULTS"

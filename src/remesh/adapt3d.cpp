@@ -1,0 +1,391 @@
+// The 3D adaptation driver: prepare the metric field, then passes of split, collapse, swap and
+// smoothing sweeps until the edge lengths settle (BOOK.md §7), as adapt2d.
+#include "remesh/adapt3d.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "mesh/adjacency.hpp"
+#include "mesh/hilbert.hpp"
+#include "metric/gradation.hpp"
+#include "metric/metric.hpp"
+#include "remesh/remesh3d_context.hpp"
+
+namespace riemesh {
+namespace {
+
+constexpr double kLongEdge = 1.4142135623730951;   // √2
+constexpr double kShortEdge = 0.7071067811865476;  // 1/√2
+constexpr double kCollapseBelow = 0.9;             // as in 2D
+constexpr int kSplitSweeps = 3;              // per pass, as in 2D (1 or 2: slower to settle)
+constexpr double kSwapBelow = 0.6;                 // swaps are tried around tets worse than this
+constexpr double kSwapMaxLength = 1.5;            // swaps create no edge longer than this
+constexpr double kBad = 0.45;                      // tets below this are removed by collapses
+constexpr double kBadMaxLength = 1.6;               // ... creating edges no longer than this
+constexpr double kVeryShort = 0.55;                // shorter edges go with those limits too
+constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+std::string where(const Vec3& p) {
+  std::string s = "(";
+  s += num(p[0]);
+  s += ", ";
+  s += num(p[1]);
+  s += ", ";
+  s += num(p[2]);
+  s += ")";
+  return s;
+}
+
+/// Validated, clipped to [hmin, hmax] and graded copy of the input metrics.
+std::vector<SymMat3> prepare_metrics(const Mesh& in, const Adjacency& adj,
+                                     std::span<const SymMat3> metrics, const Adapt3dOptions& o,
+                                     Adapt2dReport& report) {
+  if (metrics.size() != in.num_vertices())
+    throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
+                     std::to_string(in.num_vertices()) + " vertices");
+  std::vector<SymMat3> out(metrics.begin(), metrics.end());
+  const double lo = std::isfinite(o.hmax) ? 1.0 / (o.hmax * o.hmax) : 0.0;
+  const double hi = o.hmin > 0.0 ? 1.0 / (o.hmin * o.hmin) : std::numeric_limits<double>::max();
+  std::size_t below_hmin = 0, above_hmax = 0;
+  for (std::size_t v = 0; v < out.size(); ++v) {
+    require_metric(out[v], "vertex " + std::to_string(v + 1));
+    if (lo > 0.0 || hi < std::numeric_limits<double>::max()) {
+      const SymEigen<3> e = eigen(out[v]);
+      below_hmin += e.values[2] > hi ? 1 : 0;
+      above_hmax += e.values[0] < lo ? 1 : 0;
+      out[v] = project_spd(out[v], lo, hi);
+    }
+  }
+  if (below_hmin > 0)
+    report.notes.push_back("the metric asks for sizes below --hmin " + num(o.hmin) + " at " +
+                           std::to_string(below_hmin) + " vertices: clipped to --hmin");
+  if (above_hmax > 0)
+    report.notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
+                           std::to_string(above_hmax) + " vertices");
+  if (o.hgrad > 0.0) {
+    GradationOptions g;
+    g.mode = GradationMode::kGrowthPhysical;
+    g.threshold = o.hgrad;
+    const GradationReport r = gradate<3>(in.coords, adj.edges, std::span<SymMat3>(out), g);
+    report.gradation_before = r.measure_before;
+    report.gradation_after = r.measure_after;
+  }
+  return out;
+}
+
+struct Candidate {
+  double length;
+  Id a, b;
+  Id tet;  // a tet holding the edge when it was listed (a hint: the mesh changes)
+};
+
+struct Edge {
+  Id a, b, tet;
+};
+
+/// The unique live edges (a < b), sorted, each with the first tet holding it. Bucketed by a
+/// (counting sort), then each small bucket sorted by b: linear in the tets.
+std::vector<Edge> all_edges(const TetMesh& m) {
+  std::vector<std::size_t> start(m.vertex_capacity() + 1, 0);
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
+    if (!m.tet_alive(static_cast<Id>(t))) continue;
+    for (const auto& [i, j] : kTetEdge) ++start[std::min(m.tv[4 * t + i], m.tv[4 * t + j]) + 1];
+  }
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
+  std::vector<Edge> e(start.back());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
+    if (!m.tet_alive(static_cast<Id>(t))) continue;
+    for (const auto& [i, j] : kTetEdge) {
+      const Id a = m.tv[4 * t + i], b = m.tv[4 * t + j];
+      e[fill[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), static_cast<Id>(t)};
+    }
+  }
+  std::size_t out = 0;
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+    const auto first = e.begin() + static_cast<std::ptrdiff_t>(start[v]);
+    const auto last = e.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+    std::sort(first, last, [](const Edge& x, const Edge& y) {
+      return x.b != y.b ? x.b < y.b : x.tet < y.tet;
+    });
+    for (auto it = first; it != last; ++it)
+      if (it == first || it->b != (it - 1)->b) e[out++] = *it;
+  }
+  e.resize(out);
+  return e;
+}
+
+template <class Select>
+std::vector<Candidate> candidates(const TetMesh& m, Select select, bool longer_first) {
+  std::vector<Candidate> out;
+  for (const auto& [a, b, t] : all_edges(m)) {
+    const double l = edge_length(m, a, b);
+    if (select(l)) out.push_back({l, a, b, t});
+  }
+  std::sort(out.begin(), out.end(), [longer_first](const Candidate& x, const Candidate& y) {
+    if (x.length != y.length) return longer_first ? x.length > y.length : x.length < y.length;
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+  return out;
+}
+
+long split_sweeps(Remesh3dContext& ctx, PassStats& st) {
+  TetMesh& m = ctx.mesh();
+  long total = 0;
+  for (int sweep = 0; sweep < kSplitSweeps; ++sweep) {
+    long done = 0;
+    for (const Candidate& c : candidates(m, [](double l) { return l > kLongEdge; }, true)) {
+      NewVertex3 nv;
+      if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || !ctx.split_point(c.a, c.b, nv, c.tet)) {
+        ++st.rejected;
+        continue;
+      }
+      Id created = kNoId;
+      if (split_edge(m, c.a, c.b, nv, 0.0, &created, c.tet) == Outcome::kApplied) {
+        ctx.inherit_hint(created);
+        ++done;
+      } else {
+        ++st.rejected;
+      }
+    }
+    total += done;
+    if (done == 0) break;
+  }
+  return total;
+}
+
+long collapse_sweep(Remesh3dContext& ctx, PassStats& st) {
+  TetMesh& m = ctx.mesh();
+  const CollapseLimits limits{0.2, 1.45};
+  long done = 0;
+  for (const Candidate& c : candidates(m, [](double l) { return l < kCollapseBelow; }, false)) {
+    if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
+    if (edge_length(m, c.a, c.b) >= kCollapseBelow) continue;
+    bool applied = false;
+    for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
+      if (collapse_edge(m, from, to, limits) == Outcome::kApplied) {
+        applied = true;
+        break;
+      }
+    if (applied) ++done;
+    else ++st.rejected;
+  }
+  return done;
+}
+
+/// Edge swaps then face swaps around the tets worse than kSwapBelow (sliver removal).
+long swap_sweep(TetMesh& m, PassStats& st) {
+  std::vector<Id> bad;
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t)
+    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kSwapBelow)
+      bad.push_back(static_cast<Id>(t));
+  long done = 0;
+  for (const Id t : bad) {
+    if (!m.tet_alive(t) || tet_quality(m, t) >= kSwapBelow) continue;
+    Id v[4];
+    std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
+    bool applied = false;
+    for (const auto& [i, j] : kTetEdge) {
+      const Outcome o = swap_edge(m, v[i], v[j], 1e-3, kSwapMaxLength, t);
+      if (o == Outcome::kApplied) {
+        applied = true;
+        break;
+      }
+    }
+    for (int i = 0; i < 4 && !applied; ++i) {
+      if (swap_face(m, 4 * t + i, 1e-3, kSwapMaxLength) == Outcome::kApplied) applied = true;
+    }
+    if (applied) ++done;
+    else ++st.rejected;
+  }
+  return done;
+}
+
+/// The tets worse than kBad: each loses its worst edge by a collapse that does not lower the
+/// worst quality of the ball (edges up to kBadMaxLength), its vertices tried in turn.
+long bad_tet_sweep(TetMesh& m, PassStats& st) {
+  std::vector<Id> bad;
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t)
+    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kBad)
+      bad.push_back(static_cast<Id>(t));
+  long done = 0;
+  for (const Id t : bad) {
+    if (!m.tet_alive(t) || tet_quality(m, t) >= kBad) continue;
+    Candidate edges[6];
+    for (int k = 0; k < 6; ++k) {
+      const Id a = m.tv[4 * t + kTetEdge[k][0]], b = m.tv[4 * t + kTetEdge[k][1]];
+      edges[k] = {edge_length(m, a, b), a, b, t};
+    }
+    std::sort(edges, edges + 6, [](const Candidate& x, const Candidate& y) {
+      return x.length != y.length ? x.length < y.length : (x.a != y.a ? x.a < y.a : x.b < y.b);
+    });
+    bool applied = false;
+    for (int k = 0; k < 6 && !applied; ++k)
+      for (const auto& [from, to] : {std::pair{edges[k].a, edges[k].b}, std::pair{edges[k].b, edges[k].a}})
+        if (collapse_edge(m, from, to, {1.0, kBadMaxLength}) == Outcome::kApplied) {
+          applied = true;
+          break;
+        }
+    if (applied) ++done;
+    else ++st.rejected;
+  }
+  return done;
+}
+
+/// Edges shorter than kVeryShort: collapsed with the relaxed limits of the bad tets.
+long short_edge_sweep(TetMesh& m, PassStats& st) {
+  long done = 0;
+  for (const Candidate& c : candidates(m, [](double l) { return l < kVeryShort; }, false)) {
+    if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || edge_length(m, c.a, c.b) >= kVeryShort)
+      continue;
+    bool applied = false;
+    for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
+      if (collapse_edge(m, from, to, {kBad, kBadMaxLength}) == Outcome::kApplied) {
+        applied = true;
+        break;
+      }
+    if (applied) ++done;
+    else ++st.rejected;
+  }
+  return done;
+}
+
+long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
+  TetMesh& m = ctx.mesh();
+  std::vector<std::uint8_t> wanted(m.vertex_capacity(), 0);
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t)
+    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kGoodBall)
+      for (int i = 0; i < 4; ++i) wanted[m.tv[4 * t + i]] = 1;
+  long done = 0;
+  for (std::size_t vi = 0; vi < wanted.size(); ++vi) {
+    const Id v = static_cast<Id>(vi);
+    if (!wanted[vi] || !m.vert_alive(v)) continue;
+    NewVertex3 target;
+    if (!ctx.smoothing_target(v, target)) continue;
+    bool moved = move_vertex(m, v, target.p, target.metric) == Outcome::kApplied;
+    // A refused target: try the way there at half and a quarter.
+    const Vec3 from = m.xyz[v];
+    for (double f = 0.5; !moved && f > 0.2; f *= 0.5) {
+      const Vec3 p = from + f * (target.p - from);
+      moved = move_vertex(m, v, p, ctx.metric_for(p, v)) == Outcome::kApplied;
+    }
+    if (moved) {
+      ctx.inherit_hint(v);
+      ++done;
+    } else {
+      ++st.rejected;
+    }
+  }
+  return done;
+}
+
+void summarize(const TetMesh& m, PassStats& st) {
+  long n = 0, in = 0;
+  double sum = 0, lmin = std::numeric_limits<double>::infinity(), lmax = 0;
+  for (const auto& [a, b, t] : all_edges(m)) {
+    const double l = edge_length(m, a, b);
+    ++n, sum += l, lmin = std::min(lmin, l), lmax = std::max(lmax, l);
+    in += (l >= kShortEdge && l <= kLongEdge) ? 1 : 0;
+  }
+  double qsum = 0, qmin = 1.0;
+  long nt = 0;
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
+    if (!m.tet_alive(static_cast<Id>(t))) continue;
+    const double q = tet_quality(m, static_cast<Id>(t));
+    ++nt, qsum += q, qmin = std::min(qmin, q);
+  }
+  st.vertices = m.num_live_vertices();
+  st.triangles = m.num_live_tets();
+  st.len_min = lmin, st.len_max = lmax, st.len_mean = n ? sum / n : 0.0;
+  st.len_in = n ? static_cast<double>(in) / n : 0.0;
+  st.q_min = qmin, st.q_mean = nt ? qsum / nt : 0.0;
+}
+
+std::string stall_reason(const TetMesh& m) {
+  double worst = 0, lw = 1;
+  Id wa = kNoId, wb = kNoId;
+  for (const auto& [a, b, t] : all_edges(m)) {
+    const double l = edge_length(m, a, b);
+    const double badness = l > 1.0 ? l : 1.0 / l;
+    if (badness > worst) worst = badness, wa = a, wb = b, lw = l;
+  }
+  if (wa == kNoId) return "no edge left";
+  std::string s = lw > 1.0 ? "an edge stays too long" : "an edge stays too short";
+  s += " (metric length " + num(lw) + ") near ";
+  s += where(0.5 * (m.xyz[wa] + m.xyz[wb]));
+  s += ": the operators' checks refuse to change it further";
+  return s;
+}
+
+}  // namespace
+
+Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
+                      const Adapt3dOptions& options, const PassCallback& on_pass) {
+  options.validate();
+  if (input.dim != 3 || input.num_tets() == 0)
+    throw InputError("3D remeshing needs a tetrahedral mesh");
+  Adapt3dResult result;
+  Mesh ordered = input;
+  const Renumbering order = renumber_hilbert(ordered);
+  std::vector<SymMat3> permuted(metrics.begin(), metrics.end());
+  if (metrics.size() == input.num_vertices())
+    for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
+  const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
+  const std::vector<SymMat3> prepared =
+      prepare_metrics(ordered, adjacency, permuted, options, result.report);
+  Remesh3dContext ctx(ordered, prepared, options);
+  TetMesh& m = ctx.mesh();
+  long best_ops = std::numeric_limits<long>::max();
+  int best_pass = 0;
+  double prev_in = 0.0, prev_qmin = 0.0;
+  for (int pass = 1; pass <= options.max_passes; ++pass) {
+    const auto t0 = std::chrono::steady_clock::now();
+    PassStats st;
+    st.pass = pass;
+    if (options.insert) {
+      st.splits = split_sweeps(ctx, st);
+      st.collapses = collapse_sweep(ctx, st);
+    }
+    for (int k = 0; k < 2; ++k) {
+      if (options.swap) st.swaps += swap_sweep(m, st);
+      if (options.move) st.moves += smooth_sweep(ctx, st);
+    }
+    // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
+    if (options.insert) st.collapses += short_edge_sweep(m, st);
+    for (int k = 0; k < 2; ++k) {
+      if (options.insert) st.collapses += bad_tet_sweep(m, st);
+      if (options.swap) st.swaps += swap_sweep(m, st);
+    }
+    summarize(m, st);
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    result.report.passes.push_back(st);
+    if (on_pass) on_pass(st);
+    // Converged when fewer than 2% of the vertices were inserted or removed (0.5% in 2D: in 3D
+    // a few edges cycle between split and collapse), when that count has not reached a new low
+    // for 3 passes, or when a pass changed neither the fraction of edges in band (by 0.1%) nor
+    // the worst quality (by 0.001).
+    const long ops = st.splits + st.collapses;
+    const bool still =
+        pass > 1 && std::abs(st.len_in - prev_in) < 1e-3 && st.q_min < prev_qmin + 1e-3;
+    prev_in = st.len_in, prev_qmin = st.q_min;
+    if (ops <= static_cast<long>(st.vertices / 50) || pass - best_pass >= 3 || still) {
+      result.report.converged = true;
+      break;
+    }
+    if (ops < best_ops) best_ops = ops, best_pass = pass;
+  }
+  if (!result.report.converged) result.report.stall_reason = stall_reason(m);
+  result.mesh = to_mesh(m, ctx.edge_refs(), &result.metrics);
+  return result;
+}
+
+}  // namespace riemesh

@@ -1,0 +1,42 @@
+#pragma once
+// 3D anisotropic remeshing to a metric field (issue #7, first core): a tetrahedral volume and one
+// metric per vertex in, a unit mesh for that field out, boundary refs kept.
+//
+// Method (BOOK.md §1, §3, §7), as adapt2d: metrics clipped to [hmin, hmax] and graded; the input
+// is the background mesh (new vertices take the log-Euclidean interpolation of the INPUT field);
+// passes of edge splits (> √2), collapses (< 0.9), edge and face swaps on bad tets, and
+// smoothing, until the lengths settle.
+//
+// Boundary (until the surface remesher lands): a boundary patch (the listed faces of one ref)
+// that is planar is remeshed with the volume: its edges are split at points of the plane, its
+// vertices collapse and move in the plane, and vertices on the line where two planar patches
+// meet collapse along that line. Corners (three patches or more), vertices tagged corner or
+// required, interfaces and every vertex of a curved patch are kept as given (--nosurf
+// semantics), as is the whole surface with keep_surface.
+#include <span>
+#include <vector>
+
+#include "core/symmat.hpp"
+#include "mesh/mesh.hpp"
+#include "remesh/adapt2d.hpp"
+
+namespace riemesh {
+
+/// The 2D options (hausd and angle unused in 3D so far) plus the surface switch.
+struct Adapt3dOptions : Adapt2dOptions {
+  bool keep_surface = false;  ///< --nosurf: no boundary vertex moves, goes or is added
+};
+
+struct Adapt3dResult {
+  Mesh mesh;                     ///< the adapted mesh (tetrahedra, listed boundary triangles)
+  std::vector<SymMat3> metrics;  ///< the metric at each output vertex
+  Adapt2dReport report;          ///< PassStats::triangles counts tetrahedra
+};
+
+/// Adapts a tetrahedral mesh to the metric field given at its vertices. Throws InputError for a
+/// mesh without tetrahedra, a non-positive tet, or a metric that is not SPD or finite (naming
+/// the vertex). Deterministic.
+Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
+                      const Adapt3dOptions& options, const PassCallback& on_pass = {});
+
+}  // namespace riemesh

@@ -1,0 +1,75 @@
+// Edge collapse: vertex `from` disappears into `to`; the tets of the edge's shell go.
+#include <algorithm>
+
+#include "remesh/ops3d.hpp"
+
+namespace riemesh {
+namespace {
+
+/// The boundary rules: which listed faces hold edge (from, to), against from's kind.
+bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to) {
+  const VertexKind k = m.vkind[from];
+  if (k == VertexKind::kFixed) return false;
+  std::int32_t refs[2];
+  int n = 0;
+  for (const Id t : shell)
+    for (int i = 0; i < 4; ++i) {
+      const Id v = m.tv[4 * t + i], s = 4 * t + i;
+      if (v == from || v == to || !m.fbdy[s]) continue;
+      if (m.tadj[s] != kNoId || n == 2) return false;  // an interface, or not a surface edge
+      refs[n++] = m.fref[s];
+    }
+  if (k == VertexKind::kInterior) return n == 0;
+  if (n != 2) return false;
+  const std::int32_t p0 = m.vplane[2 * from], p1 = m.vplane[2 * from + 1];
+  if (k == VertexKind::kPlanar) return refs[0] == p0 && refs[1] == p0;
+  return (refs[0] == p0 && refs[1] == p1) || (refs[0] == p1 && refs[1] == p0);
+}
+
+}  // namespace
+
+Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) {
+  thread_local std::vector<Id> ball, shell;
+  thread_local std::vector<NewTet> tets;
+  if (m.vkind[from] == VertexKind::kFixed) return Outcome::kRejectedTopology;
+  collect_ball(m, from, ball);
+  shell.clear();
+  for (const Id t : ball)
+    if (tet_index(m, t, to) >= 0) shell.push_back(t);
+  if (shell.empty()) return Outcome::kRejectedTopology;
+  if (!boundary_ok(m, shell, from, to)) return Outcome::kRejectedTopology;
+  // New edge lengths first: the cheapest check and the one that refuses most.
+  for (const Id t : ball)
+    for (int i = 0; i < 4; ++i) {
+      const Id x = m.tv[4 * t + i];
+      if (x != from && x != to && edge_length(m, to, x) > limits.max_length)
+        return Outcome::kRejectedQuality;
+    }
+  tets.clear();
+  double new_worst = 1.0;
+  for (const Id t : ball) {
+    if (tet_index(m, t, to) >= 0) continue;
+    NewTet n{};
+    for (int i = 0; i < 4; ++i) {
+      const Id v = m.tv[4 * t + i];
+      n.v[i] = v == from ? to : v;
+    }
+    n.ref = m.tref[t];
+    const double q = tet_quality(m, n.v);
+    if (!(q > 0.0)) return Outcome::kRejectedGeometry;
+    new_worst = std::min(new_worst, q);
+    tets.push_back(n);
+  }
+  // Below the floor only when the ball was already worse (its worst quality, computed only then).
+  if (new_worst < limits.min_quality) {
+    double old_worst = 1.0;
+    for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));
+    if (new_worst < old_worst) return Outcome::kRejectedQuality;
+  }
+  const Substitution subst[1] = {{to, from}};
+  if (!replace_cavity(m, ball, tets, subst)) return Outcome::kRejectedTopology;
+  m.kill_vertex(from);
+  return Outcome::kApplied;
+}
+
+}  // namespace riemesh

@@ -1,0 +1,83 @@
+#pragma once
+// Local operators of the 3D remesher on a TetMesh (BOOK.md §7): edge split, edge collapse, edge
+// swap (n -> 2n - 4 over the shell), face swap (2 -> 3) and vertex relocation. Each checks its
+// own admissibility and returns an Outcome (ops2d.hpp): a rejection is a normal answer. They
+// never create a tet whose volume is not above kMinRelativeVolume (longest edge)³, and they
+// replace tets only through replace_cavity (conformity checked on the faces).
+#include <cmath>
+
+#include "metric/edge_length.hpp"
+#include "remesh/ops2d.hpp"
+#include "remesh/tet_mesh.hpp"
+
+namespace riemesh {
+
+/// A new tet must have volume > this × (its longest Euclidean edge)³ (a regular tet: 0.118).
+inline constexpr double kMinRelativeVolume = 1e-9;
+
+inline double edge_length(const TetMesh& m, Id a, Id b) {
+  return edge_length_geometric(m.metric[a], m.metric[b], m.xyz[b] - m.xyz[a]);
+}
+
+/// Mean-ratio quality 12 (3 |K|_M)^{2/3} / Σ l_M² of tet (p0..p3) in the metric mm (1 for the
+/// unit regular tet); <= 0 when the tet is not above the relative volume threshold.
+inline double quality_in(const SymMat3& mm, const Vec3& p0, const Vec3& p1, const Vec3& p2,
+                         const Vec3& p3) {
+  const Vec3 e[6] = {p1 - p0, p2 - p0, p3 - p0, p2 - p1, p3 - p1, p3 - p2};
+  double l2 = 0.0, longest = 0.0;
+  for (const Vec3& x : e) l2 += quadratic(mm, x), longest = std::max(longest, dot(x, x));
+  const double vol = tet_volume(p0, p1, p2, p3);
+  if (!(vol > kMinRelativeVolume * longest * std::sqrt(longest))) return std::min(vol, 0.0);
+  const double c = std::cbrt(3.0 * std::sqrt(det(mm)) * vol);
+  return 12.0 * c * c / l2;
+}
+
+/// Quality of tet (a, b, c, d) in the mean of its vertex metrics (a cheap stand-in for the
+/// log-Euclidean mean, used consistently for every decision).
+inline double tet_quality(const TetMesh& m, Id a, Id b, Id c, Id d) {
+  const SymMat3 mm = 0.25 * (m.metric[a] + m.metric[b] + m.metric[c] + m.metric[d]);
+  return quality_in(mm, m.xyz[a], m.xyz[b], m.xyz[c], m.xyz[d]);
+}
+inline double tet_quality(const TetMesh& m, const Id* v) {
+  return tet_quality(m, v[0], v[1], v[2], v[3]);
+}
+inline double tet_quality(const TetMesh& m, Id t) { return tet_quality(m, &m.tv[4 * t]); }
+
+/// A vertex to insert: position, metric, kind and planes.
+struct NewVertex3 {
+  Vec3 p;
+  SymMat3 metric;
+  VertexKind kind = VertexKind::kInterior;
+  std::int32_t plane[2] = {0, 0};
+};
+
+/// Splits edge (a, b) at nv: every tet of its shell is cut in two. Rejected (geometry) when a
+/// new tet would be flat or inverted, (quality) when one would be below min_quality. Listed
+/// faces on the edge are split with their refs. *created receives the new vertex. `hint`: a
+/// tet that may hold the edge (saves the search).
+Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_quality,
+                   Id* created, Id hint = kNoId);
+
+/// Removes `from` by merging it into `to` (they must be joined). Rejected by the boundary rules
+/// (a fixed vertex never goes; a planar vertex only along an edge inside its plane; a ridge
+/// vertex only along its ridge), when a new edge would be longer than limits.max_length, when a
+/// new tet would be flat, or below min(limits.min_quality, the ball's worst quality), or when
+/// the result would not be a manifold (the face matching of replace_cavity).
+Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits);
+
+/// Replaces the shell of the interior edge (a, b) (3 to 7 tets, no listed face on it) by the
+/// best triangulation of its ring (2n − 4 tets) when that raises the shell's worst quality by
+/// more than min_gain; no new edge longer than max_length in the metric.
+Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length, Id hint = kNoId);
+
+/// Replaces the two tets on the unlisted interior face at `slot` by three tets around the edge
+/// joining their apexes, when that raises the worst quality by more than min_gain and that edge
+/// is not longer than max_length in the metric.
+Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length);
+
+/// Moves v to p (with its new metric) when every tet of its ball stays valid and the ball's
+/// worst quality improves. Fixed vertices never move; keeping a boundary vertex on its plane or
+/// ridge line is the caller's job (p is taken as given).
+Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric);
+
+}  // namespace riemesh

@@ -1,0 +1,205 @@
+#include "remesh/remesh3d_context.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesh/adjacency.hpp"
+
+namespace riemesh {
+namespace {
+
+std::vector<double> flatten(std::span<const SymMat3> metrics) {
+  std::vector<double> out;
+  out.reserve(6 * metrics.size());
+  for (const SymMat3& m : metrics) out.insert(out.end(), m.c, m.c + 6);
+  return out;
+}
+
+/// Fraction t of the way from a to b where half the metric length lies on each side, for sizes
+/// varying geometrically along the edge (as in 2D).
+double metric_midpoint(double la, double lb) {
+  const double q = lb / la;
+  if (std::abs(q - 1.0) < 1e-9) return 0.5;
+  return std::log(0.5 * (q + 1.0)) / std::log(q);
+}
+
+/// The refs of the listed faces holding edge (a, b) of the shell; false for an interface face
+/// or more than two of them.
+bool edge_face_refs(const TetMesh& m, const std::vector<Id>& shell, Id a, Id b,
+                    std::int32_t* refs, int& n) {
+  n = 0;
+  for (const Id t : shell)
+    for (int i = 0; i < 4; ++i) {
+      const Id v = m.tv[4 * t + i], s = 4 * t + i;
+      if (v == a || v == b || !m.fbdy[s]) continue;
+      if (m.tadj[s] != kNoId || n == 2) return false;
+      refs[n++] = m.fref[s];
+    }
+  return true;
+}
+
+}  // namespace
+
+Remesh3dContext::Remesh3dContext(const Mesh& input, std::span<const SymMat3> metrics,
+                                 const Adapt3dOptions& options)
+    : options_(options),
+      background_(input, flatten(metrics), options.interp),
+      mesh_(build_tet_mesh(input, metrics)) {
+  find_planes();
+  classify_vertices();
+  hint_.assign(mesh_.vertex_capacity(), kNoId);
+  for (std::size_t v = 0; v < hint_.size(); ++v) hint_[v] = mesh_.vtet[v];
+  std::vector<Id> shell;
+  for (std::size_t e = 0; e < input.num_edges(); ++e) {
+    const Id a = input.edges[2 * e], b = input.edges[2 * e + 1];
+    if (!mesh_.vert_alive(a) || !mesh_.vert_alive(b)) continue;
+    collect_shell(mesh_, a, b, shell);
+    std::int32_t refs[2];
+    int n = 0;
+    if (!edge_face_refs(mesh_, shell, a, b, refs, n) || n != 2 || refs[0] == refs[1]) continue;
+    edge_refs_.insert(edge_refs_.end(), {std::min(refs[0], refs[1]), std::max(refs[0], refs[1]),
+                                         input.edge_ref.empty() ? 0 : input.edge_ref[e]});
+  }
+}
+
+void Remesh3dContext::find_planes() {
+  const TetMesh& m = mesh_;
+  Vec3 lo = m.xyz.empty() ? Vec3{} : m.xyz[0], hi = lo;
+  for (const Vec3& p : m.xyz)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double tol = 1e-10 * norm(hi - lo);
+  for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
+    const Id t = static_cast<Id>(s / 4);
+    if (!m.fbdy[s] || !m.tet_alive(t)) continue;
+    const int i = static_cast<int>(s % 4);
+    const Vec3& a = m.xyz[m.tv[4 * t + kTetFace[i][0]]];
+    const Vec3& b = m.xyz[m.tv[4 * t + kTetFace[i][1]]];
+    const Vec3& c = m.xyz[m.tv[4 * t + kTetFace[i][2]]];
+    const Vec3 n = normalize(cross(b - a, c - a));
+    auto [it, fresh] = planes_.try_emplace(m.fref[s]);
+    Plane& pl = it->second;
+    if (fresh) pl.n = n, pl.d = dot(n, a);
+    if (m.tadj[s] != kNoId || dot(n, pl.n) < 1.0 - 1e-9) pl.planar = false;
+    for (const Vec3* p : {&a, &b, &c})
+      if (std::abs(dot(pl.n, *p) - pl.d) > tol) pl.planar = false;
+  }
+}
+
+const Remesh3dContext::Plane* Remesh3dContext::plane(std::int32_t ref) const {
+  const auto it = planes_.find(ref);
+  return it != planes_.end() && it->second.planar ? &it->second : nullptr;
+}
+
+void Remesh3dContext::classify_vertices() {
+  TetMesh& m = mesh_;
+  const std::size_t nv = m.vertex_capacity();
+  std::vector<std::int32_t> refs(3 * nv, 0);
+  std::vector<int> count(nv, 0);
+  std::vector<bool> fixed(nv, false);
+  for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
+    const Id t = static_cast<Id>(s / 4);
+    if (!m.fbdy[s] || !m.tet_alive(t)) continue;
+    const int i = static_cast<int>(s % 4);
+    for (int k = 0; k < 3; ++k) {
+      const Id v = m.tv[4 * t + kTetFace[i][k]];
+      if (m.tadj[s] != kNoId || !plane(m.fref[s]) || options_.keep_surface) fixed[v] = true;
+      int& c = count[v];
+      if (std::find(&refs[3 * v], &refs[3 * v] + std::min(c, 3), m.fref[s]) != &refs[3 * v] + std::min(c, 3))
+        continue;
+      if (c < 3) refs[3 * v + c] = m.fref[s];
+      ++c;
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v) {
+    VertexKind k = VertexKind::kFixed;
+    if ((m.vtag[v] & (kTagCorner | kTagRequired)) || fixed[v] || count[v] > 2) {
+      k = VertexKind::kFixed;
+    } else if (count[v] == 0) {
+      k = VertexKind::kInterior;
+    } else if (count[v] == 1) {
+      k = VertexKind::kPlanar;
+      m.vplane[2 * v] = m.vplane[2 * v + 1] = refs[3 * v];
+    } else {
+      const std::int32_t r1 = std::min(refs[3 * v], refs[3 * v + 1]);
+      const std::int32_t r2 = std::max(refs[3 * v], refs[3 * v + 1]);
+      if (std::abs(dot(plane(r1)->n, plane(r2)->n)) < 1.0 - 1e-6) {
+        k = VertexKind::kRidge;
+        m.vplane[2 * v] = r1, m.vplane[2 * v + 1] = r2;
+      }
+    }
+    m.vkind[v] = k;
+  }
+}
+
+bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
+  thread_local std::vector<Id> shell;
+  collect_shell(mesh_, a, b, shell, hint);
+  std::int32_t refs[2];
+  int n = 0;
+  if (shell.empty() || !edge_face_refs(mesh_, shell, a, b, refs, n)) return false;
+  out.kind = VertexKind::kInterior;
+  out.plane[0] = out.plane[1] = 0;
+  if (n == 1) return false;
+  if (n == 2) {
+    if (options_.keep_surface || !plane(refs[0]) || !plane(refs[1])) return false;
+    if (refs[0] == refs[1]) {
+      out.kind = VertexKind::kPlanar;
+      out.plane[0] = out.plane[1] = refs[0];
+    } else {
+      if (std::abs(dot(plane(refs[0])->n, plane(refs[1])->n)) >= 1.0 - 1e-6) return false;
+      out.kind = VertexKind::kRidge;
+      out.plane[0] = std::min(refs[0], refs[1]), out.plane[1] = std::max(refs[0], refs[1]);
+    }
+  }
+  const Vec3 ab = mesh_.xyz[b] - mesh_.xyz[a];
+  const double t = metric_midpoint(length(mesh_.metric[a], ab), length(mesh_.metric[b], ab));
+  out.p = mesh_.xyz[a] + t * ab;
+  out.metric = metric_for(out.p, a);
+  return true;
+}
+
+SymMat3 Remesh3dContext::metric_for(const Vec3& p, Id hint_vertex) const {
+  const Id hint = static_cast<std::size_t>(hint_vertex) < hint_.size() ? hint_[hint_vertex] : kNoId;
+  return background_.metric_at(p, hint, &last_found_);
+}
+
+void Remesh3dContext::inherit_hint(Id v) {
+  if (static_cast<std::size_t>(v) >= hint_.size()) hint_.resize(v + 1, kNoId);
+  hint_[v] = last_found_;
+}
+
+bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out) const {
+  const VertexKind k = mesh_.vkind[v];
+  if (k == VertexKind::kFixed) return false;
+  thread_local std::vector<Id> ball, nbrs;
+  collect_ball(mesh_, v, ball);
+  nbrs.clear();
+  for (const Id t : ball)
+    for (int i = 0; i < 4; ++i)
+      if (mesh_.tv[4 * t + i] != v) nbrs.push_back(mesh_.tv[4 * t + i]);
+  std::sort(nbrs.begin(), nbrs.end());
+  nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
+  const Vec3& p = mesh_.xyz[v];
+  Vec3 sum{};
+  double wsum = 0.0;
+  for (const Id x : nbrs) {
+    const double l = edge_length(mesh_, x, v);
+    if (!(l > 0.0)) return false;
+    sum = sum + (mesh_.xyz[x] + (1.0 / l) * (p - mesh_.xyz[x]));
+    wsum += 1.0;
+  }
+  if (wsum == 0.0) return false;
+  out.p = (1.0 / wsum) * sum;
+  if (k == VertexKind::kPlanar) {
+    const Plane* pl = plane(mesh_.vplane[2 * v]);
+    out.p = out.p - (dot(pl->n, out.p) - pl->d) * pl->n;
+  } else if (k == VertexKind::kRidge) {  // onto the line through p where the two planes meet
+    const Vec3 d = normalize(cross(plane(mesh_.vplane[2 * v])->n, plane(mesh_.vplane[2 * v + 1])->n));
+    out.p = p + dot(out.p - p, d) * d;
+  }
+  out.kind = k;
+  out.metric = metric_for(out.p, v);
+  return true;
+}
+
+}  // namespace riemesh

@@ -1,0 +1,59 @@
+#pragma once
+// The state of one 3D adaptation (internal to remesh/): the mesh being changed, the background
+// mesh with the input metric field, the planes of the planar boundary patches, and the rules
+// that place new and moved vertices and give them their metric.
+#include <map>
+#include <vector>
+
+#include "remesh/adapt3d.hpp"
+#include "remesh/background.hpp"
+#include "remesh/ops3d.hpp"
+
+namespace riemesh {
+
+class Remesh3dContext {
+ public:
+  /// Takes the (clipped, graded) input metrics; the mesh's vertex ids become TetMesh ids.
+  Remesh3dContext(const Mesh& input, std::span<const SymMat3> metrics,
+                  const Adapt3dOptions& options);
+
+  TetMesh& mesh() { return mesh_; }
+  const TetMesh& mesh() const { return mesh_; }
+  /// (ref1, ref2, edge ref) triples of the input's ridge Edges, for to_mesh.
+  const std::vector<std::int32_t>& edge_refs() const { return edge_refs_; }
+
+  /// The vertex to insert on edge (a, b) (its metric midpoint) and its kind; false when the
+  /// boundary rules forbid splitting the edge. `hint`: a tet that may hold the edge.
+  bool split_point(Id a, Id b, NewVertex3& out, Id hint = kNoId) const;
+
+  /// The metric at p from the background field, the walk starting near hint_vertex.
+  SymMat3 metric_for(const Vec3& p, Id hint_vertex) const;
+
+  /// Where smoothing would put v: the mean of the unit-length points seen from its neighbours,
+  /// projected on its plane for a planar boundary vertex, on its line for a ridge vertex.
+  /// False when v may not move.
+  bool smoothing_target(Id v, NewVertex3& out) const;
+
+  /// Records, for vertex v just created or moved, the background tet of the last metric_for.
+  void inherit_hint(Id v);
+
+ private:
+  struct Plane {
+    Vec3 n{};
+    double d = 0.0;
+    bool planar = true;
+  };
+  void find_planes();
+  void classify_vertices();
+  const Plane* plane(std::int32_t ref) const;
+
+  Adapt3dOptions options_;
+  BackgroundMesh<3> background_;
+  TetMesh mesh_;
+  std::map<std::int32_t, Plane> planes_;
+  std::vector<std::int32_t> edge_refs_;
+  std::vector<Id> hint_;
+  mutable Id last_found_ = kNoId;
+};
+
+}  // namespace riemesh

@@ -1,0 +1,43 @@
+// Edge split: a vertex on edge (a, b) cuts every tet of the shell in two.
+#include "remesh/ops3d.hpp"
+
+namespace riemesh {
+
+Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_quality,
+                   Id* created, Id hint) {
+  thread_local std::vector<Id> shell;
+  thread_local std::vector<NewTet> tets;
+  collect_shell(m, a, b, shell, hint);
+  if (shell.empty()) return Outcome::kRejectedTopology;
+  // Geometry first, on the positions (the vertex is created only when the split goes ahead).
+  const Id x = m.add_vertex(nv.p, nv.metric);
+  tets.clear();
+  for (const Id t : shell) {
+    NewTet lo{}, hi{};
+    for (int i = 0; i < 4; ++i) {
+      const Id v = m.tv[4 * t + i];
+      lo.v[i] = v == b ? x : v;
+      hi.v[i] = v == a ? x : v;
+    }
+    lo.ref = hi.ref = m.tref[t];
+    for (const NewTet& n : {lo, hi}) {
+      const double q = tet_quality(m, n.v);
+      if (!(q > 0.0) || q < min_quality) {
+        m.kill_vertex(x);
+        return q > 0.0 ? Outcome::kRejectedQuality : Outcome::kRejectedGeometry;
+      }
+    }
+    tets.push_back(lo), tets.push_back(hi);
+  }
+  const Substitution subst[2] = {{x, a}, {x, b}};
+  if (!replace_cavity(m, shell, tets, subst)) {
+    m.kill_vertex(x);
+    return Outcome::kRejectedTopology;
+  }
+  m.vkind[x] = nv.kind;
+  m.vplane[2 * x] = nv.plane[0], m.vplane[2 * x + 1] = nv.plane[1];
+  if (created) *created = x;
+  return Outcome::kApplied;
+}
+
+}  // namespace riemesh

@@ -1,0 +1,132 @@
+#pragma once
+// The mutable tetrahedral mesh the 3D remesher works on: flat arrays with free lists, the
+// neighbour across each face, and the listed boundary faces (Mesh::triangles) kept as refs on
+// tetrahedron faces.
+//
+// Conventions (as in mesh/adjacency.hpp): tet t has vertices tv[4t..4t+3] with positive volume;
+// its face i is opposite vertex i, oriented outward as kTetFace[i]. A face slot is 4t + i.
+// tadj[4t + i] is the slot of the same face seen from the neighbour, or kNoId on the domain
+// boundary. fbdy[slot] != 0 marks a listed face (every domain-boundary face is listed; unlisted
+// input boundary faces get ref 0) and fref[slot] is its ref. Dead tets have tv[4t] == kNoId,
+// dead vertices vtet == kNoId.
+//
+// Every change of the tets goes through replace_cavity(): a set of tets is replaced by new ones
+// that must fill exactly the same region (checked on the faces), which is how the operators
+// stay conforming.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/symmat.hpp"
+#include "core/vec.hpp"
+#include "mesh/mesh.hpp"
+
+namespace riemesh {
+
+/// What the boundary rules allow a vertex to do (BOOK.md §7, boundary operators).
+enum class VertexKind : std::uint8_t {
+  kInterior,  ///< in no listed face: moves and goes freely
+  kPlanar,    ///< on one planar boundary patch (plane ref vplane[2v]): moves in it
+  kRidge,     ///< on the line where two planar patches meet (refs vplane[2v], vplane[2v+1])
+  kFixed,     ///< corner, required, on a curved patch or an interface: never moves nor goes
+};
+
+struct TetMesh {
+  // Vertices.
+  std::vector<Vec3> xyz;
+  std::vector<SymMat3> metric;
+  std::vector<std::int32_t> vref;
+  std::vector<std::uint8_t> vtag;
+  std::vector<VertexKind> vkind;
+  std::vector<std::int32_t> vplane;  // 2 per vertex: the boundary refs of a planar/ridge vertex
+  std::vector<Id> vtet;              // one live tet around the vertex; kNoId when dead
+
+  // Tetrahedra.
+  std::vector<Id> tv;    // 4 per tet
+  std::vector<Id> tadj;  // 4 per tet: slot of the neighbour's copy of the face, or kNoId
+  std::vector<std::int32_t> tref;
+  std::vector<std::int32_t> fref;  // 4 per tet: ref of a listed face
+  std::vector<std::uint8_t> fbdy;  // 4 per tet: 1 for a listed face
+
+  std::vector<Id> free_tets, free_verts;
+
+  // Scratch marks for ball and shell walks (stamp per tet); not part of the mesh's state.
+  mutable std::vector<std::uint32_t> mark;
+  mutable std::uint32_t stamp = 0;
+
+  std::size_t vertex_capacity() const { return xyz.size(); }
+  std::size_t tet_capacity() const { return tref.size(); }
+  bool tet_alive(Id t) const { return tv[4 * t] != kNoId; }
+  bool vert_alive(Id v) const { return vtet[v] != kNoId; }
+  std::size_t num_live_tets() const { return tet_capacity() - free_tets.size(); }
+  std::size_t num_live_vertices() const { return vertex_capacity() - free_verts.size(); }
+
+  Id add_vertex(const Vec3& p, const SymMat3& m);
+  void kill_vertex(Id v);
+};
+
+/// Signed volume of tet (a, b, c, d): positive when positively oriented.
+inline double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return dot(b - a, cross(c - a, d - a)) / 6.0;
+}
+
+/// Local index of v in tet t (0..3), or -1.
+inline int tet_index(const TetMesh& m, Id t, Id v) {
+  for (int i = 0; i < 4; ++i)
+    if (m.tv[4 * t + i] == v) return i;
+  return -1;
+}
+
+/// The tets around vertex v (walk through the faces that hold v), in walk order.
+void collect_ball(const TetMesh& m, Id v, std::vector<Id>& out);
+
+/// A tet holding edge (a, b), searched in a's ball (stopping at the first), or kNoId when a
+/// and b are not joined.
+Id find_edge_tet(const TetMesh& m, Id a, Id b);
+
+/// The tets around edge (a, b), turning around it from `hint` when that tet holds the edge
+/// (else from find_edge_tet); empty when a and b are not joined.
+void collect_shell(const TetMesh& m, Id a, Id b, std::vector<Id>& out, Id hint = kNoId);
+
+/// A tet to create in replace_cavity.
+struct NewTet {
+  Id v[4];
+  std::int32_t ref;
+};
+
+/// "New vertex x stands for old vertex y" on the cavity's boundary faces: a new face that is
+/// an old boundary face with y replaced by x inherits that face's ref (a split boundary face,
+/// or a boundary face dragged by a collapse). An old boundary face holding both x and y
+/// vanishes (a collapsed boundary edge).
+struct Substitution {
+  Id x, y;
+};
+
+/// Replaces the tets `cavity` by `tets` when the new tets fill exactly the cavity: each new
+/// face is shared by two new tets with opposite orientations, or is a face of the cavity's
+/// boundary (directly, or through a substitution for listed domain-boundary faces), and every
+/// boundary face of the cavity is covered. Geometry is the caller's job (it checks volumes).
+/// Returns false, changing nothing, when the faces do not match. On success `created` (when
+/// given) receives the new tet ids and vtet of their vertices is updated.
+bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewTet> tets,
+                    std::span<const Substitution> subst, std::vector<Id>* created = nullptr);
+
+/// Structural and geometric invariants (tests, debugging): symmetric adjacency with opposite
+/// orientations, boundary faces listed, listed data equal on both sides, live vertex
+/// back-pointers, positive volumes. Empty when all hold, otherwise the first violation.
+std::string check_tet_mesh(const TetMesh& m);
+
+/// Builds the TetMesh of a volume mesh: its tetrahedra (positively oriented, else InputError),
+/// their neighbours, the listed faces from mesh.triangles (refs), vertex refs and tags; vertex
+/// kinds all kFixed until the caller classifies them. `metrics` gives one metric per vertex.
+TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics);
+
+/// Back to a compacted Mesh: live vertices in id order, tets, the listed faces as triangles
+/// with their refs, and ridge Edges (boundary edges between listed faces of different refs;
+/// ref from `edge_refs`, pairs (ref1, ref2, edge ref) with ref1 < ref2, else 0). `metrics`,
+/// when given, receives the metric of each output vertex.
+Mesh to_mesh(const TetMesh& m, std::span<const std::int32_t> edge_refs,
+             std::vector<SymMat3>* metrics = nullptr);
+
+}  // namespace riemesh

@@ -1,0 +1,129 @@
+// Mesh <-> TetMesh: neighbours and listed faces in, compacted arrays and ridge edges out.
+#include <algorithm>
+#include <array>
+#include <map>
+
+#include "core/error.hpp"
+#include "mesh/adjacency.hpp"
+#include "remesh/tet_mesh.hpp"
+
+namespace riemesh {
+namespace {
+
+std::array<Id, 3> sorted3(Id a, Id b, Id c) {
+  std::array<Id, 3> k{a, b, c};
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+}  // namespace
+
+TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
+  if (mesh.dim != 3 || mesh.tets.empty()) throw InputError("3D remeshing needs a tetrahedral mesh");
+  const std::size_t nv = mesh.num_vertices(), nt = mesh.num_tets();
+  if (metrics.size() != nv)
+    throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
+                     std::to_string(nv) + " vertices");
+  TetMesh m;
+  m.xyz.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+    m.xyz[v] = Vec3{{mesh.coords[3 * v], mesh.coords[3 * v + 1], mesh.coords[3 * v + 2]}};
+  m.metric.assign(metrics.begin(), metrics.end());
+  m.vref = mesh.vert_ref;
+  m.vref.resize(nv, 0);
+  m.vtag = mesh.vert_tag;
+  m.vtag.resize(nv, kTagNone);
+  m.vkind.assign(nv, VertexKind::kFixed);
+  m.vplane.assign(2 * nv, 0);
+  m.vtet.assign(nv, kNoId);
+  const Adjacency adj = build_adjacency(mesh.tets, 4, nv);
+  if (!adj.nonmanifold_faces.empty()) throw InputError("the tetrahedra share a face three times");
+  m.tv = mesh.tets;
+  m.tref = mesh.tet_ref;
+  m.tref.resize(nt, 0);
+  m.tadj.assign(4 * nt, kNoId);
+  m.fref.assign(4 * nt, 0);
+  m.fbdy.assign(4 * nt, 0);
+  std::map<std::array<Id, 3>, std::size_t> listed;
+  for (std::size_t f = 0; f < mesh.num_triangles(); ++f)
+    listed.emplace(sorted3(mesh.triangles[3 * f], mesh.triangles[3 * f + 1],
+                           mesh.triangles[3 * f + 2]), f);
+  for (std::size_t t = 0; t < nt; ++t) {
+    const Id* v = &mesh.tets[4 * t];
+    if (!(tet_volume(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]], m.xyz[v[3]]) > 0.0))
+      throw InputError("tetrahedron " + std::to_string(t + 1) +
+                       " has a negative or zero volume (3D remeshing needs positive tets)");
+    for (int i = 0; i < 4; ++i) {
+      m.vtet[v[i]] = static_cast<Id>(t);
+      const Id n = adj.elem2elem[4 * t + i];
+      if (n != kNoId) {
+        const Id* w = &mesh.tets[4 * n];
+        int j = 0;
+        while (j < 4 && std::find(v, v + 4, w[j]) != v + 4) ++j;  // n's vertex not in t
+        m.tadj[4 * t + i] = 4 * n + j;
+      }
+      const auto it = listed.find(sorted3(v[kTetFace[i][0]], v[kTetFace[i][1]], v[kTetFace[i][2]]));
+      if (it != listed.end()) {
+        m.fbdy[4 * t + i] = 1;
+        m.fref[4 * t + i] = mesh.tri_ref.empty() ? 0 : mesh.tri_ref[it->second];
+      } else if (n == kNoId) {
+        m.fbdy[4 * t + i] = 1;  // an unlisted boundary face: ref 0
+      }
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (m.vtet[v] == kNoId) m.free_verts.push_back(static_cast<Id>(v));  // in no tet: dropped
+  std::reverse(m.free_verts.begin(), m.free_verts.end());
+  return m;
+}
+
+Mesh to_mesh(const TetMesh& m, std::span<const std::int32_t> edge_refs,
+             std::vector<SymMat3>* metrics) {
+  Mesh out;
+  out.dim = 3;
+  std::vector<Id> id(m.vertex_capacity(), kNoId);
+  for (std::size_t v = 0; v < m.vertex_capacity(); ++v) {
+    if (!m.vert_alive(static_cast<Id>(v))) continue;
+    id[v] = static_cast<Id>(out.vert_ref.size());
+    out.coords.insert(out.coords.end(), {m.xyz[v][0], m.xyz[v][1], m.xyz[v][2]});
+    out.vert_ref.push_back(m.vref[v]);
+    std::uint8_t tag = m.vtag[v];
+    if (m.vkind[v] == VertexKind::kRidge) tag |= kTagRidge;
+    out.vert_tag.push_back(tag);
+    if (metrics) metrics->push_back(m.metric[v]);
+  }
+  // Boundary edges between listed faces of different refs, with the refs on each side.
+  std::map<std::pair<Id, Id>, std::vector<std::int32_t>> edge_faces;
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
+    if (!m.tet_alive(static_cast<Id>(t))) continue;
+    const Id* v = &m.tv[4 * t];
+    out.tets.insert(out.tets.end(), {id[v[0]], id[v[1]], id[v[2]], id[v[3]]});
+    out.tet_ref.push_back(m.tref[t]);
+    for (int i = 0; i < 4; ++i) {
+      const std::size_t s = 4 * t + i;
+      if (!m.fbdy[s]) continue;
+      const Id r = m.tadj[s];
+      if (r != kNoId && r < static_cast<Id>(s)) continue;  // interface: once
+      const Id a = v[kTetFace[i][0]], b = v[kTetFace[i][1]], c = v[kTetFace[i][2]];
+      out.triangles.insert(out.triangles.end(), {id[a], id[b], id[c]});
+      out.tri_ref.push_back(m.fref[s]);
+      out.tri_tag.push_back(kTagNone);
+      if (r != kNoId) continue;
+      for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}})
+        edge_faces[{std::min(id[p], id[q]), std::max(id[p], id[q])}].push_back(m.fref[s]);
+    }
+  }
+  for (const auto& [e, refs] : edge_faces) {
+    if (refs.size() != 2 || refs[0] == refs[1]) continue;
+    const std::int32_t r1 = std::min(refs[0], refs[1]), r2 = std::max(refs[0], refs[1]);
+    std::int32_t ref = 0;
+    for (std::size_t k = 0; k + 2 < edge_refs.size(); k += 3)
+      if (edge_refs[k] == r1 && edge_refs[k + 1] == r2) ref = edge_refs[k + 2];
+    out.edges.insert(out.edges.end(), {e.first, e.second});
+    out.edge_ref.push_back(ref);
+    out.edge_tag.push_back(kTagRidge);
+  }
+  return out;
+}
+
+}  // namespace riemesh

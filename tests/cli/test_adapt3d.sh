@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# riemesh adapt on tetrahedral meshes: the unit cube of the benchmark harness with --hsiz, a size
+# .sol and a tensor .sol (MMG spellings too); the output is valid (riemesh check) and keeps the
+# 6 boundary refs; --nosurf keeps the surface; bad inputs exit 2 with one line and no output.
+set -u
+source "$(dirname "$0")/cli_lib.sh"
+B=$SHARED/bench
+/usr/bin/python3 "$B/cases.py" init linear3d -o "$TMP/cube" >/dev/null 2>&1 || { echo "no harness"; exit 77; }
+C=$TMP/cube.mesh
+
+tri_refs() {
+  "$R" stats "$1" --json | /usr/bin/python3 -c \
+    'import json,sys; j=json.load(sys.stdin); print(sorted(int(k) for k in j["refs"]["triangles"]))' 2>/dev/null
+}
+ntri() {
+  "$R" stats "$1" --json | /usr/bin/python3 -c \
+    'import json,sys; j=json.load(sys.stdin); print(j["counts"]["triangles"])' 2>/dev/null
+}
+
+"$R" adapt "$C" --hsiz 0.2 -o "$TMP/h.mesh" -q && ok adapt3d-hsiz || ko adapt3d-hsiz
+"$R" check "$TMP/h.mesh" >/dev/null && ok hsiz-valid || ko hsiz-valid
+[ "$(tri_refs "$TMP/h.mesh")" = "[1, 2, 3, 4, 5, 6]" ] && ok hsiz-refs || ko "hsiz-refs: $(tri_refs "$TMP/h.mesh")"
+
+# MMG spellings, the anisotropic tensor metric of the harness (coarsened by -hmin), -v 1 statistics.
+"$R" adapt -in "$C" -met "$TMP/cube.sol" -hmin 0.02 -hgrad 0 -out "$TMP/m.mesh" -v 1 \
+  --out-metric "$TMP/m.sol" 2>"$TMP/log" && ok adapt3d-mmg-spellings || ko adapt3d-mmg-spellings
+grep -q "tetrahedra" "$TMP/log" && grep -q "splits" "$TMP/log" && ok verbose-stats || ko verbose-stats
+"$R" check "$TMP/m.mesh" >/dev/null && ok metric-valid || ko metric-valid
+[ -s "$TMP/m.sol" ] && ok out-metric || ko out-metric
+
+# Sizes per vertex in a scalar .sol.
+/usr/bin/python3 - "$C" "$TMP/s.sol" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+n = int(toks[toks.index('Vertices') + 1])
+open(sys.argv[2], 'w').write('MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n%d\n1 1\n' % n +
+                             '0.25\n' * n + 'End\n')
+PY
+"$R" adapt "$C" --metric "$TMP/s.sol" -o "$TMP/s.mesh" -q && "$R" check "$TMP/s.mesh" >/dev/null &&
+  ok adapt3d-sizes || ko adapt3d-sizes
+
+# --fields: a field linear in x, y, z comes back exact (P1 transfer) at every output vertex.
+/usr/bin/python3 - "$C" "$TMP/u.sol" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+i = toks.index('Vertices'); n = int(toks[i + 1])
+p = [[float(t) for t in toks[i + 2 + 4 * k:i + 5 + 4 * k]] for k in range(n)]
+open(sys.argv[2], 'w').write('MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n%d\n1 1\n' % n +
+                             ''.join('%r\n' % (x + 2 * y + 3 * z) for x, y, z in p) + 'End\n')
+PY
+"$R" adapt "$C" --hsiz 0.2 --fields "$TMP/u.sol" --out-fields "$TMP/uo.sol" -o "$TMP/f.mesh" -q &&
+  /usr/bin/python3 - "$TMP/f.mesh" "$TMP/uo.sol" <<'PY' && ok fields-transfer || ko fields-transfer
+import sys
+toks = open(sys.argv[1]).read().split()
+i = toks.index('Vertices'); n = int(toks[i + 1])
+p = [[float(t) for t in toks[i + 2 + 4 * k:i + 5 + 4 * k]] for k in range(n)]
+s = open(sys.argv[2]).read().split()
+j = s.index('SolAtVertices'); vals = [float(v) for v in s[j + 4:j + 4 + n]]
+sys.exit(0 if len(vals) == n and max(abs(v - (x + 2 * y + 3 * z)) for v, (x, y, z) in zip(vals, p)) < 1e-9 else 1)
+PY
+
+# --nosurf: the boundary triangles are those of the input.
+"$R" adapt "$C" -hsiz 0.2 -nosurf -o "$TMP/n.mesh" -q && ok adapt3d-nosurf || ko adapt3d-nosurf
+[ "$(ntri "$TMP/n.mesh")" = "$(ntri "$C")" ] && ok nosurf-keeps-surface || ko "nosurf-keeps-surface: $(ntri "$TMP/n.mesh") vs $(ntri "$C")"
+
+# Bad inputs: a metric that is not positive definite, a 2D-only option.
+/usr/bin/python3 - "$C" "$TMP/bad.sol" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+n = int(toks[toks.index('Vertices') + 1])
+open(sys.argv[2], 'w').write('MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n%d\n1 3\n' % n +
+                             '1 0 1 0 0 -1\n' * n + 'End\n')
+PY
+expect_error non-spd-metric adapt "$C" --metric "$TMP/bad.sol" -o "$TMP/x.mesh"
+expect_no_file non-spd-no-output "$TMP/x.mesh"
+expect_error field-3d adapt "$C" --field "$TMP/s.sol" --complexity 100 -o "$TMP/x.mesh"
+expect_no_file field-3d-no-output "$TMP/x.mesh"
+exit $fail

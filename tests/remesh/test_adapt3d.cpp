@@ -1,0 +1,179 @@
+// adapt3d on the unit cube: valid conforming output (no inverted tet), boundary refs and planes
+// kept, edge lengths and qualities in measured ranges, determinism, bad input refused.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+
+#include "core/error.hpp"
+#include "mesh/check.hpp"
+#include "mesh/fixtures.hpp"
+#include "metric/metric.hpp"
+#include "remesh/adapt3d.hpp"
+
+using namespace riemesh;
+
+namespace {
+
+/// UGAWG "linear" at a coarse scale: hx = hy = hmax, hz = h0 + 2 (hmax − h0) |z − 0.5|.
+std::vector<SymMat3> linear_metric(const Mesh& m, double h0, double hmax) {
+  std::vector<SymMat3> out;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    const double hz = h0 + 2.0 * (hmax - h0) * std::abs(m.coords[3 * v + 2] - 0.5);
+    out.push_back(SymMat3::diagonal(Vec3{{1 / (hmax * hmax), 1 / (hmax * hmax), 1 / (hz * hz)}}));
+  }
+  return out;
+}
+
+/// Area of the boundary triangles of each ref.
+std::map<int, double> area_by_ref(const Mesh& m) {
+  std::map<int, double> out;
+  for (std::size_t f = 0; f < m.num_triangles(); ++f) {
+    Vec3 p[3];
+    for (int k = 0; k < 3; ++k) {
+      const Id v = m.triangles[3 * f + k];
+      p[k] = Vec3{{m.coords[3 * v], m.coords[3 * v + 1], m.coords[3 * v + 2]}};
+    }
+    out[m.tri_ref[f]] += 0.5 * norm(cross(p[1] - p[0], p[2] - p[0]));
+  }
+  return out;
+}
+
+/// Every boundary triangle of ref r (1..6 = x=0, x=1, y=0, y=1, z=0, z=1) lies on its plane.
+bool refs_on_planes(const Mesh& m) {
+  for (std::size_t f = 0; f < m.num_triangles(); ++f) {
+    const int r = m.tri_ref[f] - 1;
+    if (r < 0 || r > 5) return false;
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(m.coords[3 * m.triangles[3 * f + k] + r / 2] - (r % 2)) > 1e-12) return false;
+  }
+  return true;
+}
+
+double total_volume(const Mesh& m) {
+  double s = 0;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    Vec3 p[4];
+    for (int k = 0; k < 4; ++k) {
+      const Id v = m.tets[4 * t + k];
+      p[k] = Vec3{{m.coords[3 * v], m.coords[3 * v + 1], m.coords[3 * v + 2]}};
+    }
+    s += dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0])) / 6.0;
+  }
+  return s;
+}
+
+void expect_valid_cube(const Adapt3dResult& r) {
+  const CheckReport c = check_mesh(r.mesh);
+  EXPECT_TRUE(c.valid()) << (c.issues.empty() ? "" : to_string(c.issues[0].category));
+  EXPECT_NEAR(total_volume(r.mesh), 1.0, 1e-12);
+  EXPECT_TRUE(refs_on_planes(r.mesh));
+  const std::map<int, double> areas = area_by_ref(r.mesh);
+  ASSERT_EQ(areas.size(), 6u);
+  for (const auto& [ref, a] : areas) EXPECT_NEAR(a, 1.0, 1e-12) << "ref " << ref;
+  EXPECT_EQ(r.metrics.size(), r.mesh.num_vertices());
+}
+
+}  // namespace
+
+TEST(Adapt3d, IsotropicSizeOnTheCube) {
+  const Mesh cube = unit_cube(3);
+  Adapt3dOptions o;
+  o.hgrad = 0.0;
+  const Adapt3dResult r =
+      adapt3d(cube, std::vector<SymMat3>(cube.num_vertices(), isotropic_metric<3>(0.15)), o);
+  expect_valid_cube(r);
+  const PassStats& s = r.report.passes.back();
+  // Measured: 95.3% in band, lengths 0.58..1.44, q_min 0.535, q_mean 0.818, 4229 tets.
+  EXPECT_GT(s.len_in, 0.93);
+  EXPECT_GT(s.len_min, 0.5);
+  EXPECT_LT(s.len_max, 1.5);
+  EXPECT_GT(s.q_min, 0.45);
+  EXPECT_GT(s.q_mean, 0.75);
+  // A unit regular tet of side 0.15 has volume 0.15³/(6√2); the count is within a factor 2.
+  const double ideal = 1.0 / (std::pow(0.15, 3) / (6.0 * std::sqrt(2.0)));
+  EXPECT_GT(static_cast<double>(s.triangles), 0.5 * ideal);
+  EXPECT_LT(static_cast<double>(s.triangles), 2.0 * ideal);
+  EXPECT_EQ(s.triangles, r.mesh.num_tets());
+}
+
+TEST(Adapt3d, AnisotropicLinearMetricAtCoarseScale) {
+  const Mesh cube = unit_cube(5);
+  Adapt3dOptions o;
+  o.hgrad = 0.0;
+  const Adapt3dResult r = adapt3d(cube, linear_metric(cube, 0.02, 0.25), o);
+  expect_valid_cube(r);
+  const PassStats& s = r.report.passes.back();
+  // Measured: 97.0% in band, lengths 0.48..1.42, q_min 0.561, q_mean 0.795, 1789 tets.
+  EXPECT_GT(s.len_in, 0.93);
+  EXPECT_GT(s.len_min, 0.4);
+  EXPECT_LT(s.len_max, 1.5);
+  EXPECT_GT(s.q_min, 0.45);
+  EXPECT_GT(s.q_mean, 0.72);
+}
+
+TEST(Adapt3d, Deterministic) {
+  const Mesh cube = unit_cube(3);
+  Adapt3dOptions o;
+  const Adapt3dResult a = adapt3d(cube, linear_metric(cube, 0.05, 0.3), o);
+  const Adapt3dResult b = adapt3d(cube, linear_metric(cube, 0.05, 0.3), o);
+  EXPECT_EQ(a.mesh.coords, b.mesh.coords);
+  EXPECT_EQ(a.mesh.tets, b.mesh.tets);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  EXPECT_EQ(a.mesh.tri_ref, b.mesh.tri_ref);
+}
+
+TEST(Adapt3d, KeepSurfaceLeavesTheBoundaryAsGiven) {
+  const Mesh cube = unit_cube(3);
+  Adapt3dOptions o;
+  o.keep_surface = true;
+  o.hgrad = 0.0;
+  o.max_passes = 4;
+  const Adapt3dResult r =
+      adapt3d(cube, std::vector<SymMat3>(cube.num_vertices(), isotropic_metric<3>(0.15)), o);
+  expect_valid_cube(r);
+  EXPECT_EQ(r.mesh.num_triangles(), cube.num_triangles());
+}
+
+TEST(Adapt3d, RidgeEdgesKeepTheirRefs) {
+  const Mesh cube = unit_cube(2);
+  Adapt3dOptions o;
+  const Adapt3dResult r =
+      adapt3d(cube, std::vector<SymMat3>(cube.num_vertices(), isotropic_metric<3>(0.2)), o);
+  // The 12 cube edges come back as ridge Edges, refined, with the input refs 1..12.
+  std::map<int, double> len;
+  for (std::size_t e = 0; e < r.mesh.num_edges(); ++e) {
+    const Id a = r.mesh.edges[2 * e], b = r.mesh.edges[2 * e + 1];
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) d2 += std::pow(r.mesh.coords[3 * a + k] - r.mesh.coords[3 * b + k], 2);
+    len[r.mesh.edge_ref[e]] += std::sqrt(d2);
+  }
+  ASSERT_EQ(len.size(), 12u);
+  for (const auto& [ref, l] : len) {
+    EXPECT_GE(ref, 1);
+    EXPECT_LE(ref, 12);
+    EXPECT_NEAR(l, 1.0, 1e-12);
+  }
+  EXPECT_GT(r.mesh.num_edges(), cube.num_edges());
+}
+
+TEST(Adapt3d, BadInputIsRefused) {
+  const Mesh cube = unit_cube(2);
+  std::vector<SymMat3> metrics(cube.num_vertices(), SymMat3::identity());
+  metrics[5].at(2, 2) = -1.0;
+  EXPECT_THROW(adapt3d(cube, metrics, {}), InputError);
+  metrics.pop_back();
+  EXPECT_THROW(adapt3d(cube, metrics, {}), InputError);
+  Mesh inverted = cube;
+  std::swap(inverted.tets[0], inverted.tets[1]);
+  EXPECT_THROW(adapt3d(inverted, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()), {}),
+               InputError);
+  const Mesh square = unit_square(2, 2);
+  EXPECT_THROW(adapt3d(square, std::vector<SymMat3>(square.num_vertices(), SymMat3::identity()), {}),
+               InputError);
+  Adapt3dOptions o;
+  o.hgrad = 0.5;
+  EXPECT_THROW(adapt3d(cube, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()), o),
+               InputError);
+}

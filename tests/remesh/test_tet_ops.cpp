@@ -1,0 +1,206 @@
+// The 3D operators on small cubes: each keeps the mesh valid (symmetric adjacency, listed faces,
+// positive volumes), the domain's volume and its boundary, and refuses what it must.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "mesh/check.hpp"
+#include "mesh/fixtures.hpp"
+#include "metric/metric.hpp"
+#include "remesh/ops3d.hpp"
+
+using namespace riemesh;
+
+namespace {
+
+TetMesh cube_tet_mesh(int n, double h) {
+  const Mesh cube = unit_cube(n);
+  TetMesh m = build_tet_mesh(cube, std::vector<SymMat3>(cube.num_vertices(), isotropic_metric<3>(h)));
+  return m;
+}
+
+double volume(const TetMesh& m) {
+  double s = 0;
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
+    if (!m.tet_alive(static_cast<Id>(t))) continue;
+    const Id* v = &m.tv[4 * t];
+    s += tet_volume(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]], m.xyz[v[3]]);
+  }
+  return s;
+}
+
+/// Two tets on the triangle (0,0,0) (1,0,0) (0,1,0), apexes below and above it.
+TetMesh bipyramid() {
+  Mesh in;
+  in.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.3, 0.3, -0.8, 0.3, 0.3, 0.8};
+  in.tets = {0, 2, 1, 3, 0, 1, 2, 4};
+  in.tet_ref = {1, 1};
+  return build_tet_mesh(in, std::vector<SymMat3>(5, SymMat3::identity()));
+}
+
+NewVertex3 at(const TetMesh& m, const Vec3& p) {
+  NewVertex3 nv;
+  nv.p = p;
+  nv.metric = m.metric[0];
+  return nv;
+}
+
+}  // namespace
+
+TEST(TetOps, SplitInteriorEdgeThenCollapseBack) {
+  TetMesh m = cube_tet_mesh(2, 0.5);
+  m.vkind.assign(m.vertex_capacity(), VertexKind::kFixed);
+  std::vector<Id> shell;
+  collect_shell(m, 13, 0, shell);
+  ASSERT_EQ(shell.size(), 6u);
+  Id x = kNoId;
+  ASSERT_EQ(split_edge(m, 13, 0, at(m, 0.5 * (m.xyz[13] + m.xyz[0])), 0.0, &x), Outcome::kApplied);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_EQ(m.num_live_tets(), 48u + 6u);
+  EXPECT_NEAR(volume(m), 1.0, 1e-14);
+  // The new vertex is interior: it goes back into either end.
+  EXPECT_EQ(m.vkind[x], VertexKind::kInterior);
+  EXPECT_EQ(collapse_edge(m, x, 0, {0.0, 100.0}), Outcome::kApplied);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_EQ(m.num_live_tets(), 48u);
+  EXPECT_EQ(m.num_live_vertices(), 27u);
+  EXPECT_NEAR(volume(m), 1.0, 1e-14);
+}
+
+TEST(TetOps, SplitRefusesAPointOffTheEdgeThatInvertsATet) {
+  TetMesh m = cube_tet_mesh(2, 0.5);
+  const std::size_t tets = m.num_live_tets(), verts = m.num_live_vertices();
+  EXPECT_EQ(split_edge(m, 13, 0, at(m, Vec3{{2.0, 2.0, -1.0}}), 0.0, nullptr),
+            Outcome::kRejectedGeometry);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_EQ(m.num_live_tets(), tets);
+  EXPECT_EQ(m.num_live_vertices(), verts);
+}
+
+TEST(TetOps, SplitBoundaryEdgeSplitsItsFacesWithTheirRefs) {
+  TetMesh m = cube_tet_mesh(1, 0.5);
+  // Edge 0-1 runs along y = z = 0: on the faces of refs 3 (y=0) and 5 (z=0).
+  Id x = kNoId;
+  NewVertex3 nv = at(m, 0.5 * (m.xyz[0] + m.xyz[1]));
+  nv.kind = VertexKind::kRidge;
+  ASSERT_EQ(split_edge(m, 0, 1, nv, 0.0, &x), Outcome::kApplied);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  const Mesh out = to_mesh(m, {});
+  EXPECT_TRUE(check_mesh(out).valid());
+  EXPECT_EQ(out.num_triangles(), 12u + 2u);
+  int on_x = 0;
+  for (std::size_t f = 0; f < out.num_triangles(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (out.triangles[3 * f + k] == static_cast<Id>(out.num_vertices() - 1)) {
+        ++on_x;
+        EXPECT_TRUE(out.tri_ref[f] == 3 || out.tri_ref[f] == 5);
+      }
+  EXPECT_EQ(on_x, 4);
+}
+
+TEST(TetOps, CollapseObeysTheBoundaryRules) {
+  TetMesh m = cube_tet_mesh(2, 0.5);
+  m.vkind.assign(m.vertex_capacity(), VertexKind::kFixed);
+  // A fixed vertex never goes.
+  EXPECT_EQ(collapse_edge(m, 1, 0, {0.0, 100.0}), Outcome::kRejectedTopology);
+  // An interior vertex may not leave through a boundary edge... it has none; but a planar vertex
+  // may not collapse along an edge leaving its plane: vertex 4 = (1,1,0) on z=0 (ref 5) into the
+  // centre 13.
+  m.vkind[4] = VertexKind::kPlanar;
+  m.vplane[8] = m.vplane[9] = 5;
+  EXPECT_EQ(collapse_edge(m, 4, 13, {0.0, 100.0}), Outcome::kRejectedTopology);
+  EXPECT_EQ(check_tet_mesh(m), "");
+}
+
+TEST(TetOps, CollapseKeepsTheBallsWorstQuality) {
+  // The centre of a 2x2x2 cube into its neighbour 12 = (0,0.5,0.5): the merged tets are worse
+  // than the Kuhn tets, so a floor at the old worst quality refuses it.
+  TetMesh m = cube_tet_mesh(2, 0.5);
+  m.vkind.assign(m.vertex_capacity(), VertexKind::kFixed);
+  m.vkind[13] = VertexKind::kInterior;
+  EXPECT_EQ(collapse_edge(m, 13, 12, {0.99, 100.0}), Outcome::kRejectedQuality);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_EQ(m.num_live_tets(), 48u);
+  EXPECT_EQ(collapse_edge(m, 13, 12, {0.0, 100.0}), Outcome::kApplied);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_NEAR(volume(m), 1.0, 1e-14);
+}
+
+TEST(TetOps, CollapseRefusesLongEdges) {
+  TetMesh m = cube_tet_mesh(2, 0.5);
+  m.vkind.assign(m.vertex_capacity(), VertexKind::kFixed);
+  m.vkind[13] = VertexKind::kInterior;
+  // Into the corner along the diagonal: new edges of length 2 in the metric (h = 0.5).
+  EXPECT_EQ(collapse_edge(m, 13, 0, {0.0, 1.5}), Outcome::kRejectedQuality);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_EQ(m.num_live_tets(), 48u);
+  // Allowed lengths: the centre's 6 tets on the diagonal go, the others now hold the corner.
+  EXPECT_EQ(collapse_edge(m, 13, 0, {0.0, 100.0}), Outcome::kApplied);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_EQ(m.num_live_tets(), 42u);
+  EXPECT_NEAR(volume(m), 1.0, 1e-14);
+  std::vector<Id> ball;
+  collect_ball(m, 13, ball);
+  EXPECT_TRUE(ball.empty());
+}
+
+TEST(TetOps, FaceSwapThenEdgeSwapBack) {
+  TetMesh m = bipyramid();
+  ASSERT_EQ(check_tet_mesh(m), "");
+  const double q2 = std::min(tet_quality(m, 0), tet_quality(m, 1));
+  // The shared face is slot 4*0 + 3 (opposite vertex 3 of tet 0).
+  ASSERT_EQ(m.tadj[3] / 4, 1);
+  ASSERT_EQ(swap_face(m, 3, -1.0, 100.0), Outcome::kApplied);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_EQ(m.num_live_tets(), 3u);
+  EXPECT_NEAR(volume(m), 2.0 * 0.5 * 0.8 / 3.0, 1e-14);
+  // Back: the 3 tets around edge (3, 4) become 2 again, with the old quality.
+  ASSERT_EQ(swap_edge(m, 3, 4, -1.0, 100.0), Outcome::kApplied);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_EQ(m.num_live_tets(), 2u);
+  double q = 1.0;
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t)
+    if (m.tet_alive(static_cast<Id>(t))) q = std::min(q, tet_quality(m, static_cast<Id>(t)));
+  EXPECT_NEAR(q, q2, 1e-12);
+  // Swaps that do not gain are refused; a boundary edge has no closed shell.
+  EXPECT_EQ(swap_edge(m, 0, 1, 0.0, 100.0), Outcome::kRejectedTopology);
+  EXPECT_NE(swap_face(m, m.tv[0] == kNoId ? 7 : 3, 0.5, 100.0), Outcome::kApplied);
+}
+
+TEST(TetOps, EdgeSwapPicksTheBestRingTriangulation) {
+  // Refine a cube, then check that every applied swap raises the shell's worst quality.
+  TetMesh m = cube_tet_mesh(3, 0.2);
+  m.vkind.assign(m.vertex_capacity(), VertexKind::kFixed);
+  int applied = 0;
+  for (Id a = 0; a < 64; ++a)
+    for (Id b = a + 1; b < 64; ++b) {
+      std::vector<Id> shell;
+      collect_shell(m, a, b, shell);
+      if (shell.empty()) continue;
+      double before = 1.0;
+      for (const Id t : shell) before = std::min(before, tet_quality(m, t));
+      const std::size_t n = m.num_live_tets();
+      if (swap_edge(m, a, b, 1e-3, 100.0) != Outcome::kApplied) continue;
+      ++applied;
+      EXPECT_EQ(m.num_live_tets(), n + shell.size() - 4);
+      EXPECT_EQ(check_tet_mesh(m), "");
+    }
+  EXPECT_NEAR(volume(m), 1.0, 1e-13);
+  (void)applied;
+}
+
+TEST(TetOps, MoveImprovesOrRefuses) {
+  TetMesh m = cube_tet_mesh(2, 0.5);
+  m.vkind.assign(m.vertex_capacity(), VertexKind::kFixed);
+  m.vkind[13] = VertexKind::kInterior;
+  const Vec3 centre = m.xyz[13];
+  m.xyz[13] = Vec3{{0.6, 0.55, 0.45}};
+  EXPECT_EQ(move_vertex(m, 13, centre, m.metric[13]), Outcome::kApplied);
+  EXPECT_EQ(m.xyz[13], centre);
+  EXPECT_EQ(move_vertex(m, 13, Vec3{{1.5, 0.5, 0.5}}, m.metric[13]), Outcome::kRejectedGeometry);
+  EXPECT_EQ(m.xyz[13], centre);
+  EXPECT_EQ(move_vertex(m, 13, Vec3{{0.6, 0.5, 0.5}}, m.metric[13]), Outcome::kRejectedQuality);
+  m.vkind[13] = VertexKind::kFixed;
+  EXPECT_EQ(move_vertex(m, 13, Vec3{{0.5, 0.5, 0.55}}, m.metric[13]), Outcome::kRejectedTopology);
+  EXPECT_EQ(check_tet_mesh(m), "");
+}
