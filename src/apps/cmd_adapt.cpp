@@ -58,30 +58,7 @@ std::vector<SymMat2> implied_metric_of_used(const Mesh& mesh) {
 /// the implied metric of the input mesh.
 std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
-  if (!a.metric.empty()) {
-    const std::vector<Field> fields = read_sol(a.metric, mesh);
-    for (const Field& f : fields) {
-      std::vector<SymMat2> out(nv);
-      if (f.kind == FieldKind::kSymTensor) {
-        for (std::size_t v = 0; v < nv; ++v) {
-          out[v] = SymMat2{{f.values[3 * v], f.values[3 * v + 1], f.values[3 * v + 2]}};
-          require_metric(out[v], a.metric + ": vertex " + std::to_string(v + 1));
-        }
-        return out;
-      }
-      if (f.kind == FieldKind::kScalar) {  // a size per vertex, as MMG accepts
-        for (std::size_t v = 0; v < nv; ++v) {
-          const double h = f.values[v];
-          if (!(h > 0.0) || !std::isfinite(h))
-            throw InputError(a.metric + ": size at vertex " + std::to_string(v + 1) +
-                             " is not a positive number");
-          out[v] = isotropic_metric<2>(h);
-        }
-        return out;
-      }
-    }
-    throw InputError(a.metric + ": no scalar or symmetric tensor field in SolAtVertices");
-  }
+  if (!a.metric.empty()) return read_metric_file<2>(a.metric, mesh);
   if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
   if (!a.field.empty()) {
     // Metric from the solution: recovered Hessian, Lp-optimal metric of complexity N.
@@ -141,29 +118,7 @@ std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
   if (!a.field.empty())
     throw InputError("--field (Hessian metric) is 2D only so far: give --metric, --hsiz or --optim");
-  if (!a.metric.empty()) {
-    for (const Field& f : read_sol(a.metric, mesh)) {
-      std::vector<SymMat3> out(nv);
-      if (f.kind == FieldKind::kSymTensor) {
-        for (std::size_t v = 0; v < nv; ++v) {
-          for (int k = 0; k < 6; ++k) out[v].c[k] = f.values[6 * v + k];
-          require_metric(out[v], a.metric + ": vertex " + std::to_string(v + 1));
-        }
-        return out;
-      }
-      if (f.kind == FieldKind::kScalar) {
-        for (std::size_t v = 0; v < nv; ++v) {
-          const double h = f.values[v];
-          if (!(h > 0.0) || !std::isfinite(h))
-            throw InputError(a.metric + ": size at vertex " + std::to_string(v + 1) +
-                             " is not a positive number");
-          out[v] = isotropic_metric<3>(h);
-        }
-        return out;
-      }
-    }
-    throw InputError(a.metric + ": no scalar or symmetric tensor field in SolAtVertices");
-  }
+  if (!a.metric.empty()) return read_metric_file<3>(a.metric, mesh);
   if (a.hsiz > 0.0) return std::vector<SymMat3>(nv, isotropic_metric<3>(a.hsiz));
   return implied_metric<3>(mesh.coords, mesh.tets);
 }

@@ -7,6 +7,7 @@
 
 #include "apps/cmd_mesh3d.hpp"
 #include "apps/commands.hpp"
+#include "apps/field_args.hpp"
 #include "apps/mesh_args.hpp"
 #include "apps/parse.hpp"
 #include "core/error.hpp"
@@ -28,31 +29,6 @@ struct MeshArgs {
   const CLI::Option* hausd = nullptr;
   const CLI::Option* hgrad = nullptr;
 };
-
-/// One metric per vertex of the domain file, from a .sol of tensors or of sizes.
-std::vector<SymMat2> read_metric(const std::string& path, const Mesh& mesh) {
-  for (const Field& f : read_sol(path, mesh)) {
-    std::vector<SymMat2> out(mesh.num_vertices());
-    if (f.kind == FieldKind::kSymTensor) {
-      for (std::size_t v = 0; v < out.size(); ++v) {
-        out[v] = SymMat2{{f.values[3 * v], f.values[3 * v + 1], f.values[3 * v + 2]}};
-        require_metric(out[v], path + ": vertex " + std::to_string(v + 1));
-      }
-      return out;
-    }
-    if (f.kind == FieldKind::kScalar) {
-      for (std::size_t v = 0; v < out.size(); ++v) {
-        const double h = f.values[v];
-        if (!(h > 0.0) || !std::isfinite(h))
-          throw InputError(path + ": size at vertex " + std::to_string(v + 1) +
-                           " is not a positive number");
-        out[v] = isotropic_metric<2>(h);
-      }
-      return out;
-    }
-  }
-  throw InputError(path + ": no scalar or symmetric tensor field in SolAtVertices");
-}
 
 void run(MeshArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
@@ -76,7 +52,7 @@ void run(MeshArgs& a) {
     mesh_volume_from_surface(a.input, domain, a.output, a.quiet);
     return;
   }
-  if (!a.metric.empty()) a.opt.metric = read_metric(a.metric, domain);
+  if (!a.metric.empty()) a.opt.metric = read_metric_file<2>(a.metric, domain);
   // The boundary is kept as given unless a size field or hausd says how to remesh it.
   a.opt.keep_boundary =
       a.keep_boundary || (a.opt.hsiz == 0.0 && a.metric.empty() && a.hausd->count() == 0);

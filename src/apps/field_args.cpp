@@ -1,9 +1,12 @@
 #include "apps/field_args.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "apps/parse.hpp"
 #include "core/error.hpp"
+#include "io/sol.hpp"
+#include "metric/metric.hpp"
 
 namespace riemesh::cli {
 
@@ -29,5 +32,35 @@ const Field& select_field(const std::vector<Field>& fields, const std::string& c
     throw InputError(path + ": field '" + found->name + "' is not a scalar field");
   return *found;
 }
+
+template <int D>
+std::vector<SymMat<D>> read_metric_file(const std::string& path, const Mesh& mesh) {
+  constexpr int kSize = SymMat<D>::kSize;
+  const std::size_t nv = mesh.num_vertices();
+  for (const Field& f : read_sol(path, mesh)) {
+    std::vector<SymMat<D>> out(nv);
+    if (f.kind == FieldKind::kSymTensor) {
+      for (std::size_t v = 0; v < nv; ++v) {
+        for (int k = 0; k < kSize; ++k) out[v].c[k] = f.values[kSize * v + k];
+        require_metric(out[v], path + ": vertex " + std::to_string(v + 1));
+      }
+      return out;
+    }
+    if (f.kind == FieldKind::kScalar) {
+      for (std::size_t v = 0; v < nv; ++v) {
+        const double h = f.values[v];
+        if (!(h > 0.0) || !std::isfinite(h))
+          throw InputError(path + ": size at vertex " + std::to_string(v + 1) +
+                           " is not a positive number");
+        out[v] = isotropic_metric<D>(h);
+      }
+      return out;
+    }
+  }
+  throw InputError(path + ": no scalar or symmetric tensor field in SolAtVertices");
+}
+
+template std::vector<SymMat2> read_metric_file<2>(const std::string&, const Mesh&);
+template std::vector<SymMat3> read_metric_file<3>(const std::string&, const Mesh&);
 
 }  // namespace riemesh::cli

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "core/symmat.hpp"
 #include "mesh/mesh.hpp"
 
 namespace riemesh::cli {
@@ -14,5 +15,11 @@ double parse_norm(const std::string& text);
 /// 0-based index; by default the first scalar field of the file. InputError naming `path`.
 const Field& select_field(const std::vector<Field>& fields, const std::string& choice,
                           const std::string& path);
+
+/// One metric per vertex of `mesh` from a .sol file: the first symmetric tensor field (the .sol
+/// order) or scalar field (a size per vertex, as MMG accepts). InputError naming `path` and the
+/// vertex for a non-SPD tensor or a non-positive size, or when the file has neither kind.
+template <int D>
+std::vector<SymMat<D>> read_metric_file(const std::string& path, const Mesh& mesh);
 
 }  // namespace riemesh::cli
