@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/json.hpp"
 #include "apps/mesh_args.hpp"
 #include "core/error.hpp"
 #include "mesh/distance.hpp"
@@ -20,43 +21,19 @@ struct DistanceArgs {
   bool json = false;
 };
 
-std::string number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 std::string json_side(const OneSidedDistance& d) {
   std::string o = "{\"max\": ";
-  o += number(d.max);
+  o += json_number(d.max);
   o += ", \"mean\": ";
-  o += number(d.mean);
+  o += json_number(d.mean);
   o += ", \"samples\": ";
   o += std::to_string(d.samples);
   o += ", \"where\": [";
-  o += number(d.where[0]);
+  o += json_number(d.where[0]);
   o += ", ";
-  o += number(d.where[1]);
+  o += json_number(d.where[1]);
   o += ", ";
-  o += number(d.where[2]);
+  o += json_number(d.where[2]);
   o += "]}";
   return o;
 }
@@ -95,21 +72,21 @@ void run_distance(const DistanceArgs& a) {
   const double diag = bounding_box_diagonal(ma);
   if (a.json) {
     std::string o = "{\"a\": ";
-    o += quoted(a.a);
+    o += json_string(a.a);
     o += ", \"b\": ";
-    o += quoted(a.b);
+    o += json_string(a.b);
     o += ", \"lattice_order\": ";
     o += std::to_string(a.options.samples);
     o += ", \"spacing\": ";
-    o += number(a.options.spacing);
+    o += json_number(a.options.spacing);
     o += ", \"bbox_diagonal_a\": ";
-    o += number(diag);
+    o += json_number(diag);
     o += ", \"a_to_b\": ";
     o += json_side(h.a_to_b);
     o += ", \"b_to_a\": ";
     o += json_side(h.b_to_a);
     o += ", \"hausdorff\": ";
-    o += number(h.two_sided());
+    o += json_number(h.two_sided());
     o += "}\n";
     std::fputs(o.c_str(), stdout);
     return;

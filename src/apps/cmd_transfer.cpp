@@ -7,6 +7,7 @@
 #include <string>
 
 #include "apps/commands.hpp"
+#include "apps/json.hpp"
 #include "apps/mesh_args.hpp"
 #include "core/error.hpp"
 #include "io/sol.hpp"
@@ -20,24 +21,18 @@ struct TransferArgs {
   bool p0 = false, json = false, quiet = false;
 };
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 void print_report(const P0TransferReport& r, bool json) {
   if (json) {
     std::string o = "{\"pairs\": " + std::to_string(r.pairs);
-    o += ", \"old_measure\": " + num(r.old_measure);
-    o += ", \"new_measure\": " + num(r.new_measure);
-    o += ", \"uncovered_new\": " + num(r.uncovered_new);
-    o += ", \"uncovered_old\": " + num(r.uncovered_old);
+    o += ", \"old_measure\": " + json_number(r.old_measure);
+    o += ", \"new_measure\": " + json_number(r.new_measure);
+    o += ", \"uncovered_new\": " + json_number(r.uncovered_new);
+    o += ", \"uncovered_old\": " + json_number(r.uncovered_old);
     o += ", \"unmatched_elements\": " + std::to_string(r.unmatched_elements);
     o += ", \"old_integral\": [";
-    for (std::size_t k = 0; k < r.old_integral.size(); ++k) o += (k ? ", " : "") + num(r.old_integral[k]);
+    for (std::size_t k = 0; k < r.old_integral.size(); ++k) o += (k ? ", " : "") + json_number(r.old_integral[k]);
     o += "], \"new_integral\": [";
-    for (std::size_t k = 0; k < r.new_integral.size(); ++k) o += (k ? ", " : "") + num(r.new_integral[k]);
+    for (std::size_t k = 0; k < r.new_integral.size(); ++k) o += (k ? ", " : "") + json_number(r.new_integral[k]);
     o += "]}\n";
     std::fputs(o.c_str(), stdout);
     return;

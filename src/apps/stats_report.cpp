@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "apps/json.hpp"
 #include "mesh/adjacency.hpp"
 #include "mesh/check.hpp"
 #include "metric/mesh_quality.hpp"
@@ -78,23 +79,6 @@ void value_stats_json(std::string& out, const ValueStats& s) {
   key(out, "counts");
   list(out, s.histogram.counts);
   out += "}}";
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
 }
 
 void append_line(std::string& out, const char* fmt, auto... args) {
