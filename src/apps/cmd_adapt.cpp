@@ -54,6 +54,27 @@ std::vector<SymMat2> implied_metric_of_used(const Mesh& mesh) {
   return out;
 }
 
+/// The end of a 2D or 3D run: notes and stall warning, then the outputs. The transferred
+/// fields are computed before anything is written, so a failing transfer leaves no file.
+template <int D, class Result>
+void finish(const AdaptArgs& a, const Mesh& input, const std::vector<Field>& fields,
+            const Result& r) {
+  if (!a.quiet)
+    for (const std::string& note : r.report.notes)
+      std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
+  if (!r.report.converged && !a.quiet)
+    std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
+                 r.report.passes.size(), r.report.stall_reason.c_str());
+  const std::vector<Field> moved = fields.empty() ? fields : transfer_p1(input, fields, r.mesh);
+  write_mesh(r.mesh, a.output);
+  if (!a.fields.empty()) write_sol(a.out_fields, moved, D);
+  if (!a.out_metric.empty()) {
+    Field f{"metric", FieldKind::kSymTensor, {}};
+    for (const SymMat<D>& m : r.metrics) f.values.insert(f.values.end(), m.c, m.c + SymMat<D>::kSize);
+    write_sol(a.out_metric, {f}, D);
+  }
+}
+
 /// The metric field for the run: from --metric (tensor, or scalar sizes), --hsiz, or (--optim)
 /// the implied metric of the input mesh.
 std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
@@ -133,19 +154,7 @@ void run3d(const AdaptArgs& a, const Mesh& mesh) {
   const Adapt3dResult r = adapt3d(mesh, metrics, opt, [&](const PassStats& s) {
     if (!a.quiet) print_pass(s, a.verbosity, "tetrahedra");
   });
-  if (!a.quiet)
-    for (const std::string& note : r.report.notes)
-      std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
-  if (!r.report.converged && !a.quiet)
-    std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
-                 r.report.passes.size(), r.report.stall_reason.c_str());
-  write_mesh(r.mesh, a.output);
-  if (!a.fields.empty()) write_sol(a.out_fields, transfer_p1(mesh, fields, r.mesh), 3);
-  if (!a.out_metric.empty()) {
-    Field f{"metric", FieldKind::kSymTensor, {}};
-    for (const SymMat3& m : r.metrics) f.values.insert(f.values.end(), m.c, m.c + 6);
-    write_sol(a.out_metric, {f}, 3);
-  }
+  finish<3>(a, mesh, fields, r);
 }
 
 void run(AdaptArgs& a) {
@@ -190,19 +199,7 @@ void run(AdaptArgs& a) {
   const Adapt2dResult r = adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
     if (progress) print_pass(s, a.verbosity);
   });
-  if (!a.quiet)
-    for (const std::string& note : r.report.notes)
-      std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
-  if (!r.report.converged && !a.quiet)
-    std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
-                 r.report.passes.size(), r.report.stall_reason.c_str());
-  write_mesh(r.mesh, a.output);
-  if (!a.fields.empty()) write_sol(a.out_fields, transfer_p1(mesh, fields, r.mesh), 2);
-  if (!a.out_metric.empty()) {
-    Field f{"metric", FieldKind::kSymTensor, {}};
-    for (const SymMat2& m : r.metrics) f.values.insert(f.values.end(), {m.c[0], m.c[1], m.c[2]});
-    write_sol(a.out_metric, {f}, 2);
-  }
+  finish<2>(a, mesh, fields, r);
 }
 
 }  // namespace
