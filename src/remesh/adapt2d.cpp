@@ -12,6 +12,8 @@
 #include "mesh/hilbert.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
+#include "remesh/pass_summary.hpp"
+#include "remesh/prepare_metrics.hpp"
 #include "remesh/remesh2d_context.hpp"
 #include "remesh/tri_mesh_io.hpp"
 
@@ -19,7 +21,6 @@ namespace riemesh {
 namespace {
 
 constexpr double kLongEdge = 1.4142135623730951;   // √2
-constexpr double kShortEdge = 0.7071067811865476;  // 1/√2
 // Collapse candidates: edges below 0.9 (not 1/√2), refused when they would create an edge
 // longer than 1.45. Collapsing up to 0.9 lifts the mean length from about 0.90 to 0.97, so the
 // element count comes within a few per cent of (4/√3) C(M) (measured on the PEERS.md cases).
@@ -29,45 +30,6 @@ std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
-}
-
-/// Validated, clipped to [hmin, hmax] and graded copy of the input metrics.
-std::vector<SymMat2> prepare_metrics(const Mesh& in, const Adjacency& adj,
-                                     std::span<const SymMat2> metrics, const Adapt2dOptions& o,
-                                     Adapt2dReport& report) {
-  if (metrics.size() != in.num_vertices())
-    throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
-                     std::to_string(in.num_vertices()) + " vertices");
-  std::vector<SymMat2> out(metrics.begin(), metrics.end());
-  const double lo = std::isfinite(o.hmax) ? 1.0 / (o.hmax * o.hmax) : 0.0;
-  const double hi = o.hmin > 0.0 ? 1.0 / (o.hmin * o.hmin) : std::numeric_limits<double>::max();
-  std::size_t below_hmin = 0, above_hmax = 0, first_below = 0;
-  for (std::size_t v = 0; v < out.size(); ++v) {
-    require_metric(out[v], "vertex " + std::to_string(v + 1));
-    if (lo > 0.0 || hi < std::numeric_limits<double>::max()) {
-      const SymEigen<2> e = eigen(out[v]);
-      if (e.values[1] > hi && below_hmin++ == 0) first_below = v;
-      above_hmax += e.values[0] < lo ? 1 : 0;
-      out[v] = project_spd(out[v], lo, hi);
-    }
-  }
-  if (below_hmin > 0)
-    report.notes.push_back("the metric asks for sizes below --hmin " + num(o.hmin) + " at " +
-                           std::to_string(below_hmin) + " vertices, e.g. near (" +
-                           num(in.coords[2 * first_below]) + ", " +
-                           num(in.coords[2 * first_below + 1]) + "): clipped to --hmin");
-  if (above_hmax > 0)
-    report.notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
-                           std::to_string(above_hmax) + " vertices");
-  if (o.hgrad > 0.0) {
-    GradationOptions g;
-    g.mode = GradationMode::kGrowthPhysical;
-    g.threshold = o.hgrad;
-    const GradationReport r = gradate<2>(in.coords, adj.edges, std::span<SymMat2>(out), g);
-    report.gradation_before = r.measure_before;
-    report.gradation_after = r.measure_after;
-  }
-  return out;
 }
 
 /// Calls f(slot) once per live edge (the slot of the lower triangle side for interior edges).
@@ -205,42 +167,23 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st) {
 }
 
 void summarize(const TriMesh& m, PassStats& st) {
-  long n = 0, in = 0;
-  double sum = 0, lmin = std::numeric_limits<double>::infinity(), lmax = 0;
-  for_each_edge(m, [&](Id s) {
-    const double l = edge_length(m, m.edge_from(s), m.edge_to(s));
-    ++n, sum += l, lmin = std::min(lmin, l), lmax = std::max(lmax, l);
-    in += (l >= kShortEdge && l <= kLongEdge) ? 1 : 0;
-  });
-  double qsum = 0, qmin = 1.0;
-  long nt = 0;
-  for (std::size_t t = 0; t < m.triangle_capacity(); ++t) {
-    if (!m.tri_alive(static_cast<Id>(t))) continue;
-    const double q = tri_quality(m, static_cast<Id>(t));
-    ++nt, qsum += q, qmin = std::min(qmin, q);
-  }
-  st.vertices = m.num_live_vertices();
-  st.triangles = m.num_live_triangles();
-  st.len_min = lmin, st.len_max = lmax, st.len_mean = n ? sum / n : 0.0;
-  st.len_in = n ? static_cast<double>(in) / n : 0.0;
-  st.q_min = qmin, st.q_mean = nt ? qsum / nt : 0.0;
+  PassSummary sum;
+  for_each_edge(m, [&](Id s) { sum.edge(edge_length(m, m.edge_from(s), m.edge_to(s))); });
+  for (std::size_t t = 0; t < m.triangle_capacity(); ++t)
+    if (m.tri_alive(static_cast<Id>(t))) sum.element(tri_quality(m, static_cast<Id>(t)));
+  sum.fill(st, m.num_live_vertices(), m.num_live_triangles());
 }
 
 /// Where and why the passes stalled: the longest (or shortest) edge left and its place.
 std::string stall_reason(const TriMesh& m) {
-  double worst = 0;
+  double worst = 0, worst_length = 1.0;
   Id where = kNoId;
   for_each_edge(m, [&](Id s) {
     const double l = edge_length(m, m.edge_from(s), m.edge_to(s));
-    const double badness = l > 1.0 ? l : 1.0 / l;
-    if (badness > worst) worst = badness, where = s;
+    if (length_badness(l) > worst) worst = length_badness(l), worst_length = l, where = s;
   });
   if (where == kNoId) return "no edge left";
-  const Vec2 p = 0.5 * (m.xy[m.edge_from(where)] + m.xy[m.edge_to(where)]);
-  const double l = edge_length(m, m.edge_from(where), m.edge_to(where));
-  return std::string(l > 1.0 ? "an edge stays too long" : "an edge stays too short") +
-         " (metric length " + num(l) + ") near (" + num(p[0]) + ", " + num(p[1]) +
-         "): the operators' checks refuse to change it further";
+  return stall_message<2>(worst_length, 0.5 * (m.xy[m.edge_from(where)] + m.xy[m.edge_to(where)]));
 }
 
 }  // namespace
@@ -274,7 +217,7 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
     permuted.assign(metrics.begin(), metrics.end());  // prepare_metrics reports the mismatch
   const Adjacency adjacency = build_adjacency(ordered.triangles, 3, ordered.num_vertices());
   const std::vector<SymMat2> prepared =
-      prepare_metrics(ordered, adjacency, permuted, options, result.report);
+      prepare_metrics<2>(ordered, adjacency, std::span<const SymMat2>(permuted), options, result.report);
   Remesh2dContext ctx(ordered, prepared, options, adjacency);
   TriMesh& m = ctx.mesh();
   long best_ops = std::numeric_limits<long>::max();

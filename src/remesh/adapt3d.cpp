@@ -12,13 +12,14 @@
 #include "mesh/hilbert.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
+#include "remesh/pass_summary.hpp"
+#include "remesh/prepare_metrics.hpp"
 #include "remesh/remesh3d_context.hpp"
 
 namespace riemesh {
 namespace {
 
 constexpr double kLongEdge = 1.4142135623730951;   // √2
-constexpr double kShortEdge = 0.7071067811865476;  // 1/√2
 constexpr double kCollapseBelow = 0.9;             // as in 2D
 constexpr int kSplitSweeps = 3;              // per pass, as in 2D (1 or 2: slower to settle)
 constexpr double kSwapBelow = 0.6;                 // swaps are tried around tets worse than this
@@ -27,60 +28,6 @@ constexpr double kBad = 0.45;                      // tets below this are remove
 constexpr double kBadMaxLength = 1.6;               // ... creating edges no longer than this
 constexpr double kVeryShort = 0.55;                // shorter edges go with those limits too
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
-std::string where(const Vec3& p) {
-  std::string s = "(";
-  s += num(p[0]);
-  s += ", ";
-  s += num(p[1]);
-  s += ", ";
-  s += num(p[2]);
-  s += ")";
-  return s;
-}
-
-/// Validated, clipped to [hmin, hmax] and graded copy of the input metrics.
-std::vector<SymMat3> prepare_metrics(const Mesh& in, const Adjacency& adj,
-                                     std::span<const SymMat3> metrics, const Adapt3dOptions& o,
-                                     Adapt2dReport& report) {
-  if (metrics.size() != in.num_vertices())
-    throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
-                     std::to_string(in.num_vertices()) + " vertices");
-  std::vector<SymMat3> out(metrics.begin(), metrics.end());
-  const double lo = std::isfinite(o.hmax) ? 1.0 / (o.hmax * o.hmax) : 0.0;
-  const double hi = o.hmin > 0.0 ? 1.0 / (o.hmin * o.hmin) : std::numeric_limits<double>::max();
-  std::size_t below_hmin = 0, above_hmax = 0;
-  for (std::size_t v = 0; v < out.size(); ++v) {
-    require_metric(out[v], "vertex " + std::to_string(v + 1));
-    if (lo > 0.0 || hi < std::numeric_limits<double>::max()) {
-      const SymEigen<3> e = eigen(out[v]);
-      below_hmin += e.values[2] > hi ? 1 : 0;
-      above_hmax += e.values[0] < lo ? 1 : 0;
-      out[v] = project_spd(out[v], lo, hi);
-    }
-  }
-  if (below_hmin > 0)
-    report.notes.push_back("the metric asks for sizes below --hmin " + num(o.hmin) + " at " +
-                           std::to_string(below_hmin) + " vertices: clipped to --hmin");
-  if (above_hmax > 0)
-    report.notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
-                           std::to_string(above_hmax) + " vertices");
-  if (o.hgrad > 0.0) {
-    GradationOptions g;
-    g.mode = GradationMode::kGrowthPhysical;
-    g.threshold = o.hgrad;
-    const GradationReport r = gradate<3>(in.coords, adj.edges, std::span<SymMat3>(out), g);
-    report.gradation_before = r.measure_before;
-    report.gradation_after = r.measure_after;
-  }
-  return out;
-}
 
 struct Candidate {
   double length;
@@ -289,41 +236,22 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
 }
 
 void summarize(const TetMesh& m, PassStats& st) {
-  long n = 0, in = 0;
-  double sum = 0, lmin = std::numeric_limits<double>::infinity(), lmax = 0;
-  for (const auto& [a, b, t] : all_edges(m)) {
-    const double l = edge_length(m, a, b);
-    ++n, sum += l, lmin = std::min(lmin, l), lmax = std::max(lmax, l);
-    in += (l >= kShortEdge && l <= kLongEdge) ? 1 : 0;
-  }
-  double qsum = 0, qmin = 1.0;
-  long nt = 0;
-  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
-    if (!m.tet_alive(static_cast<Id>(t))) continue;
-    const double q = tet_quality(m, static_cast<Id>(t));
-    ++nt, qsum += q, qmin = std::min(qmin, q);
-  }
-  st.vertices = m.num_live_vertices();
-  st.triangles = m.num_live_tets();
-  st.len_min = lmin, st.len_max = lmax, st.len_mean = n ? sum / n : 0.0;
-  st.len_in = n ? static_cast<double>(in) / n : 0.0;
-  st.q_min = qmin, st.q_mean = nt ? qsum / nt : 0.0;
+  PassSummary sum;
+  for (const auto& [a, b, t] : all_edges(m)) sum.edge(edge_length(m, a, b));
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t)
+    if (m.tet_alive(static_cast<Id>(t))) sum.element(tet_quality(m, static_cast<Id>(t)));
+  sum.fill(st, m.num_live_vertices(), m.num_live_tets());
 }
 
 std::string stall_reason(const TetMesh& m) {
-  double worst = 0, lw = 1;
+  double worst = 0, worst_length = 1.0;
   Id wa = kNoId, wb = kNoId;
   for (const auto& [a, b, t] : all_edges(m)) {
     const double l = edge_length(m, a, b);
-    const double badness = l > 1.0 ? l : 1.0 / l;
-    if (badness > worst) worst = badness, wa = a, wb = b, lw = l;
+    if (length_badness(l) > worst) worst = length_badness(l), worst_length = l, wa = a, wb = b;
   }
   if (wa == kNoId) return "no edge left";
-  std::string s = lw > 1.0 ? "an edge stays too long" : "an edge stays too short";
-  s += " (metric length " + num(lw) + ") near ";
-  s += where(0.5 * (m.xyz[wa] + m.xyz[wb]));
-  s += ": the operators' checks refuse to change it further";
-  return s;
+  return stall_message<3>(worst_length, 0.5 * (m.xyz[wa] + m.xyz[wb]));
 }
 
 }  // namespace
@@ -341,7 +269,7 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
     for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
   const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
   const std::vector<SymMat3> prepared =
-      prepare_metrics(ordered, adjacency, permuted, options, result.report);
+      prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted), options, result.report);
   Remesh3dContext ctx(ordered, prepared, options);
   TetMesh& m = ctx.mesh();
   long best_ops = std::numeric_limits<long>::max();

@@ -1,0 +1,77 @@
+#include "remesh/prepare_metrics.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "core/eigen.hpp"
+#include "core/error.hpp"
+#include "core/spd.hpp"
+#include "metric/gradation.hpp"
+#include "metric/metric.hpp"
+
+namespace riemesh {
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+}  // namespace
+
+template <int D>
+std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
+                                       std::span<const SymMat<D>> metrics,
+                                       const Adapt2dOptions& o, Adapt2dReport& report) {
+  if (metrics.size() != in.num_vertices())
+    throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
+                     std::to_string(in.num_vertices()) + " vertices");
+  std::vector<SymMat<D>> out(metrics.begin(), metrics.end());
+  const double lo = std::isfinite(o.hmax) ? 1.0 / (o.hmax * o.hmax) : 0.0;
+  const double hi = o.hmin > 0.0 ? 1.0 / (o.hmin * o.hmin) : std::numeric_limits<double>::max();
+  std::size_t below_hmin = 0, above_hmax = 0, first_below = 0;
+  for (std::size_t v = 0; v < out.size(); ++v) {
+    require_metric(out[v], "vertex " + std::to_string(v + 1));
+    if (lo > 0.0 || hi < std::numeric_limits<double>::max()) {
+      const SymEigen<D> e = eigen(out[v]);
+      if (e.values[D - 1] > hi && below_hmin++ == 0) first_below = v;
+      above_hmax += e.values[0] < lo ? 1 : 0;
+      out[v] = project_spd(out[v], lo, hi);
+    }
+  }
+  if (below_hmin > 0) {
+    std::string note = "the metric asks for sizes below --hmin " + num(o.hmin) + " at ";
+    note += std::to_string(below_hmin);
+    note += " vertices, e.g. near (";
+    for (int i = 0; i < D; ++i) {
+      if (i > 0) note += ", ";
+      note += num(in.coords[D * first_below + i]);
+    }
+    note += "): clipped to --hmin";
+    report.notes.push_back(note);
+  }
+  if (above_hmax > 0)
+    report.notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
+                           std::to_string(above_hmax) + " vertices");
+  if (o.hgrad > 0.0) {
+    GradationOptions g;
+    g.mode = GradationMode::kGrowthPhysical;
+    g.threshold = o.hgrad;
+    const GradationReport r = gradate<D>(in.coords, adj.edges, std::span<SymMat<D>>(out), g);
+    report.gradation_before = r.measure_before;
+    report.gradation_after = r.measure_after;
+  }
+  return out;
+}
+
+template std::vector<SymMat2> prepare_metrics<2>(const Mesh&, const Adjacency&,
+                                                 std::span<const SymMat2>, const Adapt2dOptions&,
+                                                 Adapt2dReport&);
+template std::vector<SymMat3> prepare_metrics<3>(const Mesh&, const Adjacency&,
+                                                 std::span<const SymMat3>, const Adapt2dOptions&,
+                                                 Adapt2dReport&);
+
+}  // namespace riemesh

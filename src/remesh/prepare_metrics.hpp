@@ -1,0 +1,22 @@
+#pragma once
+// The metric field a remeshing run starts from (2D and 3D drivers alike).
+#include <span>
+#include <vector>
+
+#include "core/symmat.hpp"
+#include "mesh/adjacency.hpp"
+#include "mesh/mesh.hpp"
+#include "remesh/adapt2d.hpp"
+
+namespace riemesh {
+
+/// Validated (InputError naming the vertex for a NaN or non-SPD tensor, or for a count that does
+/// not match the mesh), clipped to sizes in [o.hmin, o.hmax] and graded (o.hgrad, physical-space
+/// growth along adj.edges) copy of the input metrics. Clipping is reported in report.notes (with
+/// the place of the first vertex below hmin), gradation in report.gradation_before/after.
+template <int D>
+std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
+                                       std::span<const SymMat<D>> metrics,
+                                       const Adapt2dOptions& o, Adapt2dReport& report);
+
+}  // namespace riemesh
