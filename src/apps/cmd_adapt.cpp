@@ -159,6 +159,8 @@ void run3d(const AdaptArgs& a, const Mesh& mesh) {
 
 void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
+  if (!(a.hsiz >= 0.0) || !std::isfinite(a.hsiz))
+    throw InputError("--hsiz must be a size > 0");
   const Mesh mesh = read_mesh(a.input);
   if (mesh.kind() == MeshKind::kSurface) return run_surface(a, mesh);
   if (a.aniso) throw InputError("--aniso applies to surface meshes (the 2D metric is given)");

@@ -67,6 +67,7 @@ expect_error wrong-metric adapt "$D/2d/aile.mesh" --metric "$D/formats/lshape_me
 expect_error missing adapt "$TMP/nope.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
 expect_error volume-field adapt "$D/vol/bunny_vol.mesh" --field "$D/formats/lshape.sol" --complexity 100 -o "$TMP/x.mesh"  # --field is 2D only
 expect_error hgrad adapt "$D/2d/aile.mesh" --hsiz 0.1 --hgrad 0.5 -o "$TMP/x.mesh"
+expect_error hsiz-negative adapt "$D/vol/bunny_vol.mesh" --hsiz -1 -o "$TMP/x.mesh"
 printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nTriangles\n1\n1 2 3 0\nEnd\n' > "$TMP/t.mesh"
 printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n3\n1 3\n1 2 1\n1 0 1\n1 0 1\nEnd\n' > "$TMP/bad.sol"
 expect_error non-spd adapt "$TMP/t.mesh" --metric "$TMP/bad.sol" -o "$TMP/x.mesh"
