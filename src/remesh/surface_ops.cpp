@@ -61,9 +61,78 @@ double to_triangle(const Vec3& p, const Vec3 (&c)[3]) {
 
 using Tri3 = std::array<Vec3, 3>;
 
-double to_tri(const Vec3& p, const Tri3& t) {
-  return norm(p - closest_point_on_triangle(p, t[0], t[1], t[2]));
-}
+/// "Is p within hausd of one of these triangles?", with per-triangle rejections computed once:
+/// the triangle's box grown by hausd, then its plane (a point farther than hausd from the plane
+/// is farther from the triangle), then the exact point-triangle distance. The triangle that
+/// answered yes last is tried first (consecutive points come from the same grid cell).
+class NearTest {
+ public:
+  NearTest(const std::vector<Tri3>& tris, double hausd) : hausd_(hausd), h2_(hausd * hausd) {
+    items_.reserve(tris.size());
+    for (const Tri3& t : tris) {
+      Item it{t, t[0], t[0], cross(t[1] - t[0], t[2] - t[0]), {}, false};
+      for (const Vec3& p : t)
+        for (int c = 0; c < 3; ++c) {
+          it.lo[c] = std::min(it.lo[c], p[c]);
+          it.hi[c] = std::max(it.hi[c], p[c]);
+        }
+      for (int c = 0; c < 3; ++c) {
+        it.lo[c] -= hausd;
+        it.hi[c] += hausd;
+      }
+      const double l = norm(it.n);
+      it.flat = l > 0.0;
+      it.n = it.flat ? (1.0 / l) * it.n : Vec3{};
+      for (int e = 0; e < 3; ++e) {
+        const Vec3 w = cross(it.n, t[(e + 1) % 3] - t[e]);
+        const double lw = norm(w);
+        it.flat = it.flat && lw > 0.0;
+        it.inward[e] = lw > 0.0 ? (1.0 / lw) * w : Vec3{};
+      }
+      items_.push_back(it);
+    }
+  }
+  bool operator()(const Vec3& p) {
+    const std::size_t n = items_.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = last_ + k < n ? last_ + k : last_ + k - n;
+      if (close(p, items_[i])) {
+        last_ = i;
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  struct Item {
+    Tri3 t;
+    Vec3 lo, hi, n;
+    Vec3 inward[3];  // in-plane unit normals of the edges, toward the inside
+    bool flat = false;  // non-degenerate: n and inward[] are unit vectors
+  };
+  bool close(const Vec3& p, const Item& it) const {
+    for (int c = 0; c < 3; ++c)
+      if (p[c] < it.lo[c] || p[c] > it.hi[c]) return false;
+    if (std::abs(dot(p - it.t[0], it.n)) > hausd_) return false;
+    if (it.flat) {
+      // Signed distances to the edges' lines in the plane: all >= 0, the projection is inside and
+      // the distance is the plane's; one below -hausd, the point is farther than hausd.
+      bool inside = true;
+      for (int e = 0; e < 3; ++e) {
+        const double side = dot(p - it.t[e], it.inward[e]);
+        if (side < -hausd_) return false;
+        inside = inside && side >= 0.0;
+      }
+      if (inside) return true;
+    }
+    const Vec3 d = p - closest_point_on_triangle(p, it.t[0], it.t[1], it.t[2]);
+    return dot(d, d) <= h2_;
+  }
+  std::vector<Item> items_;
+  double hausd_, h2_;
+  std::size_t last_ = 0;
+};
 
 /// The A -> B half of the Hausdorff check: input check points within hausd of the old triangles
 /// stay within hausd of the new ones (the new triangles cover the same footprint, so a point
@@ -82,29 +151,9 @@ bool keeps_input_close(const State& s, const std::vector<Tri3>& old_t,
   thread_local std::vector<Vec3> pts;  // scratch reused across calls (no shared state)
   pts.clear();
   s.geo->check_points(lo, hi, pts);
-  // Planes of the triangles: a point farther than hausd from a triangle's plane is farther from
-  // the triangle (cheap rejection before the exact distance).
-  auto plane_far = [hausd](const Vec3& p, const Tri3& t) {
-    const Vec3 n = cross(t[1] - t[0], t[2] - t[0]);
-    const double l = norm(n);
-    return l > 0.0 && std::abs(dot(p - t[0], n)) > hausd * l;
-  };
-  // Consecutive points come from the same grid cell: try the triangle that covered the last one
-  // first.
-  std::size_t last = 0;
-  auto near = [&](const Vec3& p, const std::vector<Tri3>& tris) {
-    const std::size_t n = tris.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t i = (last + k) % n;
-      if (!plane_far(p, tris[i]) && to_tri(p, tris[i]) <= hausd) {
-        last = i;
-        return true;
-      }
-    }
-    return false;
-  };
+  NearTest near_new(new_t, hausd), near_old(old_t, hausd);
   for (const Vec3& p : pts)
-    if (!near(p, new_t) && near(p, old_t)) return false;  // covered before, not any more
+    if (!near_new(p) && near_old(p)) return false;  // covered before, not any more
   return true;
 }
 
