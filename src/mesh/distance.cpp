@@ -85,15 +85,43 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
   return a + (vb * inv) * ab + (vc * inv) * ac;
 }
 
+TriangleProbe::TriangleProbe(const Vec3& pa, const Vec3& pb, const Vec3& pc) : a(pa), b(pb), c(pc) {
+  const Vec3 ab = b - a, ac = c - a;
+  const Vec3 nn = cross(ab, ac);
+  // Same degeneracy threshold as closest_point_on_triangle.
+  flat = dot(nn, nn) > 1e-28 * dot(ab, ab) * dot(ac, ac);
+  if (!flat) return;
+  n = (1.0 / norm(nn)) * nn;
+  const Vec3 corner[3] = {a, b, c};
+  for (int e = 0; e < 3; ++e) {
+    const Vec3 w = cross(n, corner[(e + 1) % 3] - corner[e]);
+    inward[e] = (1.0 / norm(w)) * w;
+  }
+}
+
+bool TriangleProbe::within(const Vec3& p, double r, double r2) const {
+  if (flat) {
+    if (std::abs(dot(p - a, n)) > r) return false;
+    // Signed distances to the edge lines: all >= 0, the projection is inside and the distance is
+    // the plane's; one below -r, the point is farther than r.
+    const double s0 = dot(p - a, inward[0]), s1 = dot(p - b, inward[1]), s2 = dot(p - c, inward[2]);
+    if (s0 < -r || s1 < -r || s2 < -r) return false;
+    if (s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0) return true;
+  }
+  return dist2(p, closest_point_on_triangle(p, a, b, c)) <= r2;
+}
+
 TriangleTree::TriangleTree(const Mesh& mesh) {
   require_triangles_3d(mesh);
   const std::size_t nt = mesh.num_triangles();
-  tri_.resize(3 * nt);
+  tri_.resize(nt);
   std::vector<double> centroid(3 * nt);
   for (std::size_t t = 0; t < nt; ++t) {
-    for (int i = 0; i < 3; ++i) tri_[3 * t + i] = vertex_at(mesh, mesh.triangles[3 * t + i]);
+    tri_[t] = TriangleProbe(vertex_at(mesh, mesh.triangles[3 * t]),
+                            vertex_at(mesh, mesh.triangles[3 * t + 1]),
+                            vertex_at(mesh, mesh.triangles[3 * t + 2]));
     for (int c = 0; c < 3; ++c)
-      centroid[3 * t + c] = (tri_[3 * t][c] + tri_[3 * t + 1][c] + tri_[3 * t + 2][c]) / 3.0;
+      centroid[3 * t + c] = (tri_[t].a[c] + tri_[t].b[c] + tri_[t].c[c]) / 3.0;
   }
   order_.resize(nt);
   std::iota(order_.begin(), order_.end(), Id{0});
@@ -113,9 +141,9 @@ int TriangleTree::build(int first, int count, std::vector<double>& centroid) {
   for (int k = first; k < first + count; ++k) {
     const auto t = static_cast<std::size_t>(order_[static_cast<std::size_t>(k)]);
     for (int c = 0; c < 3; ++c) {
-      for (int i = 0; i < 3; ++i) {
-        node.lo[c] = std::min(node.lo[c], tri_[3 * t + i][c]);
-        node.hi[c] = std::max(node.hi[c], tri_[3 * t + i][c]);
+      for (const Vec3* q : {&tri_[t].a, &tri_[t].b, &tri_[t].c}) {
+        node.lo[c] = std::min(node.lo[c], (*q)[c]);
+        node.hi[c] = std::max(node.hi[c], (*q)[c]);
       }
       clo[c] = std::min(clo[c], centroid[3 * t + c]);
       chi[c] = std::max(chi[c], centroid[3 * t + c]);
@@ -145,8 +173,8 @@ int TriangleTree::build(int first, int count, std::vector<double>& centroid) {
 }
 
 void TriangleTree::consider(const Vec3& p, Id t, Nearest& best) const {
-  const auto k = 3 * static_cast<std::size_t>(t);
-  const Vec3 q = closest_point_on_triangle(p, tri_[k], tri_[k + 1], tri_[k + 2]);
+  const TriangleProbe& tp = tri_[static_cast<std::size_t>(t)];
+  const Vec3 q = closest_point_on_triangle(p, tp.a, tp.b, tp.c);
   const double d = std::sqrt(dist2(p, q));
   if (d < best.distance || (d == best.distance && t < best.triangle)) {
     best.distance = d;
@@ -180,10 +208,8 @@ TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, Id hint) const {
 }
 
 bool TriangleTree::within(const Vec3& p, double r, Id* hint) const {
-  auto close = [&](Id t) {
-    const auto k = 3 * static_cast<std::size_t>(t);
-    return dist2(p, closest_point_on_triangle(p, tri_[k], tri_[k + 1], tri_[k + 2])) <= r * r;
-  };
+  const double r2 = r * r;
+  auto close = [&](Id t) { return tri_[static_cast<std::size_t>(t)].within(p, r, r2); };
   if (hint && *hint != kNoId && static_cast<std::size_t>(*hint) < num_triangles() && close(*hint))
     return true;
   int stack[128];
@@ -220,11 +246,11 @@ void TriangleTree::overlapping(const Vec3& lo, const Vec3& hi, std::vector<Id>& 
     if (n.left < 0) {
       for (int k = n.first; k < n.first + n.count; ++k) {
         const Id t = order_[static_cast<std::size_t>(k)];
-        const auto i = 3 * static_cast<std::size_t>(t);
+        const TriangleProbe& tp = tri_[static_cast<std::size_t>(t)];
         bool hit = true;
         for (int c = 0; c < 3; ++c) {
-          const double tlo = std::min({tri_[i][c], tri_[i + 1][c], tri_[i + 2][c]});
-          const double thi = std::max({tri_[i][c], tri_[i + 1][c], tri_[i + 2][c]});
+          const double tlo = std::min({tp.a[c], tp.b[c], tp.c[c]});
+          const double thi = std::max({tp.a[c], tp.b[c], tp.c[c]});
           hit = hit && tlo <= hi[c] && thi >= lo[c];
         }
         if (hit) out.push_back(t);

@@ -16,6 +16,21 @@ namespace riemesh {
 /// closest point of the segment or point they reduce to).
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// Triangle abc prepared for many "is p within r of it?" questions: the plane and the three
+/// edge lines in the plane reject most far points and answer for points above the inside without
+/// the exact closest point, which is computed only in the band around the edges.
+struct TriangleProbe {
+  Vec3 a{}, b{}, c{};
+  Vec3 n{};          ///< unit normal (zero when degenerate)
+  Vec3 inward[3]{};  ///< unit in-plane normals of the edges ab, bc, ca, toward the inside
+  bool flat = false;  ///< non-degenerate: n and inward are unit vectors
+
+  TriangleProbe() = default;
+  TriangleProbe(const Vec3& pa, const Vec3& pb, const Vec3& pc);
+  /// Whether dist(p, abc) <= r (r2 = r²), exact up to rounding.
+  bool within(const Vec3& p, double r, double r2) const;
+};
+
 /// Bounding-volume hierarchy (axis-aligned boxes, median splits) over the triangles of a mesh,
 /// for nearest-point queries in O(log n) on typical surfaces.
 class TriangleTree {
@@ -36,7 +51,7 @@ class TriangleTree {
   /// Whether some triangle is within distance r of p (stops at the first one found; `hint` is
   /// tried first and, when not kNoId, receives the triangle found). Cheaper than nearest.
   bool within(const Vec3& p, double r, Id* hint = nullptr) const;
-  std::size_t num_triangles() const { return tri_.size() / 3; }
+  std::size_t num_triangles() const { return tri_.size(); }
   /// The triangles whose bounding boxes overlap the box [lo, hi], appended to `out`.
   void overlapping(const Vec3& lo, const Vec3& hi, std::vector<Id>& out) const;
 
@@ -49,7 +64,7 @@ class TriangleTree {
   int build(int first, int count, std::vector<double>& centroid);
   void consider(const Vec3& p, Id t, Nearest& best) const;
 
-  std::vector<Vec3> tri_;  // 3 corners per triangle
+  std::vector<TriangleProbe> tri_;  // per triangle: corners and the within() tests
   std::vector<Id> order_;  // triangle ids, grouped by leaf
   std::vector<Node> nodes_;
 };

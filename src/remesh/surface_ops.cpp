@@ -70,25 +70,12 @@ class NearTest {
   NearTest(const std::vector<Tri3>& tris, double hausd) : hausd_(hausd), h2_(hausd * hausd) {
     items_.reserve(tris.size());
     for (const Tri3& t : tris) {
-      Item it{t, t[0], t[0], cross(t[1] - t[0], t[2] - t[0]), {}, false};
+      Item it{TriangleProbe(t[0], t[1], t[2]), t[0], t[0]};
       for (const Vec3& p : t)
         for (int c = 0; c < 3; ++c) {
-          it.lo[c] = std::min(it.lo[c], p[c]);
-          it.hi[c] = std::max(it.hi[c], p[c]);
+          it.lo[c] = std::min(it.lo[c], p[c] - hausd);
+          it.hi[c] = std::max(it.hi[c], p[c] + hausd);
         }
-      for (int c = 0; c < 3; ++c) {
-        it.lo[c] -= hausd;
-        it.hi[c] += hausd;
-      }
-      const double l = norm(it.n);
-      it.flat = l > 0.0;
-      it.n = it.flat ? (1.0 / l) * it.n : Vec3{};
-      for (int e = 0; e < 3; ++e) {
-        const Vec3 w = cross(it.n, t[(e + 1) % 3] - t[e]);
-        const double lw = norm(w);
-        it.flat = it.flat && lw > 0.0;
-        it.inward[e] = lw > 0.0 ? (1.0 / lw) * w : Vec3{};
-      }
       items_.push_back(it);
     }
   }
@@ -106,28 +93,13 @@ class NearTest {
 
  private:
   struct Item {
-    Tri3 t;
-    Vec3 lo, hi, n;
-    Vec3 inward[3];  // in-plane unit normals of the edges, toward the inside
-    bool flat = false;  // non-degenerate: n and inward[] are unit vectors
+    TriangleProbe probe;
+    Vec3 lo, hi;  // the triangle's box grown by hausd
   };
   bool close(const Vec3& p, const Item& it) const {
     for (int c = 0; c < 3; ++c)
       if (p[c] < it.lo[c] || p[c] > it.hi[c]) return false;
-    if (std::abs(dot(p - it.t[0], it.n)) > hausd_) return false;
-    if (it.flat) {
-      // Signed distances to the edges' lines in the plane: all >= 0, the projection is inside and
-      // the distance is the plane's; one below -hausd, the point is farther than hausd.
-      bool inside = true;
-      for (int e = 0; e < 3; ++e) {
-        const double side = dot(p - it.t[e], it.inward[e]);
-        if (side < -hausd_) return false;
-        inside = inside && side >= 0.0;
-      }
-      if (inside) return true;
-    }
-    const Vec3 d = p - closest_point_on_triangle(p, it.t[0], it.t[1], it.t[2]);
-    return dot(d, d) <= h2_;
+    return it.probe.within(p, hausd_, h2_);
   }
   std::vector<Item> items_;
   double hausd_, h2_;

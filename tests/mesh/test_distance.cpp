@@ -77,6 +77,32 @@ TEST(Distance, TreeMatchesBruteForce) {
   }
 }
 
+TEST(Distance, ProbeAgreesWithTheClosestPoint) {
+  // TriangleProbe::within (plane and edge-band rejections, inside shortcut) answers as the exact
+  // distance does, on random triangles (some needle-like or degenerate) and points near them.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int near = 0, far = 0;
+  for (int k = 0; k < 400; ++k) {
+    Vec3 a{{u(rng), u(rng), u(rng)}}, b{{u(rng), u(rng), u(rng)}}, c{{u(rng), u(rng), u(rng)}};
+    if (k % 10 == 0) c = a + 0.5 * (b - a);                  // collinear
+    if (k % 10 == 1) c = a + 1e-9 * Vec3{{u(rng), u(rng), u(rng)}};  // needle
+    if (k % 10 == 2) b = a;                                   // two equal corners
+    const TriangleProbe probe(a, b, c);
+    for (int j = 0; j < 50; ++j) {
+      const Vec3 p{{u(rng), u(rng), u(rng)}};
+      const double d = norm(p - closest_point_on_triangle(p, a, b, c));
+      for (double r : {0.05, 0.2, 0.5}) {
+        if (std::abs(d - r) < 1e-12) continue;  // rounding may go either way
+        EXPECT_EQ(probe.within(p, r, r * r), d <= r) << k << " " << j << " " << r;
+        (d <= r ? near : far) += 1;
+      }
+    }
+  }
+  EXPECT_GT(near, 1000);  // both answers are exercised
+  EXPECT_GT(far, 1000);
+}
+
 TEST(Distance, ParallelPlanes) {
   // Two squares 0.1 apart, triangulated differently: every sample is exactly 0.1 away.
   const Mesh a = square(5, 1.0, 0.0, false), b = square(7, 1.0, 0.1, true);
