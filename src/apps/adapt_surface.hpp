@@ -4,6 +4,7 @@
 #include <string>
 
 #include "mesh/mesh.hpp"
+#include "metric/hessian_metric.hpp"
 #include "remesh/surface_adapt.hpp"
 
 namespace riemesh::cli {
@@ -11,6 +12,12 @@ namespace riemesh::cli {
 struct SurfaceAdaptArgs {
   std::string input, output;
   std::string metric;  ///< .sol with a 3D tensor or a size per vertex (may be empty)
+  /// --field: a solution .sol whose tangent Hessian gives an Lp metric of complexity
+  /// `hessian.complexity`, intersected with the geometric one (may be empty).
+  std::string field, field_name;
+  HessianMetricOptions hessian;
+  /// --fields/--out-fields: vertex fields transferred to the output (P1 from the nearest point).
+  std::string fields, out_fields;
   SurfaceAdaptOptions options;
   bool quiet = false;
 };

@@ -112,13 +112,27 @@ void print_pass(const PassStats& s, int verbosity, const char* elements = "trian
 
 /// The surface branch: geometric sizes from --hausd, capped by --hsiz (issue #6).
 void run_surface(const AdaptArgs& a, const Mesh& mesh) {
-  if (!a.field.empty() || a.optim)
-    throw InputError(a.input + ": surface remeshing takes --hausd, --metric and --hsiz/--hmin/"
-                     "--hmax so far (no --field or --optim)");
+  if (a.optim)
+    throw InputError(a.input + ": surface remeshing takes --hausd, --metric, --field and "
+                     "--hsiz/--hmin/--hmax (no --optim)");
+  if (!a.field.empty() && a.recovery != "lsq")
+    throw InputError("--recovery: surfaces use the least-squares tangent fit only (lsq)");
+  if (!a.out_metric.empty())
+    throw InputError("--out-metric is not written for surfaces yet");
   SurfaceAdaptArgs s;
   s.input = a.input;
   s.output = a.output;
   s.metric = a.metric;
+  s.field = a.field;
+  s.field_name = a.field_name;
+  s.fields = a.fields;
+  s.out_fields = a.out_fields;
+  s.hessian.norm = parse_norm(a.norm);
+  s.hessian.complexity = a.complexity;
+  s.hessian.hmin = a.opt.hmin;
+  s.hessian.hmax = a.opt.hmax;
+  s.hessian.aniso_max = a.aniso_max;
+  if (!a.field.empty()) s.hessian.validate();
   s.options.hausd = a.opt.hausd;
   s.options.hsiz = a.hsiz;
   s.options.hmin = a.opt.hmin;
@@ -162,9 +176,11 @@ void run(AdaptArgs& a) {
   if (!(a.hsiz >= 0.0) || !std::isfinite(a.hsiz))
     throw InputError("--hsiz must be a size > 0");
   const Mesh mesh = read_mesh(a.input);
-  if (mesh.kind() == MeshKind::kSurface) return run_surface(a, mesh);
-  if (a.aniso) throw InputError("--aniso applies to surface meshes (the 2D metric is given)");
-  const int sources = (a.hsiz > 0.0) + !a.metric.empty() + !a.field.empty() + a.optim;
+  const bool surface = mesh.kind() == MeshKind::kSurface;
+  if (a.aniso && !surface)
+    throw InputError("--aniso applies to surface meshes (the 2D metric is given)");
+  // On a surface --hsiz caps the geometric sizes: it combines with the other sources.
+  const int sources = (!surface && a.hsiz > 0.0) + !a.metric.empty() + !a.field.empty() + a.optim;
   if (sources > 1)
     throw InputError("--metric, --hsiz, --field and --optim contradict: give one of them");
   if (!a.field.empty() && !(a.complexity > 0.0))
@@ -182,6 +198,7 @@ void run(AdaptArgs& a) {
   }
   if (!a.fields.empty() && a.out_fields.empty())
     throw InputError("--fields needs --out-fields OUT.sol for the transferred fields");
+  if (surface) return run_surface(a, mesh);
   if (sources == 0)
     throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");
   a.opt.insert = !a.noinsert;
@@ -211,8 +228,9 @@ void register_adapt(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "adapt",
       "Remesh a planar triangle mesh or a tetrahedral volume to a metric field (unit mesh in "
-      "the metric). 3D: planar boundary patches are remeshed with the volume; curved boundary "
-      "surfaces are kept as given (--nosurf semantics) until the surface remesher lands");
+      "the metric), or a surface (triangles in 3D) to geometric sizes within --hausd. Volumes: "
+      "planar boundary patches are remeshed with the volume; curved boundary surfaces are kept "
+      "as given (--nosurf semantics) for now");
   cmd->add_option("input,--in", a->input, "Input mesh (.mesh, .meshb, .msh)")->required();
   cmd->add_option("-o,--output,--out", a->output, "Output mesh (.mesh, .meshb, .msh, .vtu)");
   cmd->add_option("--metric,--met,--sol", a->metric,
@@ -220,7 +238,7 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--out-metric", a->out_metric, "Write the metric at the output vertices (.sol)");
   cmd->add_option("--field", a->field,
                   "Solution (.sol): adapt to its Lp-optimal Hessian metric of complexity N and "
-                  "transfer it (to --out-fields, default OUT.sol)");
+                  "transfer it (to --out-fields, default OUT.sol); planar meshes and surfaces");
   cmd->add_option("--field-name", a->field_name, "Scalar field of --field by name or 0-based index");
   cmd->add_option("--complexity", a->complexity, "Target complexity N with --field");
   cmd->add_option("--norm", a->norm, "Lp norm of the metric with --field (1, 2, ..., inf)")

@@ -11,18 +11,36 @@
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
 #include "metric/metric.hpp"
+#include "remesh/surface_fields.hpp"
 
 namespace riemesh::cli {
 void run_adapt_surface(const SurfaceAdaptArgs& args, const Mesh& mesh) {
   const auto start = std::chrono::steady_clock::now();
   SurfaceAdaptOptions options = args.options;
   if (!args.metric.empty()) options.metric = read_metric_file<3>(args.metric, mesh);
+  MetricReport field_report;
+  if (!args.field.empty()) {
+    const std::vector<Field> sol = read_sol(args.field, mesh);
+    const Field& u = select_field(sol, args.field_name, args.field);
+    const std::vector<SymMat3> hessians = recover_surface_hessian(mesh, u.values);
+    options.metric = surface_hessian_metric(mesh, hessians, args.hessian, &field_report);
+  }
+  const std::vector<Field> fields =
+      args.fields.empty() ? std::vector<Field>{} : read_sol(args.fields, mesh);
   SurfaceAdaptReport r;
   const Mesh out = adapt_surface(mesh, options, &r);
+  // Transferred before anything is written: a failure leaves no file.
+  const std::vector<Field> moved = fields.empty() ? fields : transfer_surface_p1(mesh, fields, out);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_mesh(out, args.output);
+  if (!args.fields.empty()) write_sol(args.out_fields, moved, 3);
   if (args.quiet) return;
+  if (!args.field.empty())
+    std::fprintf(stderr,
+                 "riemesh: field metric: complexity %.0f (a unit mesh of it: about %.0f "
+                 "triangles), intersected with the geometric metric\n",
+                 field_report.complexity, field_report.predicted_elements);
   std::fprintf(stderr,
                "riemesh: surface %zu -> %zu triangles, %zu vertices (%d cycles: %zu splits, %zu "
                "collapses, %zu swaps, %zu moves); %zu feature edges and %zu corners in the "

@@ -40,6 +40,40 @@ json=$("$R" distance "$IN" "$TMP/aniso.mesh" --json)
 /usr/bin/python3 -c "import json,sys; sys.exit(0 if json.loads(sys.argv[1])['hausdorff'] <= 0.0028 else 1)" "$json" && ok adapt-surface-aniso-hausdorff || ko "adapt-surface-aniso-hausdorff: $json"
 expect_error adapt-aniso-planar adapt "$SHARED/data/2d/aile.mesh" -o "$TMP/y.mesh" --hsiz 1 --aniso
 expect_error adapt-surface-metric-missing adapt "$IN" -o "$TMP/x.mesh" --metric "$TMP/none.sol"
-expect_error adapt-surface-field adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/size.sol" --complexity 100
+# --field: the tangent-plane Hessian metric of a solution (a front across the rotor) intersected
+# with the geometric one; the solution is transferred next to the output (OUT.sol).
+/usr/bin/python3 - "$IN" "$TMP/u.sol" <<'PY'
+import math, sys
+lines = open(sys.argv[1]).read().split("\n")
+i = next(k for k, l in enumerate(lines) if l.strip() == "Vertices")
+n = int(lines[i + 1])
+xs = [float(lines[i + 2 + k].split()[0]) for k in range(n)]
+with open(sys.argv[2], "w") as f:
+    f.write("MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n%d\n1 1\n" % n)
+    f.write("".join("%.17g\n" % math.tanh(30 * x) for x in xs) + "End\n")
+PY
+"$R" adapt "$IN" -o "$TMP/field.mesh" --hausd 0.0028 --field "$TMP/u.sol" --complexity 2000 --aniso 2>"$TMP/err3"; code=$?
+n5=$(grep -A1 '^Triangles' "$TMP/field.mesh" | tail -1); nv5=$(grep -A1 '^Vertices' "$TMP/field.mesh" | tail -1)
+if [ $code -eq 0 ] && grep -q "field metric: complexity 2000" "$TMP/err3" && [ "$n5" -gt "$n4" ] &&
+   "$R" check "$TMP/field.mesh" >/dev/null; then
+  ok "adapt-surface-field ($n4 -> $n5)"
+else
+  ko "adapt-surface-field: $code $n4 $n5 $(cat "$TMP/err3")"
+fi
+if /usr/bin/python3 - "$TMP/field.sol" "$nv5" <<'PY'
+import sys
+t = open(sys.argv[1]).read().split()
+k = t.index("SolAtVertices")
+n = int(t[k + 1])
+vals = [float(x) for x in t[k + 4:k + 4 + n]]
+sys.exit(0 if n == int(sys.argv[2]) and all(-1 <= v <= 1 for v in vals) and min(vals) < -0.9 and max(vals) > 0.9 else 1)
+PY
+then ok adapt-surface-field-transferred; else ko adapt-surface-field-transferred; fi
+{ printf 'MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n3\n1 1\n0\n1\n2\nEnd\n'; } >"$TMP/short.sol"
+expect_error adapt-surface-field-count adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/short.sol" --complexity 100
+expect_error adapt-surface-field-no-complexity adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/u.sol"
+expect_error adapt-surface-field-and-metric adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/u.sol" --complexity 100 --metric "$TMP/size.sol"
+expect_error adapt-surface-field-recovery adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/u.sol" --complexity 100 --recovery l2
+expect_error adapt-surface-optim adapt "$IN" -o "$TMP/x.mesh" --optim
 expect_no_file adapt-surface-no-output "$TMP/x.mesh"
 exit $fail
