@@ -3,7 +3,8 @@
 --hausd (a fraction of the bounding-box diagonal, as in PEERS.md's mmgs table), run
 `riemesh adapt`, then measure the two-sided Hausdorff distance to the input with
 `riemesh distance` (lattice order 4 on every triangle), the triangle count, the minimum and mean
-quality (4√3 A / Σ l²), the validity (`riemesh check`) and the wall time (median of --runs).
+quality (4√3 A / Σ l²), the validity (`riemesh check`), the wall time and the CPU time
+(user + system of the run, robust to a loaded machine; medians of --runs).
 
 usage: bench/surface_bench.py [--riemesh build/riemesh] [--data ../shared/data/surf]
                               [--hausd 0.002,0.0005] [--runs 3] [--json OUT.json] [--aniso]
@@ -65,21 +66,25 @@ def main():
     a = ap.parse_args()
     rows = []
     tmp = tempfile.mkdtemp()
-    print("| surface | hausd | input tris | output tris | measured / hausd | q min | q mean | valid | wall s "
+    print("| surface | hausd | input tris | output tris | measured / hausd | q min | q mean | valid | wall s | cpu s "
           "| mmgs tris | mmgs measured/hausd | mmgs q min | mmgs wall s |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name in ["bunny", "elephant", "fandisk", "rotor"]:
         src = os.path.join(a.data, name + ".mesh")
         diag = bbox_diagonal(src)
         for frac in [float(x) for x in a.hausd.split(",")]:
             hausd = frac * diag
             out = os.path.join(tmp, "%s_%g.mesh" % (name, frac))
-            times = []
+            times, cpus = [], []
             for _ in range(a.runs):
                 t0 = time.perf_counter()
+                c0 = os.times()
                 subprocess.run([a.riemesh, "adapt", src, "-o", out, "--hausd", repr(hausd), "--quiet"]
                                + (["--aniso"] if a.aniso else []), check=True)
+                c1 = os.times()
                 times.append(time.perf_counter() - t0)
+                # CPU time of the child (user + system): robust to a loaded machine.
+                cpus.append(c1.children_user - c0.children_user + c1.children_system - c0.children_system)
             d = json.loads(subprocess.run([a.riemesh, "distance", src, out, "--json"], check=True,
                                           capture_output=True, text=True).stdout)
             valid = subprocess.run([a.riemesh, "check", out], capture_output=True).returncode == 0
@@ -87,13 +92,13 @@ def main():
             tin = quality(src)[0]
             row = dict(surface=name, hausd_fraction=frac, hausd=hausd, input_tris=tin, output_tris=ntri,
                        hausdorff=d["hausdorff"], ratio=d["hausdorff"] / hausd, q_min=qmin, q_mean=qmean,
-                       valid=valid, wall_s=statistics.median(times))
+                       valid=valid, wall_s=statistics.median(times), cpu_s=statistics.median(cpus))
             rows.append(row)
             mm = MMGS.get((name, frac))
             mms = "| %d | %.3f | %.3f | %.2f |" % (mm[0], mm[1], mm[2], mm[4]) if mm else "| | | | |"
-            print("| %s | %g%% | %d | %d | %.3f | %.3f | %.3f | %s | %.2f %s" % (
+            print("| %s | %g%% | %d | %d | %.3f | %.3f | %.3f | %s | %.2f | %.2f %s" % (
                 name, 100 * frac, tin, ntri, row["ratio"], qmin, qmean, "yes" if valid else "NO",
-                row["wall_s"], mms))
+                row["wall_s"], row["cpu_s"], mms))
             sys.stdout.flush()
     if a.json:
         with open(a.json, "w") as f:
