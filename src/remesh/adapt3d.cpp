@@ -27,7 +27,7 @@ constexpr double kSwapBelow = 0.6;                 // swaps are tried around tet
 constexpr double kSwapMaxLength = 1.5;            // swaps create no edge longer than this
 constexpr double kBad = 0.45;                      // tets below this are removed by collapses
 constexpr double kBadMaxLength = 1.6;               // ... creating edges no longer than this
-constexpr double kVeryShort = 0.55;                // shorter edges go with those limits too
+constexpr double kVeryShort = 0.6;                 // shorter edges go with those limits too
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
 
 struct Candidate {
