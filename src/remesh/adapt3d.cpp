@@ -15,6 +15,7 @@
 #include "remesh/pass_summary.hpp"
 #include "remesh/prepare_metrics.hpp"
 #include "remesh/remesh3d_context.hpp"
+#include "remesh/sliver3d.hpp"
 
 namespace riemesh {
 namespace {
@@ -26,7 +27,7 @@ constexpr double kSwapBelow = 0.6;                 // swaps are tried around tet
 constexpr double kSwapMaxLength = 1.5;            // swaps create no edge longer than this
 constexpr double kBad = 0.45;                      // tets below this are removed by collapses
 constexpr double kBadMaxLength = 1.6;               // ... creating edges no longer than this
-constexpr double kVeryShort = 0.55;                // shorter edges go with those limits too
+constexpr double kVeryShort = 0.6;                 // shorter edges go with those limits too
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
 
 struct Candidate {
@@ -293,6 +294,10 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
       if (options.insert) st.collapses += bad_tet_sweep(m, st);
       if (options.swap) st.swaps += swap_sweep(m, st);
     }
+    // Last: sliver removal around the tets still below the quality target.
+    SliverLimits sl;
+    sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
+    sliver_sweeps(ctx, sl, st);
     summarize(m, st);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);

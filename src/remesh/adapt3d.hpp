@@ -4,8 +4,9 @@
 //
 // Method (BOOK.md §1, §3, §7), as adapt2d: metrics clipped to [hmin, hmax] and graded; the input
 // is the background mesh (new vertices take the log-Euclidean interpolation of the INPUT field);
-// passes of edge splits (> √2), collapses (< 0.9), edge and face swaps on bad tets, and
-// smoothing, until the lengths settle.
+// passes of edge splits (> √2, at ⌊n/2⌋/n of the metric length), collapses (< 0.9), edge and face
+// swaps on bad tets, smoothing and, last, sliver removal (sliver3d.hpp), until the lengths
+// settle.
 //
 // Boundary (until the surface remesher lands): a boundary patch (the listed faces of one ref)
 // that is planar is remeshed with the volume: its edges are split at points of the plane, its

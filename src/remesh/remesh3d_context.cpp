@@ -15,12 +15,18 @@ std::vector<double> flatten(std::span<const SymMat3> metrics) {
   return out;
 }
 
-/// Fraction t of the way from a to b where half the metric length lies on each side, for sizes
-/// varying geometrically along the edge (as in 2D).
-double metric_midpoint(double la, double lb) {
+/// Where to split an edge of metric length L (sizes varying geometrically from a to b): at the
+/// fraction k/n of its metric length, n = max(2, round(L)), k = floor(n/2), so that repeated
+/// splits cut it into n pieces of length L/n ~ 1 instead of 2^j pieces (bisection overshoots:
+/// the first run from a coarse mesh went to 3x the final count before collapsing). As in 2D.
+double split_fraction(double la, double lb) {
   const double q = lb / la;
-  if (std::abs(q - 1.0) < 1e-9) return 0.5;
-  return std::log(0.5 * (q + 1.0)) / std::log(q);
+  const bool uniform = std::abs(q - 1.0) < 1e-9;
+  const double total = uniform ? la : la * (q - 1.0) / std::log(q);
+  const long n = std::max(2L, std::lround(total));
+  const double f = static_cast<double>(n / 2) / static_cast<double>(n);
+  if (uniform) return f;
+  return std::log(1.0 + f * (q - 1.0)) / std::log(q);
 }
 
 /// The refs of the listed faces holding edge (a, b) of the shell; false for an interface face
@@ -152,7 +158,7 @@ bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
     }
   }
   const Vec3 ab = mesh_.xyz[b] - mesh_.xyz[a];
-  const double t = metric_midpoint(length(mesh_.metric[a], ab), length(mesh_.metric[b], ab));
+  const double t = split_fraction(length(mesh_.metric[a], ab), length(mesh_.metric[b], ab));
   out.p = mesh_.xyz[a] + t * ab;
   out.metric = metric_for(out.p, a);
   return true;
@@ -190,15 +196,23 @@ bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out) const {
   }
   if (wsum == 0.0) return false;
   out.p = (1.0 / wsum) * sum;
-  if (k == VertexKind::kPlanar) {
-    const Plane* pl = plane(mesh_.vplane[2 * v]);
-    out.p = out.p - (dot(pl->n, out.p) - pl->d) * pl->n;
-  } else if (k == VertexKind::kRidge) {  // onto the line through p where the two planes meet
-    const Vec3 d = normalize(cross(plane(mesh_.vplane[2 * v])->n, plane(mesh_.vplane[2 * v + 1])->n));
-    out.p = p + dot(out.p - p, d) * d;
-  }
+  if (!constrain(v, out.p)) return false;
   out.kind = k;
   out.metric = metric_for(out.p, v);
+  return true;
+}
+
+bool Remesh3dContext::constrain(Id v, Vec3& p) const {
+  const VertexKind k = mesh_.vkind[v];
+  if (k == VertexKind::kFixed) return false;
+  if (k == VertexKind::kPlanar) {
+    const Plane* pl = plane(mesh_.vplane[2 * v]);
+    p = p - (dot(pl->n, p) - pl->d) * pl->n;
+  } else if (k == VertexKind::kRidge) {  // onto the line through v where the two planes meet
+    const Vec3& o = mesh_.xyz[v];
+    const Vec3 d = normalize(cross(plane(mesh_.vplane[2 * v])->n, plane(mesh_.vplane[2 * v + 1])->n));
+    p = o + dot(p - o, d) * d;
+  }
   return true;
 }
 

@@ -22,7 +22,7 @@ class Remesh3dContext {
   /// (ref1, ref2, edge ref) triples of the input's ridge Edges, for to_mesh.
   const std::vector<std::int32_t>& edge_refs() const { return edge_refs_; }
 
-  /// The vertex to insert on edge (a, b) (its metric midpoint) and its kind; false when the
+  /// The vertex to insert on edge (a, b) (at floor(n/2)/n of its metric length L, n = round(L)) and its kind; false when the
   /// boundary rules forbid splitting the edge. `hint`: a tet that may hold the edge.
   bool split_point(Id a, Id b, NewVertex3& out, Id hint = kNoId) const;
 
@@ -33,6 +33,10 @@ class Remesh3dContext {
   /// projected on its plane for a planar boundary vertex, on its line for a ridge vertex.
   /// False when v may not move.
   bool smoothing_target(Id v, NewVertex3& out) const;
+
+  /// Puts p on v's plane (planar boundary vertex) or on its line (ridge vertex, the line through
+  /// v's position); false when v may not move (fixed).
+  bool constrain(Id v, Vec3& p) const;
 
   /// Records, for vertex v just created or moved, the background tet of the last metric_for.
   void inherit_hint(Id v);

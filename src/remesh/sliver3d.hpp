@@ -1,0 +1,31 @@
+#pragma once
+// Sliver removal for the 3D remesher (internal to remesh/): the final optimisation of every
+// pass, aimed at the tets below a quality target, with bounded sweeps.
+#include "remesh/adapt2d.hpp"
+#include "remesh/remesh3d_context.hpp"
+
+namespace riemesh {
+
+struct SliverLimits {
+  double target = 0.55;      ///< tets below this quality are worked on
+  double max_length = 1.6;   ///< no swap or collapse creates a longer edge (metric)
+  int sweeps = 4;            ///< at most this many sweeps over the bad tets
+  double budget = 0.02;      ///< each sweep works on the worst tets only, this fraction of all
+  bool swap = true, move = true, collapse = true;  ///< the operators allowed
+};
+
+/// Moves v (in its plane or on its line when on the boundary) to raise the worst quality of its
+/// ball: candidates are the weighted mean of the ideal apexes over the faces opposite v (the
+/// point making each ball tet regular in its metric, weights growing as the tets get worse),
+/// the ideal apex of the worst tet, and those moves at half and a quarter. kApplied when the
+/// ball's worst quality went up.
+Outcome optimise_vertex(Remesh3dContext& ctx, Id v);
+
+/// For each tet below limits.target, worst first (at most max(100, budget × tets) of them:
+/// far from adapted, most tets are bad and the sweeps of the pass deal with them): edge swaps of its 6 edges, face swaps of its
+/// 4 faces, optimisation of its 4 vertices, collapses of its edges (shortest first) that do not
+/// lower the ball's worst quality. Repeated while something changed, at most limits.sweeps
+/// times. Returns the number of operations applied (swaps, moves and collapses added to st).
+long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& st);
+
+}  // namespace riemesh
