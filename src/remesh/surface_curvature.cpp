@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 
+#include "core/dense_solve.hpp"
 #include "core/eigen.hpp"
 #include "core/error.hpp"
 
@@ -12,33 +13,6 @@ namespace riemesh {
 namespace {
 
 constexpr int kUnknowns = 5;  // a b c d e of z = a x² + b xy + c y² + d x + e y
-
-/// Solves the n x n system A c = r in place by Gaussian elimination with partial pivoting;
-/// false when a pivot is below 1e-10 of the largest diagonal entry (rank-deficient fit).
-bool solve(double (&a)[kUnknowns][kUnknowns], double (&r)[kUnknowns], int n) {
-  double scale = 0.0;
-  for (int i = 0; i < n; ++i) scale = std::max(scale, std::abs(a[i][i]));
-  if (!(scale > 0.0)) return false;
-  for (int k = 0; k < n; ++k) {
-    int piv = k;
-    for (int i = k + 1; i < n; ++i)
-      if (std::abs(a[i][k]) > std::abs(a[piv][k])) piv = i;
-    if (!(std::abs(a[piv][k]) > 1e-10 * scale)) return false;
-    std::swap(a[k], a[piv]);
-    std::swap(r[k], r[piv]);
-    for (int i = k + 1; i < n; ++i) {
-      const double f = a[i][k] / a[k][k];
-      for (int j = k; j < n; ++j) a[i][j] -= f * a[k][j];
-      r[i] -= f * r[k];
-    }
-  }
-  for (int k = n - 1; k >= 0; --k) {
-    double s = r[k];
-    for (int j = k + 1; j < n; ++j) s -= a[k][j] * r[j];
-    r[k] = s / a[k][k];
-  }
-  return true;
-}
 
 SurfaceGeometry flat_geometry(const Vec3& n, const Vec3& t1, const Vec3& t2) {
   SurfaceGeometry g{};
@@ -134,7 +108,7 @@ VertexCurvature fit_quadric(const Vec3& p, const Vec3& n_in, const std::vector<V
       r[i] += phi[i] * z;
     }
   }
-  if (!solve(a, r, kUnknowns)) return out;
+  if (!solve_dense(a, r)) return out;
   // Back to unscaled coordinates: z = len·z'(x/len, y/len) divides the quadratic terms by len.
   const double qa = r[0] / len, qb = r[1] / len, qc = r[2] / len, qd = r[3], qe = r[4];
   const SurfaceGeometry g = surface_geometry({{1.0, 0.0, qd}}, {{0.0, 1.0, qe}},

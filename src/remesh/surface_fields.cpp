@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/dense_solve.hpp"
 #include "core/eigen.hpp"
 #include "core/error.hpp"
 #include "mesh/adjacency.hpp"
@@ -61,34 +62,6 @@ void two_rings(const Mesh& mesh, const Adjacency& adj, Id v, std::vector<Id>& ri
   std::sort(ring.begin(), ring.end());
   ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
   ring.erase(std::remove(ring.begin(), ring.end(), v), ring.end());
-}
-
-/// Solves the n x n system a x = b in place (partial pivoting); false when singular relative to
-/// the largest pivot scale.
-template <int N>
-bool solve_dense(double (&a)[N][N], double (&b)[N]) {
-  double scale = 0.0;
-  for (int i = 0; i < N; ++i) scale = std::max(scale, std::abs(a[i][i]));
-  if (!(scale > 0.0)) return false;
-  for (int k = 0; k < N; ++k) {
-    int p = k;
-    for (int i = k + 1; i < N; ++i)
-      if (std::abs(a[i][k]) > std::abs(a[p][k])) p = i;
-    if (!(std::abs(a[p][k]) > 1e-10 * scale)) return false;
-    std::swap(a[p], a[k]);
-    std::swap(b[p], b[k]);
-    for (int i = k + 1; i < N; ++i) {
-      const double f = a[i][k] / a[k][k];
-      for (int j = k; j < N; ++j) a[i][j] -= f * a[k][j];
-      b[i] -= f * b[k];
-    }
-  }
-  for (int k = N - 1; k >= 0; --k) {
-    double s = b[k];
-    for (int j = k + 1; j < N; ++j) s -= a[k][j] * b[j];
-    b[k] = s / a[k][k];
-  }
-  return true;
 }
 
 /// The tangent 2x2 block of a 3D tensor in the basis (t1, t2).
@@ -171,7 +144,7 @@ std::vector<SymMat3> recover_surface_hessian(const Mesh& surface, std::span<cons
         for (int j = 0; j < 5; ++j) a[i][j] += phi[i] * phi[j];
       }
     }
-    if (!solve_dense<5>(a, b)) continue;
+    if (!solve_dense(a, b)) continue;
     const double s2 = 1.0 / (rho * rho);
     const SymMat2 h{{b[2] * s2, b[3] * s2, b[4] * s2}};
     out[v] = embed(h, fr.t1[v], fr.t2[v], fr.n[v], 0.0);
