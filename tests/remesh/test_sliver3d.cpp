@@ -8,27 +8,13 @@
 #include "mesh/fixtures.hpp"
 #include "metric/metric.hpp"
 #include "remesh/sliver3d.hpp"
+#include "tet_test_util.hpp"
 
 using namespace riemesh;
+using riemesh::test::volume;
+using riemesh::test::worst_quality;
 
 namespace {
-
-double worst_quality(const TetMesh& m) {
-  double q = 1.0;
-  for (std::size_t t = 0; t < m.tet_capacity(); ++t)
-    if (m.tet_alive(static_cast<Id>(t))) q = std::min(q, tet_quality(m, static_cast<Id>(t)));
-  return q;
-}
-
-double volume(const TetMesh& m) {
-  double s = 0;
-  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
-    if (!m.tet_alive(static_cast<Id>(t))) continue;
-    const Id* v = &m.tv[4 * t];
-    s += tet_volume(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]], m.xyz[v[3]]);
-  }
-  return s;
-}
 
 /// The live tet of worst quality.
 Id worst_tet(const TetMesh& m) {

@@ -9,24 +9,17 @@
 #include "mesh/fixtures.hpp"
 #include "metric/metric.hpp"
 #include "remesh/ops3d.hpp"
+#include "tet_test_util.hpp"
 
 using namespace riemesh;
+using riemesh::test::volume;
+using riemesh::test::worst_quality;
 
 namespace {
 
 TetMesh cube_tet_mesh(int n) {
   const Mesh cube = unit_cube(n);
   return build_tet_mesh(cube, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()));
-}
-
-double volume(const TetMesh& m) {
-  double s = 0;
-  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
-    if (!m.tet_alive(static_cast<Id>(t))) continue;
-    const Id* v = &m.tv[4 * t];
-    s += tet_volume(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]], m.xyz[v[3]]);
-  }
-  return s;
 }
 
 }  // namespace
