@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <vector>
 
 #include "core/error.hpp"
 
@@ -15,8 +14,15 @@ namespace {
 // Expansion arithmetic (Shewchuk 1997, §2). An expansion is a sum of doubles that do not overlap
 // (their significant bits occupy disjoint ranges), stored by increasing magnitude with zeros
 // removed; the empty expansion is zero. Exact as long as nothing overflows or underflows.
+// Expansions live in fixed-size arrays on the stack: the capacity N is a compile-time bound on
+// the length (each operation's result type carries the bound of its operands), so the exact path
+// never allocates.
 
-using Expansion = std::vector<double>;
+template <int N>
+struct Expansion {
+  int n = 0;
+  double c[N];  // c[0..n) are the components; the rest is never read
+};
 
 /// x + y = a + b exactly, x = fl(a + b) (Knuth's branch-free two-sum).
 inline void two_sum(double a, double b, double& x, double& y) {
@@ -38,136 +44,177 @@ inline void two_product(double a, double b, double& x, double& y) {
   y = std::fma(a, b, -x);
 }
 
-/// e + f: merge by magnitude, then a chain of two-sums (Shewchuk's Fast-Expansion-Sum, which
-/// needs round-to-nearest-even; zero components are dropped).
-Expansion add(const Expansion& e, const Expansion& f) {
-  if (e.empty()) return f;
-  if (f.empty()) return e;
-  Expansion g(e.size() + f.size());
-  std::merge(e.begin(), e.end(), f.begin(), f.end(), g.begin(),
-             [](double u, double v) { return std::fabs(u) < std::fabs(v); });
-  Expansion h;
-  h.reserve(g.size());
-  double q = g[0];
-  for (std::size_t i = 1; i < g.size(); ++i) {
+/// e + sign·f (sign = ±1): the components merged by magnitude, then a chain of two-sums
+/// (Shewchuk's Fast-Expansion-Sum, which needs round-to-nearest-even; zero components dropped).
+template <int A, int B>
+Expansion<A + B> add(const Expansion<A>& e, const Expansion<B>& f, double sign) {
+  Expansion<A + B> h;
+  int i = 0, j = 0;
+  const auto next = [&]() {
+    if (j == f.n || (i < e.n && std::fabs(e.c[i]) < std::fabs(f.c[j]))) return e.c[i++];
+    return sign * f.c[j++];
+  };
+  if (e.n + f.n == 0) return h;
+  double q = next();
+  while (i < e.n || j < f.n) {
     double sum, err;
-    two_sum(q, g[i], sum, err);
-    if (err != 0.0) h.push_back(err);
+    two_sum(q, next(), sum, err);
+    if (err != 0.0) h.c[h.n++] = err;
     q = sum;
   }
-  if (q != 0.0) h.push_back(q);
+  if (q != 0.0) h.c[h.n++] = q;
   return h;
 }
 
-Expansion negate(Expansion e) {
-  for (double& c : e) c = -c;
-  return e;
+template <int A, int B>
+Expansion<A + B> operator+(const Expansion<A>& e, const Expansion<B>& f) {
+  return add(e, f, 1.0);
+}
+
+template <int A, int B>
+Expansion<A + B> operator-(const Expansion<A>& e, const Expansion<B>& f) {
+  return add(e, f, -1.0);
 }
 
 /// e * b (Shewchuk's Scale-Expansion, zero components dropped).
-Expansion scale(const Expansion& e, double b) {
-  Expansion h;
-  if (e.empty() || b == 0.0) return h;
-  h.reserve(2 * e.size());
+template <int A>
+Expansion<2 * A> operator*(const Expansion<A>& e, double b) {
+  Expansion<2 * A> h;
+  if (e.n == 0 || b == 0.0) return h;
   double q, err;
-  two_product(e[0], b, q, err);
-  if (err != 0.0) h.push_back(err);
-  for (std::size_t i = 1; i < e.size(); ++i) {
+  two_product(e.c[0], b, q, err);
+  if (err != 0.0) h.c[h.n++] = err;
+  for (int i = 1; i < e.n; ++i) {
     double p_hi, p_lo, sum;
-    two_product(e[i], b, p_hi, p_lo);
+    two_product(e.c[i], b, p_hi, p_lo);
     two_sum(q, p_lo, sum, err);
-    if (err != 0.0) h.push_back(err);
+    if (err != 0.0) h.c[h.n++] = err;
     fast_two_sum(p_hi, sum, q, err);
-    if (err != 0.0) h.push_back(err);
+    if (err != 0.0) h.c[h.n++] = err;
   }
-  if (q != 0.0) h.push_back(q);
+  if (q != 0.0) h.c[h.n++] = q;
   return h;
 }
 
-/// e * f: one scaled copy of the longer expansion per component of the shorter, summed.
-Expansion multiply(const Expansion& e, const Expansion& f) {
-  const Expansion& longer = e.size() >= f.size() ? e : f;
-  const Expansion& shorter = e.size() >= f.size() ? f : e;
-  Expansion result;
-  for (double c : shorter) result = add(result, scale(longer, c));
-  return result;
+/// a * b exactly, as an expansion of at most 2 components.
+inline Expansion<2> product(double a, double b) {
+  Expansion<2> h;
+  double hi, lo;
+  two_product(a, b, hi, lo);
+  if (lo != 0.0) h.c[h.n++] = lo;
+  if (hi != 0.0) h.c[h.n++] = hi;
+  return h;
 }
 
 /// The sign of an expansion is the sign of its largest component; returned as an approximation
 /// of its value.
-inline double approximate(const Expansion& e) { return e.empty() ? 0.0 : e.back(); }
-
-// ---------------------------------------------------------------------------------------------
-// Exact determinants: Laplace expansion along the first column, entries as expansions. The
-// matrices are small (at most 5 x 5) and the exact path is rare, so clarity wins over speed.
-
-constexpr int kMaxOrder = 5;
-using Matrix = Expansion[kMaxOrder][kMaxOrder];
-
-/// The determinant of m restricted to columns [col, n) and the rows set in row_mask.
-Expansion minor_det(const Matrix& m, int n, int col, unsigned row_mask) {
-  if (col == n - 1) {
-    for (int r = 0; r < n; ++r)
-      if (row_mask & (1u << r)) return m[r][col];
-  }
-  Expansion result;
-  bool positive = true;
-  for (int r = 0; r < n; ++r) {
-    if (!(row_mask & (1u << r))) continue;
-    const Expansion& entry = m[r][col];
-    if (!entry.empty()) {
-      const Expansion term = multiply(entry, minor_det(m, n, col + 1, row_mask & ~(1u << r)));
-      result = add(result, positive ? term : negate(term));
-    }
-    positive = !positive;
-  }
-  return result;
+template <int A>
+double approximate(const Expansion<A>& e) {
+  return e.n == 0 ? 0.0 : e.c[e.n - 1];
 }
 
-/// Rows are the points; columns: [|p|² (if lifted)], coordinates, 1.
-Expansion lifted_det(const double* const* pts, int npts, int dim, bool lifted) {
-  Matrix m;
-  const int n = npts;
-  for (int r = 0; r < npts; ++r) {
-    int c = 0;
-    if (lifted) {
-      Expansion lift;
-      for (int k = 0; k < dim; ++k) {
-        double hi, lo;
-        two_product(pts[r][k], pts[r][k], hi, lo);
-        Expansion sq;
-        if (lo != 0.0) sq.push_back(lo);
-        if (hi != 0.0) sq.push_back(hi);
-        lift = add(lift, sq);
-      }
-      m[r][c++] = lift;
-    }
-    for (int k = 0; k < dim; ++k)
-      m[r][c++] = pts[r][k] != 0.0 ? Expansion{pts[r][k]} : Expansion{};
-    m[r][c++] = Expansion{1.0};
+// ---------------------------------------------------------------------------------------------
+// Exact determinants of the homogeneous matrices whose rows are the points: [x, y, 1] (orient2d),
+// [x, y, z, 1] (orient3d), [x² + y², x, y, 1] (incircle), [x² + y² + z², x, y, z, 1]
+// (insphere). Laplace expansion: 2 x 2 minors of the (x, y) columns, then 3 x 3 minors with the
+// 1 column, then the z column, then the lifted one; each minor is computed once. The capacities
+// are Shewchuk's bounds (4, 12, 96, 384 / 5760 components); zero elimination keeps the actual
+// lengths short on the integer-like coordinates of degenerate inputs.
+
+/// The (x, y) minors m[i][j] = x_i y_j − x_j y_i, i < j.
+template <int P>
+void xy_minors(const double (&p)[P][3], Expansion<4> (&m)[P][P]) {
+  for (int i = 0; i < P; ++i)
+    for (int j = i + 1; j < P; ++j) m[i][j] = product(p[i][0], p[j][1]) - product(p[j][0], p[i][1]);
+}
+
+/// det[x, y, 1] over rows i < j < k: m_ij + m_jk − m_ik.
+template <int P>
+Expansion<12> det_xy1(const Expansion<4> (&m)[P][P], int i, int j, int k) {
+  return (m[i][j] + m[j][k]) - m[i][k];
+}
+
+/// det[x, y, z, 1] over rows r0 < r1 < r2 < r3, along the z column.
+template <int P>
+Expansion<96> det_xyz1(const double (&p)[P][3], const Expansion<4> (&m)[P][P], const int (&r)[4]) {
+  const Expansion<48> front = det_xy1(m, r[1], r[2], r[3]) * p[r[0]][2] -
+                              det_xy1(m, r[0], r[2], r[3]) * p[r[1]][2];
+  const Expansion<48> back = det_xy1(m, r[0], r[1], r[3]) * p[r[2]][2] -
+                             det_xy1(m, r[0], r[1], r[2]) * p[r[3]][2];
+  return front + back;
+}
+
+/// |p|² e, by scaling e by each coordinate twice (no expansion product needed).
+template <int Dim, int A>
+Expansion<(Dim == 2 ? 8 : 12) * A> lift_times(const double* p, const Expansion<A>& e) {
+  if constexpr (Dim == 2) {
+    return (e * p[0]) * p[0] + (e * p[1]) * p[1];
+  } else {
+    return ((e * p[0]) * p[0] + (e * p[1]) * p[1]) + (e * p[2]) * p[2];
   }
-  return minor_det(m, n, 0, (1u << n) - 1);
+}
+
+double det_orient2d(const double (&p)[3][3]) {
+  Expansion<4> m[3][3];
+  xy_minors(p, m);
+  return approximate(det_xy1(m, 0, 1, 2));
+}
+
+double det_incircle(const double (&p)[4][3]) {
+  Expansion<4> m[4][4];
+  xy_minors(p, m);
+  // Along the lifted column: sum over rows r of (−1)^r |p_r|² det[x, y, 1](other rows).
+  const Expansion<192> ab = lift_times<2>(p[0], det_xy1(m, 1, 2, 3)) -
+                            lift_times<2>(p[1], det_xy1(m, 0, 2, 3));
+  const Expansion<192> cd = lift_times<2>(p[2], det_xy1(m, 0, 1, 3)) -
+                            lift_times<2>(p[3], det_xy1(m, 0, 1, 2));
+  return approximate(ab + cd);
+}
+
+double det_orient3d(const double (&p)[4][3]) {
+  Expansion<4> m[4][4];
+  xy_minors(p, m);
+  return approximate(det_xyz1(p, m, {0, 1, 2, 3}));
+}
+
+double det_insphere(const double (&p)[5][3]) {
+  Expansion<4> m[5][5];
+  xy_minors(p, m);
+  const Expansion<2304> ab = lift_times<3>(p[0], det_xyz1(p, m, {1, 2, 3, 4})) -
+                             lift_times<3>(p[1], det_xyz1(p, m, {0, 2, 3, 4}));
+  const Expansion<2304> cd = lift_times<3>(p[2], det_xyz1(p, m, {0, 1, 3, 4})) -
+                             lift_times<3>(p[3], det_xyz1(p, m, {0, 1, 2, 4}));
+  const Expansion<3456> cde = cd + lift_times<3>(p[4], det_xyz1(p, m, {0, 1, 2, 3}));
+  return approximate(ab + cde);
 }
 
 /// Rescales the points by a power of two so that the largest coordinate is in [1, 2) (exact,
-/// keeps every sign), evaluates the exact determinant of the given degree and scales it back.
-double exact_rescaled(const double* const* pts, int npts, int dim, bool lifted, int degree,
-                      double sign) {
+/// keeps every sign) and, when every difference to the last point is exact, translates that
+/// point to the origin (the determinants are invariant under translation, and the zero row
+/// shortens every expansion). `det` evaluates the exact determinant, of the given degree, which
+/// is scaled back.
+template <int P, class Det>
+double exact_rescaled(const double* const (&pts)[P], int dim, int degree, double sign, Det det) {
   double largest = 0.0;
-  for (int i = 0; i < npts; ++i)
+  for (int i = 0; i < P; ++i)
     for (int k = 0; k < dim; ++k) {
       RIEMESH_CHECK(std::isfinite(pts[i][k]));
       largest = std::max(largest, std::fabs(pts[i][k]));
     }
   if (largest == 0.0) return 0.0;  // all points at the origin
   const int shift = -std::ilogb(largest);
-  double scaled[kMaxOrder][3];
-  const double* rows[kMaxOrder];
-  for (int i = 0; i < npts; ++i) {
-    for (int k = 0; k < dim; ++k) scaled[i][k] = std::ldexp(pts[i][k], shift);
-    rows[i] = scaled[i];
-  }
-  const double value = sign * approximate(lifted_det(rows, npts, dim, lifted));
+  double p[P][3] = {};
+  for (int i = 0; i < P; ++i)
+    for (int k = 0; k < dim; ++k) p[i][k] = std::ldexp(pts[i][k], shift);
+  double moved[P][3] = {};
+  bool exact_differences = true;
+  for (int i = 0; i + 1 < P; ++i)
+    for (int k = 0; k < dim; ++k) {
+      double err;
+      two_sum(p[i][k], -p[P - 1][k], moved[i][k], err);
+      exact_differences = exact_differences && err == 0.0;
+    }
+  const double value = sign * (exact_differences ? det(moved) : det(p));
   if (value == 0.0) return 0.0;
   const double back = std::ldexp(value, -shift * degree);
   return back != 0.0 ? back : std::copysign(DBL_TRUE_MIN, value);  // keep the sign
@@ -196,28 +243,28 @@ inline bool certain(double det, double permanent, double bound) {
 namespace exact {
 
 double orient2d(const double* a, const double* b, const double* c) {
-  const double* pts[] = {a, b, c};
-  return exact_rescaled(pts, 3, 2, false, 2, 1.0);
+  const double* const pts[] = {a, b, c};
+  return exact_rescaled(pts, 2, 2, 1.0, det_orient2d);
 }
 
 double incircle(const double* a, const double* b, const double* c, const double* d) {
   // det[|p|², x, y, 1] = det[x, y, |p|², 1] (cyclic column shift), > 0 inside for ccw abc.
-  const double* pts[] = {a, b, c, d};
-  return exact_rescaled(pts, 4, 2, true, 4, 1.0);
+  const double* const pts[] = {a, b, c, d};
+  return exact_rescaled(pts, 2, 4, 1.0, det_incircle);
 }
 
 double orient3d(const double* a, const double* b, const double* c, const double* d) {
   // det[x, y, z, 1] = −det(b − a, c − a, d − a).
-  const double* pts[] = {a, b, c, d};
-  return exact_rescaled(pts, 4, 3, false, 3, -1.0);
+  const double* const pts[] = {a, b, c, d};
+  return exact_rescaled(pts, 3, 3, -1.0, det_orient3d);
 }
 
 double insphere(const double* a, const double* b, const double* c, const double* d,
                 const double* e) {
   // det[x, y, z, |p|², 1] > 0 inside when det[x, y, z, 1] > 0, i.e. when orient3d < 0; moving
   // the lifted column first is an odd permutation, so det[|p|², x, y, z, 1] has our sign.
-  const double* pts[] = {a, b, c, d, e};
-  return exact_rescaled(pts, 5, 3, true, 5, 1.0);
+  const double* const pts[] = {a, b, c, d, e};
+  return exact_rescaled(pts, 3, 5, 1.0, det_insphere);
 }
 
 }  // namespace exact

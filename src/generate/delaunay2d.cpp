@@ -37,17 +37,27 @@ class Builder {
   explicit Builder(Triangulation2d& t) : t_(t) {
     const std::size_t nv = t.xy.size() / 2;
     fan_.assign(nv, kNoId);
-    t_.tri.reserve(3 * (2 * nv + 1));
-    t_.nbr.reserve(3 * (2 * nv + 1));
-    mark_.reserve(2 * nv + 1);
+    // Each insertion adds two triangles to the super-triangle: the arrays are sized once for the
+    // most there can be and trimmed by finish() (no per-triangle growth in the inner loop).
+    const std::size_t most = 2 * nv + 1;
+    t_.tri.resize(3 * most);
+    t_.nbr.resize(3 * most);
+    mark_.assign(most, 0);
   }
 
   /// The super-triangle as the first triangle.
   void start(Id s0, Id s1, Id s2) {
-    t_.tri.assign({s0, s1, s2});
-    t_.nbr.assign({kNoId, kNoId, kNoId});
-    mark_.assign(1, 0);
+    const Id first[3] = {s0, s1, s2};
+    std::copy(first, first + 3, t_.tri.begin());
+    std::fill(t_.nbr.begin(), t_.nbr.begin() + 3, kNoId);
+    num_triangles_ = 1;
     last_ = 0;
+  }
+
+  /// Trims the arrays to the triangles made.
+  void finish() {
+    t_.tri.resize(3 * num_triangles_);
+    t_.nbr.resize(3 * num_triangles_);
   }
 
   /// Inserts vertex v; returns false if it coincides with an existing vertex (then *same is it).
@@ -168,10 +178,8 @@ class Builder {
       if (k < cavity_.size()) {
         t = cavity_[k];
       } else {
-        t = static_cast<Id>(t_.tri.size() / 3);
-        t_.tri.resize(t_.tri.size() + 3);
-        t_.nbr.resize(t_.nbr.size() + 3);
-        mark_.push_back(0);
+        RIEMESH_CHECK(3 * (num_triangles_ + 1) <= t_.tri.size());
+        t = static_cast<Id>(num_triangles_++);
       }
       const BoundaryEdge& be = boundary_[k];
       Id* tv = &t_.tri[3 * t];
@@ -198,6 +206,7 @@ class Builder {
   std::vector<Id> cavity_, new_;
   std::vector<BoundaryEdge> boundary_;
   Id last_ = 0;
+  std::size_t num_triangles_ = 0;
   std::uint64_t steps_ = 0;
 };
 
@@ -272,6 +281,7 @@ Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
     builder.insert(v, &same);
     t.representative[v] = same;
   }
+  builder.finish();
   return t;
 }
 

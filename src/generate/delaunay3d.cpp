@@ -291,17 +291,20 @@ bool Delaunay3d::insert(Id v, Id* same) {
 Tetrahedralization Delaunay3d::result() const {
   Tetrahedralization out;
   const std::size_t n = mark_.size();
-  std::vector<Id> old2new(n, kNoId);
+  std::vector<Id> old2new(n);
   Id count = 0;
   for (std::size_t t = 0; t < n; ++t)
-    if (!is_ghost(static_cast<std::uint32_t>(t))) old2new[t] = count++;
-  out.tets.reserve(4 * static_cast<std::size_t>(count));
-  out.tet2tet.reserve(4 * static_cast<std::size_t>(count));
+    old2new[t] = is_ghost(static_cast<std::uint32_t>(t)) ? kNoId : count++;
+  // Sized once and written in place: no per-element capacity checks.
+  out.tets.resize(4 * static_cast<std::size_t>(count));
+  out.tet2tet.resize(4 * static_cast<std::size_t>(count));
+  Id* v = out.tets.data();
+  Id* a = out.tet2tet.data();
   for (std::size_t t = 0; t < n; ++t) {
     if (old2new[t] == kNoId) continue;
     for (int i = 0; i < 4; ++i) {
-      out.tets.push_back(tets_[t].v[i]);
-      out.tet2tet.push_back(old2new[tets_[t].n[i] >> 2]);
+      *v++ = tets_[t].v[i];
+      *a++ = old2new[tets_[t].n[i] >> 2];
     }
   }
   return out;
