@@ -115,7 +115,13 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
   return total;
 }
 
-/// Collapses the edges shorter than 1/√2, shortest first.
+/// Collapses the edges shorter than 0.9, shortest first.
+/// On a converged mesh nearly all candidates are refused by the length test in both directions
+/// (650 k of 652 k on 1.76 M triangles), and testing them in length order jumps across the mesh
+/// (a cache miss per ball). So the length test runs first in mesh order, and the sorted sweep
+/// skips the edges it refused whose ends have not been touched by a collapse since: a collapse
+/// moves no vertex and changes the neighbours of the vertices of the removed vertex's ball only
+/// (all marked), so for the others the test would give the same answer.
 long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
   TriMesh& m = ctx.mesh();
   const CollapseLimits limits{0.3, 1.45};
@@ -123,15 +129,43 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
   // from a coarse mesh overshot) may be removed even if a triangle gets up to 2x worse.
   CollapseLimits tiny = limits;
   tiny.relative_floor = 0.5;
+  std::vector<Candidate> list = candidates(m, kCollapseBelow, false);
+  // Candidates refused by length both ways, found in mesh order (vertex a first).
+  std::vector<std::uint8_t> too_long(list.size(), 0);
+  {
+    std::vector<std::size_t> order(list.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+      return list[x].a != list[y].a ? list[x].a < list[y].a : x < y;
+    });
+    for (const std::size_t i : order) {
+      const Candidate& c = list[i];
+      const CollapseLimits& lim = c.length < 0.25 ? tiny : limits;
+      too_long[i] = (m.frozen(c.a) || collapse_too_long(m, c.a, c.b, lim)) &&
+                    (m.frozen(c.b) || collapse_too_long(m, c.b, c.a, lim));
+    }
+  }
+  std::vector<std::uint8_t> touched(m.vertex_capacity(), 0);
+  thread_local Ball ball;
+  thread_local std::vector<Id> around;
   long done = 0;
-  for (const Candidate& c : candidates(m, kCollapseBelow, false)) {
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Candidate& c = list[i];
+    if (too_long[i] && !touched[c.a] && !touched[c.b]) {
+      ++st.rejected;
+      continue;
+    }
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
     const Id s = find_edge_slot(m, c.a, c.b);
     if (s == kNoId || compare_edge_length(m, c.a, c.b, kCollapseBelow) >= 0) continue;
     bool applied = false;
     for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}}) {
       if (m.frozen(from) || (m.on_curve(from) && !ctx.collapse_keeps_hausd(from, to))) continue;
+      collect_ball(m, from, ball);  // its vertices: those whose neighbours change if it goes
+      around.clear();
+      for (const Id t : ball.tris) around.insert(around.end(), &m.tv[3 * t], &m.tv[3 * t] + 3);
       if (collapse_edge(m, s, from, to, c.length < 0.25 ? tiny : limits) == Outcome::kApplied) {
+        for (const Id v : around) touched[v] = 1;
         applied = true;
         break;
       }
@@ -187,12 +221,11 @@ long swap_sweep(TriMesh& m, PassStats& st, Changes& changes, std::uint32_t since
 /// Moves each vertex whose ball holds a triangle of quality below 0.9 toward its smoothing
 /// target. Vertices in good balls are skipped: on a converged mesh that is most of them, and the
 /// triangle qualities are cached for the sweep (updated after each move). Moves shorter than
-/// 0.02 in the metric are not made (on a converged mesh they are most of them, and each costs a
-/// background query). `since` > 0: only the vertices with a ball vertex changed at or after that
-/// stamp (the others were left as they are by the sweep that began then).
-long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since) {
+/// `min_move` in the metric are not made. `since` > 0: only the vertices with a ball vertex
+/// changed at or after that stamp (the others were left as they are by the sweep that began then).
+long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since,
+                  double min_move) {
   constexpr double kGoodBall = 0.9;
-  constexpr double kMinMove = 0.02;
   TriMesh& m = ctx.mesh();
   std::vector<float> quality(m.triangle_capacity(), 0.0f);
   for (std::size_t t = 0; t < m.triangle_capacity(); ++t)
@@ -213,7 +246,7 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
     for (const Id t : ball.tris) worst = std::min(worst, quality[t]);
     if (worst >= kGoodBall) continue;
     NewVertex target;
-    if (!ctx.smoothing_target(v, target, kMinMove)) continue;
+    if (!ctx.smoothing_target(v, target, min_move)) continue;
     if (move_vertex(m, v, target.p, target.metric, target.param, 0.6) == Outcome::kApplied) {
       ctx.inherit_hint(v, v);
       changes.mark(v);
@@ -301,12 +334,19 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
       st.splits = split_sweeps(ctx, st);
       st.collapses = collapse_sweep(ctx, st);
     }
+    // On the last pass (few insertions and removals: the lengths have settled), moves shorter
+    // than 0.02 are not made: on a converged mesh of 1.76 M triangles they are 520 k of the
+    // 526 k moves, each with a background query, for no change of the quality figures. Earlier
+    // passes make them all: skipping them there slows the convergence of a refinement.
+    const bool settled =
+        st.splits + st.collapses <= static_cast<long>(m.num_live_vertices() / 200);
+    const double min_move = settled ? 0.02 : 0.0;
     std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the first sweeps of this pass
     for (int k = 0; k < 2; ++k) {
       const std::uint32_t swap_stamp = changes.begin();
       if (options.swap) st.swaps += swap_sweep(m, st, changes, swap_from);
       const std::uint32_t smooth_stamp = changes.begin();
-      if (options.move) st.moves += smooth_sweep(ctx, st, changes, smooth_from);
+      if (options.move) st.moves += smooth_sweep(ctx, st, changes, smooth_from, min_move);
       swap_from = swap_stamp, smooth_from = smooth_stamp;
     }
     summarize(m, st);

@@ -91,6 +91,12 @@ struct Side {
 
 }  // namespace
 
+bool collapse_too_long(const TriMesh& m, Id from, Id to, const CollapseLimits& lim) {
+  thread_local Ball bfrom;  // scratch reused across calls; never shared between threads
+  collect_ball(m, from, bfrom);
+  return !lengths_ok(m, bfrom, from, to, lim);
+}
+
 Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& lim) {
   thread_local Ball bfrom, bto;  // scratch reused across calls; never shared between threads
   if (!features_ok(m, slot, from)) return Outcome::kRejectedTopology;

@@ -77,6 +77,11 @@ struct CollapseLimits {
 /// Frozen vertices never go; a vertex on a feature curve only moves along its curve.
 Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& limits);
 
+/// True when collapse_edge(m, slot, from, to, limits) would be refused by its length test alone
+/// (a new edge (to, x) longer than limits.max_length). The test depends only on from's
+/// neighbours and on the positions and metrics of from's neighbours and of to.
+bool collapse_too_long(const TriMesh& m, Id from, Id to, const CollapseLimits& limits);
+
 /// Flips the interior edge at `slot` when the smaller quality of the two triangles grows by more
 /// than `min_gain`. Feature edges are never flipped.
 Outcome swap_edge(TriMesh& m, Id slot, double min_gain);
