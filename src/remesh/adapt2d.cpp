@@ -37,8 +37,11 @@ std::string num(double v) {
 /// triangles spanning more than 4096 vertex ids plus those starting more than 4096 ids away from
 /// the previous triangle's first vertex are fewer than 10% of the triangles (a Hilbert-ordered
 /// mesh of 1.76 M triangles: 3.4% + 1.9%; a lexicographic grid: 0; a random numbering: ~200%).
+/// Meshes under 16,384 vertices are always renumbered (it costs under 10 ms there, and keeps
+/// the small benchmark cases as they were).
 bool coherent_numbering(const Mesh& m) {
   constexpr long kWindow = 4096;
+  if (m.num_vertices() < 16384) return false;
   const std::size_t nt = m.num_triangles();
   std::size_t far = 0;
   long prev = 0;
@@ -220,11 +223,10 @@ long swap_sweep(TriMesh& m, PassStats& st, Changes& changes, std::uint32_t since
 
 /// Moves each vertex whose ball holds a triangle of quality below 0.9 toward its smoothing
 /// target. Vertices in good balls are skipped: on a converged mesh that is most of them, and the
-/// triangle qualities are cached for the sweep (updated after each move). Moves shorter than
-/// `min_move` in the metric are not made. `since` > 0: only the vertices with a ball vertex
-/// changed at or after that stamp (the others were left as they are by the sweep that began then).
-long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since,
-                  double min_move) {
+/// triangle qualities are cached for the sweep (updated after each move). `since` > 0: only the
+/// vertices with a ball vertex changed at or after that stamp (the others were left as they are
+/// by the sweep that began then).
+long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since) {
   constexpr double kGoodBall = 0.9;
   TriMesh& m = ctx.mesh();
   std::vector<float> quality(m.triangle_capacity(), 0.0f);
@@ -246,7 +248,7 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
     for (const Id t : ball.tris) worst = std::min(worst, quality[t]);
     if (worst >= kGoodBall) continue;
     NewVertex target;
-    if (!ctx.smoothing_target(v, target, min_move)) continue;
+    if (!ctx.smoothing_target(v, target)) continue;
     if (move_vertex(m, v, target.p, target.metric, target.param, 0.6) == Outcome::kApplied) {
       ctx.inherit_hint(v, v);
       changes.mark(v);
@@ -334,19 +336,12 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
       st.splits = split_sweeps(ctx, st);
       st.collapses = collapse_sweep(ctx, st);
     }
-    // On the last pass (few insertions and removals: the lengths have settled), moves shorter
-    // than 0.02 are not made: on a converged mesh of 1.76 M triangles they are 520 k of the
-    // 526 k moves, each with a background query, for no change of the quality figures. Earlier
-    // passes make them all: skipping them there slows the convergence of a refinement.
-    const bool settled =
-        st.splits + st.collapses <= static_cast<long>(m.num_live_vertices() / 200);
-    const double min_move = settled ? 0.02 : 0.0;
     std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the first sweeps of this pass
     for (int k = 0; k < 2; ++k) {
       const std::uint32_t swap_stamp = changes.begin();
       if (options.swap) st.swaps += swap_sweep(m, st, changes, swap_from);
       const std::uint32_t smooth_stamp = changes.begin();
-      if (options.move) st.moves += smooth_sweep(ctx, st, changes, smooth_from, min_move);
+      if (options.move) st.moves += smooth_sweep(ctx, st, changes, smooth_from);
       swap_from = swap_stamp, smooth_from = smooth_stamp;
     }
     summarize(m, st);
