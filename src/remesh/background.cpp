@@ -188,25 +188,23 @@ void BackgroundMesh<D>::build_grid() {
                [&](std::size_t c) { grid_.ids[fill[c]++] = static_cast<Id>(s); });
   }
   // Walk starts: the simplex nearest the cell centre (first in id order on ties), so that a
-  // hint-free walk crosses about half a cell.
+  // hint-free walk crosses about half a cell. Cell by cell over the lists just built (ids
+  // increase in each), the cell centre computed once per cell.
   grid_.start.assign(cells, kNoId);
-  std::vector<double> best(cells, std::numeric_limits<double>::infinity());
-  for (std::size_t s = 0; s < num_simplices(); ++s) {
-    Vec<D> centroid = Vec<D>::zero();
-    for (int i = 0; i < kVerts; ++i) centroid += coords_[simplices_[kVerts * s + i]];
-    centroid *= 1.0 / kVerts;
-    simplex_box(s, c_lo, c_hi);
-    for_box<D>(c_lo, c_hi, grid_.n, [&](std::size_t cell) {
-      Vec<D> centre{};
-      std::size_t rest = cell;
-      for (int a = 0; a < D; ++a) {
-        const auto k = rest % static_cast<std::size_t>(grid_.n[a]);
-        rest /= static_cast<std::size_t>(grid_.n[a]);
-        centre[a] = grid_.lo[a] + (static_cast<double>(k) + 0.5) * grid_.cell[a];
-      }
+  int k[D]{};  // the cell's integer coordinates, axis 0 fastest (as cell_index)
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    Vec<D> centre{};
+    for (int a = 0; a < D; ++a) centre[a] = grid_.lo[a] + (k[a] + 0.5) * grid_.cell[a];
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t x = grid_.offsets[cell]; x < grid_.offsets[cell + 1]; ++x) {
+      const std::size_t s = static_cast<std::size_t>(grid_.ids[x]);
+      Vec<D> centroid = Vec<D>::zero();
+      for (int i = 0; i < kVerts; ++i) centroid += coords_[simplices_[kVerts * s + i]];
+      centroid *= 1.0 / kVerts;
       const Vec<D> d = centroid - centre;
-      if (dot(d, d) < best[cell]) best[cell] = dot(d, d), grid_.start[cell] = static_cast<Id>(s);
-    });
+      if (dot(d, d) < best) best = dot(d, d), grid_.start[cell] = static_cast<Id>(s);
+    }
+    for (int a = 0; a < D && ++k[a] == grid_.n[a]; ++a) k[a] = 0;
   }
 }
 

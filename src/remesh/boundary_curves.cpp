@@ -254,7 +254,8 @@ BoundaryCurves build_boundary_curves(const Mesh& mesh, const CurveOptions& optio
   options.validate();
   check_input(mesh);
   const std::size_t nv = mesh.num_vertices();
-  const Adjacency adj = adjacency ? *adjacency : build_adjacency(mesh.triangles, 3, nv);
+  const Adjacency own = adjacency ? Adjacency{} : build_adjacency(mesh.triangles, 3, nv);
+  const Adjacency& adj = adjacency ? *adjacency : own;  // no copy of the caller's
 
   BoundaryCurves out;
   std::vector<Id> adj2feature;

@@ -46,12 +46,12 @@ bool lengths_ok(const TriMesh& m, const Ball& bfrom, Id from, Id to, const Colla
   for (const Id t : bfrom.tris) {
     const int i = vertex_index(m, t, from);
     const Id a = m.tv[3 * t + (i + 1) % 3];  // each neighbour is the "a" of one triangle
-    if (a != to && edge_length(m, to, a) > lim.max_length) return false;
+    if (a != to && compare_edge_length(m, to, a, lim.max_length) > 0) return false;
   }
   if (!bfrom.closed) {  // the last neighbour of an open ball is only ever a "b"
     const Id t = bfrom.tris.back();
     const Id b = m.tv[3 * t + (vertex_index(m, t, from) + 2) % 3];
-    if (b != to && edge_length(m, to, b) > lim.max_length) return false;
+    if (b != to && compare_edge_length(m, to, b, lim.max_length) > 0) return false;
   }
   return true;
 }
@@ -90,6 +90,12 @@ struct Side {
 };
 
 }  // namespace
+
+bool collapse_too_long(const TriMesh& m, Id from, Id to, const CollapseLimits& lim) {
+  thread_local Ball bfrom;  // scratch reused across calls; never shared between threads
+  collect_ball(m, from, bfrom);
+  return !lengths_ok(m, bfrom, from, to, lim);
+}
 
 Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& lim) {
   thread_local Ball bfrom, bto;  // scratch reused across calls; never shared between threads

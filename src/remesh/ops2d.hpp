@@ -17,6 +17,19 @@ inline double edge_length(const TriMesh& m, Id a, Id b) {
   return edge_length_geometric(m.metric[a], m.metric[b], m.xy[b] - m.xy[a]);
 }
 
+/// The sign of edge_length(m, a, b) − limit (0 only when equal), computing the logarithm only
+/// when needed: the closed form is the logarithmic mean of the end lengths l_a, l_b, which lies
+/// between their geometric and arithmetic means, and on a converged mesh those bounds already
+/// decide most comparisons (the margin of 1e-12 keeps every decision that of the exact value).
+inline int compare_edge_length(const TriMesh& m, Id a, Id b, double limit) {
+  const Vec2 ab = m.xy[b] - m.xy[a];
+  const double la = length(m.metric[a], ab), lb = length(m.metric[b], ab);
+  if (std::sqrt(la * lb) > limit * (1.0 + 1e-12)) return 1;
+  if (0.5 * (la + lb) < limit * (1.0 - 1e-12)) return -1;
+  const double l = la == lb ? la : std::sqrt(la * lb) * detail::sinhc(0.5 * std::log(la / lb));
+  return l > limit ? 1 : (l < limit ? -1 : 0);
+}
+
 /// Mean-ratio quality 4√3 |K|_M / Σ l_M² of triangle (pa, pb, pc) in the metric `mm` (1 for the
 /// unit equilateral triangle, <= 0 when inverted).
 inline double quality_in(const SymMat2& mm, const Vec2& pa, const Vec2& pb, const Vec2& pc) {
@@ -63,6 +76,11 @@ struct CollapseLimits {
 /// Removes vertex `from` by merging it into `to` along the edge at `slot` (which joins them).
 /// Frozen vertices never go; a vertex on a feature curve only moves along its curve.
 Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& limits);
+
+/// True when collapse_edge(m, slot, from, to, limits) would be refused by its length test alone
+/// (a new edge (to, x) longer than limits.max_length). The test depends only on from's
+/// neighbours and on the positions and metrics of from's neighbours and of to.
+bool collapse_too_long(const TriMesh& m, Id from, Id to, const CollapseLimits& limits);
 
 /// Flips the interior edge at `slot` when the smaller quality of the two triangles grows by more
 /// than `min_gain`. Feature edges are never flipped.

@@ -47,18 +47,16 @@ Remesh2dContext::Remesh2dContext(const Mesh& input, std::span<const SymMat2> met
                         static_cast<std::uint8_t>(required ? kTagRequired : kTagNone)});
   }
   std::vector<VertexCurve> vcurves(nv);
-  Mesh tagged = input;
-  tagged.vert_tag.resize(nv, kTagNone);
-  tagged.vert_ref.resize(nv, 0);
   for (std::size_t v = 0; v < nv; ++v) {
     const auto at = curves_.curves_at(static_cast<Id>(v));
-    if (curves_.corner[v]) {
-      tagged.vert_tag[v] |= kTagCorner;
-    } else if (!at.empty()) {
+    if (!curves_.corner[v] && !at.empty())
       vcurves[v] = {static_cast<std::int32_t>(at[0].curve), at[0].param};
-    }
   }
-  mesh_ = build_tri_mesh(tagged, metrics, features, vcurves, &adjacency);
+  // Corners are tagged on the TriMesh (not on a tagged copy of the input: a copy of 1.76 M
+  // triangles costs 0.15 s).
+  mesh_ = build_tri_mesh(input, metrics, features, vcurves, &adjacency);
+  for (std::size_t v = 0; v < nv; ++v)
+    if (curves_.corner[v]) mesh_.vtag[v] |= kTagCorner;
   hint_.assign(nv, kNoId);
   for (std::size_t t = 0; t < input.num_triangles(); ++t)
     for (int i = 0; i < 3; ++i) {
@@ -158,7 +156,7 @@ void Remesh2dContext::curve_neighbours(Id v, Id& prev, Id& next) const {
   next = first_before ? found[1] : found[0];
 }
 
-bool Remesh2dContext::smoothing_target(Id v, NewVertex& out) const {
+bool Remesh2dContext::smoothing_target(Id v, NewVertex& out, double min_move) const {
   if (mesh_.frozen(v)) return false;
   const std::int32_t c = mesh_.vcurve[v];
   if (c == kNoCurve) {
@@ -172,6 +170,7 @@ bool Remesh2dContext::smoothing_target(Id v, NewVertex& out) const {
       sum += mesh_.xy[x] + (mesh_.xy[v] - mesh_.xy[x]) / l;  // unit metric length from x
     }
     out.p = sum / static_cast<double>(ball.tris.size());
+    if (min_move > 0.0 && length(mesh_.metric[v], out.p - mesh_.xy[v]) < min_move) return false;
     out.curve = kNoCurve;
     out.metric = metric_for(out.p, kNoCurve, 0.0, v);
     return true;
@@ -192,6 +191,7 @@ bool Remesh2dContext::smoothing_target(Id v, NewVertex& out) const {
                                chord_deviation(curve, snew, sn) > options_.hausd))
     return false;
   out.p = point(curve, snew);
+  if (min_move > 0.0 && length(mesh_.metric[v], out.p - mesh_.xy[v]) < min_move) return false;
   out.curve = c;
   out.param = wrap_param(curve, snew);
   out.metric = metric_for(out.p, c, snew, v);

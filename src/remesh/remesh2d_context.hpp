@@ -32,8 +32,10 @@ class Remesh2dContext {
 
   /// Where smoothing would put v (inside: metric-weighted average of the unit-length points
   /// seen from its neighbours; on a curve: the curve point balancing the metric lengths to its
-  /// two curve neighbours). False when v may not move.
-  bool smoothing_target(Id v, NewVertex& out) const;
+  /// two curve neighbours). False when v may not move, or when the move would be shorter than
+  /// `min_move` in v's metric (then the background is not queried: that query is most of the
+  /// cost of smoothing a converged mesh).
+  bool smoothing_target(Id v, NewVertex& out, double min_move = 0.0) const;
 
   /// For a collapse of `from` (on a curve) into `to`: true when the chord that replaces the two
   /// curve edges at `from` stays within hausd of the curve.

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "mesh/check.hpp"
 #include "mesh/fixtures.hpp"
+#include "mesh/hilbert.hpp"
 #include "metric/edge_length.hpp"
 #include "metric/metric.hpp"
 #include "remesh/adapt2d.hpp"
@@ -120,6 +121,38 @@ TEST(Adapt2d, Deterministic) {
   EXPECT_EQ(a.mesh.coords, b.mesh.coords);
   EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
   EXPECT_EQ(a.mesh.edges, b.mesh.edges);
+}
+
+// adapt2d renumbers the input along a Hilbert curve only when its numbering is not already
+// coherent (a scrambled numbering is renumbered, a structured grid is used as it is): both paths
+// must give valid unit meshes of the same quality, each deterministic.
+TEST(Adapt2d, ScrambledAndCoherentNumberingsGiveTheSameQuality) {
+  const Mesh grid = unit_square(130, 130);  // 17,161 vertices: above the always-renumber size
+  Mesh scrambled = grid;
+  const std::size_t nv = grid.num_vertices();
+  std::vector<Id> new2old(nv);
+  for (std::size_t v = 0; v < nv; ++v) new2old[v] = static_cast<Id>((v * 2654435761u) % nv);
+  ASSERT_EQ(std::set<Id>(new2old.begin(), new2old.end()).size(), nv);  // a permutation
+  permute_vertices(scrambled, new2old);
+  Adapt2dOptions o;
+  o.hgrad = 0.0;
+  std::vector<double> in_band;
+  std::vector<std::size_t> counts;
+  for (const Mesh* m : {&grid, static_cast<const Mesh*>(&scrambled)}) {
+    const std::vector<SymMat2> met = linear_field(*m, 0.01);
+    const Adapt2dResult a = adapt2d(*m, met, o), b = adapt2d(*m, met, o);
+    EXPECT_EQ(a.mesh.coords, b.mesh.coords);
+    EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+    EXPECT_TRUE(check_mesh(a.mesh).valid());
+    EXPECT_NEAR(area(a.mesh), 1.0, 1e-12);
+    const std::vector<double> len = edge_lengths(a.mesh, 0.01);
+    in_band.push_back(std::count_if(len.begin(), len.end(), [](double l) {
+                        return l >= std::sqrt(0.5) && l <= std::sqrt(2.0);
+                      }) / static_cast<double>(len.size()));
+    counts.push_back(a.mesh.num_triangles());
+  }
+  EXPECT_GE(std::min(in_band[0], in_band[1]), 0.9);
+  EXPECT_NEAR(static_cast<double>(counts[1]) / static_cast<double>(counts[0]), 1.0, 0.05);
 }
 
 TEST(Adapt2d, BoundaryStaysOnTheSquare) {
