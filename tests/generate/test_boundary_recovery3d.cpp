@@ -138,7 +138,7 @@ Mesh schonhardt() {
   s.triangles = {0, 2, 1, 3, 4, 5};
   for (Id i = 0; i < 3; ++i) {
     const Id a = i, a1 = (i + 1) % 3, b = 3 + i, b1 = 3 + (i + 1) % 3;
-    s.triangles.insert(s.triangles.end(), {a, a1, b, a1, b1, b});
+    s.triangles.insert(s.triangles.end(), {a, a1, b1, a, b1, b});
   }
   s.vert_ref.assign(6, 0);
   s.vert_tag.assign(6, 0);
