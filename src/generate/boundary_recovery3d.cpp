@@ -14,6 +14,7 @@
 #include "core/predicates.hpp"
 #include "generate/delaunay3d.hpp"
 #include "generate/surface_delaunay3d.hpp"
+#include "mesh/self_intersection.hpp"
 
 namespace riemesh {
 
@@ -124,6 +125,15 @@ std::string vertex_pair(Id a, Id b) {
 
 Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surface_(s) {
   require_closed_surface(s);
+  const SelfIntersections crossing = find_self_intersections(s, 1);
+  if (crossing.pairs > 0) {
+    std::string msg = "the surface cannot bound a volume: it intersects itself (first: triangles ";
+    msg += std::to_string(crossing.first_a + 1);
+    msg += " and ";
+    msg += std::to_string(crossing.first_b + 1);
+    msg += ")";
+    throw InputError(msg);
+  }
   std::vector<Id> old2new(s.num_vertices(), kNoId);
   for (Id v : s.triangles) old2new[static_cast<std::size_t>(v)] = 0;
   for (std::size_t v = 0; v < old2new.size(); ++v)

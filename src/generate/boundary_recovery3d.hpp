@@ -21,9 +21,9 @@
 //   subsegments of their common edge;
 // - the tetrahedra inside are those reached from outside the hull by crossing the subfaces an odd
 //   number of times; the subfaces are written as boundary triangles with their input refs.
-// No Steiner point is placed inside the volume. A surface that needs more than
-// max_steiner_per_vertex Steiner points per surface vertex (self-intersecting surfaces never
-// converge) gives an InputError instead of a hang.
+// No Steiner point is placed inside the volume. Self-intersecting surfaces are refused up front
+// (they would never converge); a surface that needs more than max_steiner_per_vertex Steiner
+// points per surface vertex gives an InputError instead of a hang.
 #include <cstddef>
 
 #include "mesh/mesh.hpp"
@@ -55,9 +55,9 @@ struct RecoveredVolume {
 };
 
 /// The tetrahedralised volume bounded by `surface` (closed, manifold, consistently oriented, not
-/// self-intersecting; checked by require_closed_surface except self-intersection), its boundary
-/// recovered by Steiner points on the surface. Deterministic. InputError for a defective surface
-/// or when the Steiner cap is reached.
+/// self-intersecting: checked by require_closed_surface, then find_self_intersections), its
+/// boundary recovered by Steiner points on the surface. Deterministic. InputError for a defective
+/// surface (naming the defect) or when the Steiner cap is reached.
 RecoveredVolume recover_volume(const Mesh& surface, const BoundaryRecoveryOptions& options = {});
 
 }  // namespace riemesh

@@ -188,6 +188,25 @@ TEST(BoundaryRecovery3d, DefectiveSurfaceIsRefused) {
   EXPECT_THROW(recover_volume(open), InputError);
 }
 
+TEST(BoundaryRecovery3d, SelfIntersectingSurfaceIsNamed) {
+  // Two closed copies of Schönhardt's prism, the second shifted through the first.
+  Mesh s = schonhardt();
+  const Mesh b = schonhardt();
+  const Id n = static_cast<Id>(s.num_vertices());
+  for (std::size_t k = 0; k < b.coords.size(); ++k) s.coords.push_back(b.coords[k] + (k % 3 == 0 ? 0.5 : 0.0));
+  for (Id v : b.triangles) s.triangles.push_back(v + n);
+  s.vert_ref.resize(s.num_vertices(), 0);
+  s.vert_tag.resize(s.num_vertices(), 0);
+  s.tri_ref.resize(s.num_triangles(), 1);
+  s.tri_tag.resize(s.num_triangles(), 0);
+  try {
+    recover_volume(s);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("intersects itself"), std::string::npos) << e.what();
+  }
+}
+
 TEST(BoundaryRecovery3d, SharedSurfacesAreRecovered) {
   const std::string data = RIEMESH_SHARED_DATA;
   std::vector<std::pair<std::string, Mesh>> cases;
