@@ -93,8 +93,8 @@ void register_mesh(CLI::App& app) {
   auto a = std::make_shared<MeshArgs>();
   auto* cmd = app.add_subcommand(
       "mesh", "Mesh a planar domain from its boundary Edges (Delaunay, then optimisation), or the "
-              "volume inside a closed surface (Delaunay of its vertices; no 3D boundary recovery "
-              "yet: fails, writing nothing, when a surface triangle is not a Delaunay face)");
+              "volume inside a closed surface (Delaunay of its vertices, boundary recovered by "
+              "Steiner points on the surface, reported)");
   cmd->add_option("input", a->input,
                   "Domain: a 2D .mesh/.meshb/.msh whose Edges (with refs) bound it, each with "
                   "the domain on its left (outer loops counter-clockwise, holes clockwise)")

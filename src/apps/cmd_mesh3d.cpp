@@ -1,12 +1,12 @@
-// `riemesh mesh SURFACE.mesh -o VOL.mesh`: Delaunay volume of a closed surface (see
-// cmd_mesh3d.hpp); boundary recovery is not implemented, so only surfaces whose triangles are all
-// Delaunay faces of their vertices can be meshed.
+// `riemesh mesh SURFACE.mesh -o VOL.mesh`: the volume inside a closed surface, its boundary
+// recovered with Steiner points on the surface (see cmd_mesh3d.hpp and
+// generate/boundary_recovery3d.hpp).
 #include "apps/cmd_mesh3d.hpp"
 
 #include <cstdio>
 
 #include "core/error.hpp"
-#include "generate/surface_delaunay3d.hpp"
+#include "generate/boundary_recovery3d.hpp"
 #include "io/mesh_file.hpp"
 
 namespace riemesh::cli {
@@ -15,35 +15,26 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
                               const std::string& output, bool quiet) {
   if (surface.dim != 3 || !surface.tets.empty() || surface.triangles.empty())
     throw InputError(input + ": not a surface (3D triangles without tetrahedra)");
-  SurfaceDelaunay d;
+  RecoveredVolume r;
   try {
-    d = delaunay_of_surface(surface);
+    r = recover_volume(surface);
   } catch (const InputError& e) {
     std::string msg = input;
     msg += ": ";
     msg += e.what();
     throw InputError(msg);
   }
-  if (!d.conforming()) {
-    std::string msg = input;
-    msg += ": ";
-    msg += std::to_string(d.missing_faces);
-    msg += " of ";
-    msg += std::to_string(d.num_faces);
-    msg += " boundary faces (";
-    msg += std::to_string(d.missing_edges);
-    msg += " of ";
-    msg += std::to_string(d.num_edges);
-    msg += " edges) are not in the Delaunay mesh; 3D boundary recovery is not implemented yet";
-    throw InputError(msg);
+  write_mesh(r.volume, output);
+  if (!quiet) {
+    const BoundaryRecoveryStats& s = r.stats;
+    std::printf("%s: %zu vertices, %zu tetrahedra, %zu boundary triangles; %zu Steiner points "
+                "(%zu on edges, %zu in faces, %zu inside); Delaunay of the %zu surface vertices: "
+                "%zu tetrahedra, %zu faces and %zu edges missing, recovered in %zu rounds\n",
+                output.c_str(), r.volume.num_vertices(), r.volume.num_tets(),
+                r.volume.num_triangles(), s.steiner(), s.steiner_on_edges, s.steiner_in_faces,
+                s.steiner_inside, s.surface_vertices, s.delaunay_tets, s.missing_faces,
+                s.missing_edges, s.rounds);
   }
-  const Mesh volume = volume_inside(surface, d);
-  write_mesh(volume, output);
-  if (!quiet)
-    std::printf("%s: %zu vertices, %zu tetrahedra, %zu boundary triangles (Delaunay of the surface "
-                "vertices: %zu tetrahedra, no Steiner point)\n",
-                output.c_str(), volume.num_vertices(), volume.num_tets(), volume.num_triangles(),
-                d.tz.num_tets());
 }
 
 }  // namespace riemesh::cli

@@ -3,8 +3,8 @@
 // surface is validated (closed, manifold, consistently oriented), its vertices are
 // tetrahedralised by the Delaunay kernel, the surface edges and triangles missing from that
 // tetrahedralisation are counted and, when none is missing, the tetrahedra inside are kept.
-// Boundary recovery (restoring missing edges and faces, with Steiner points where unavoidable) is
-// NOT implemented: a surface whose triangles are not all Delaunay faces cannot be meshed yet.
+// Boundary recovery (restoring missing edges and faces with Steiner points) is in
+// generate/boundary_recovery3d.hpp, which reuses require_closed_surface and volume_inside.
 #include <cstddef>
 #include <vector>
 

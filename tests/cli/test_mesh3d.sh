@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# riemesh mesh on a surface: the volume inside a closed surface, or one clear error line (surface defects,
-# boundary faces missing from the Delaunay mesh since boundary recovery is not implemented).
+# riemesh mesh on a surface: the volume inside a closed surface (boundary recovered with reported
+# Steiner points), or one clear error line for surface defects.
 set -u
 . "$(dirname "$0")/cli_lib.sh"
 
@@ -29,10 +29,10 @@ expect_no_file mesh3d-open-no-output "$TMP/open_vol.mesh"
 "$R" mesh -q "$SHARED/data/surf/elephant.mesh" -o "$TMP/elephant.mesh" &&
   "$R" check "$TMP/elephant.mesh" >/dev/null && ok mesh3d-elephant || ko mesh3d-elephant
 
-# bunny.mesh: 128 triangles are not Delaunay faces; refused, nothing written.
-expect_error mesh3d-bunny-not-conforming mesh "$SHARED/data/surf/bunny.mesh" -o "$TMP/bunny.mesh"
-"$R" mesh "$SHARED/data/surf/bunny.mesh" -o "$TMP/bunny.mesh" 2>&1 |
-  grep -q "boundary faces (.* edges) are not in the Delaunay mesh; 3D boundary recovery is not implemented yet" &&
-  ok mesh3d-bunny-message || ko mesh3d-bunny-message
-expect_no_file mesh3d-bunny-no-output "$TMP/bunny.mesh"
+# bunny.mesh: 128 triangles are not Delaunay faces; boundary recovery adds Steiner points on the
+# surface, reported, and the volume is valid.
+out=$("$R" mesh "$SHARED/data/surf/bunny.mesh" -o "$TMP/bunny.mesh"); code=$?
+if [ $code -eq 0 ] && [[ "$out" =~ \ ([1-9][0-9]*)\ Steiner\ points\ \(([0-9]+)\ on\ edges,\ ([0-9]+)\ in\ faces,\ 0\ inside\) ]] &&
+   [ $((BASH_REMATCH[2] + BASH_REMATCH[3])) -eq "${BASH_REMATCH[1]}" ] &&
+   "$R" check "$TMP/bunny.mesh" >/dev/null; then ok mesh3d-bunny-recovered; else ko "mesh3d-bunny-recovered: $code $out"; fi
 exit $fail

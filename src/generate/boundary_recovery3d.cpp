@@ -1,0 +1,616 @@
+#include "generate/boundary_recovery3d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/predicates.hpp"
+#include "generate/delaunay3d.hpp"
+#include "generate/surface_delaunay3d.hpp"
+#include "mesh/self_intersection.hpp"
+
+namespace riemesh {
+
+namespace {
+
+using Tri = std::array<Id, 3>;
+
+/// Inside tets with volume <= this × (longest edge)³ are refined away (check_mesh's zero-measure
+/// tolerance is 1e-12).
+constexpr double kFlatTolerance = 1e-10;
+using Bary = std::array<double, 3>;
+
+Tri sorted3(const Tri& t) {
+  Tri s = t;
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+std::uint64_t pair_key(Id a, Id b) {
+  const auto lo = static_cast<std::uint64_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+  return hi << 32 | lo;
+}
+
+/// Sign of det(a, b, c) of three barycentric triples, exact: > 0 when a, b, c turn like the
+/// triangle's corners.
+int bary_orient(const Bary& a, const Bary& b, const Bary& c) {
+  static constexpr double kZero[3] = {0, 0, 0};
+  const double d = orient3d(kZero, a.data(), b.data(), c.data());
+  return d > 0 ? 1 : d < 0 ? -1 : 0;
+}
+
+/// How a point lies on the surface.
+enum class Kind : std::uint8_t { kVertex, kEdge, kFace };
+struct PointInfo {
+  Kind kind = Kind::kVertex;
+  Id owner = kNoId;  // input edge (kEdge) or input triangle (kFace)
+  double t = 0;      // kEdge: position along the edge, from its lower vertex
+  Bary lambda{};     // kFace: barycentric coordinates in the triangle
+};
+
+struct EdgePoint {
+  double t;
+  Id id;
+};
+
+/// An input edge a < b, its points in order of t (a at 0, b at 1), and its two triangles.
+struct InputEdge {
+  Id a, b;
+  std::vector<EdgePoint> points;
+  Id tri[2] = {kNoId, kNoId};
+};
+
+/// An input triangle: corners, the edge opposite each corner, a frame of its plane (corner 0 at
+/// the origin, corner 1 at (bx, 0), corner 2 at (cx, cy), cy > 0) and its subfaces, each turning
+/// like the corners.
+struct Facet {
+  Id c[3];
+  Id edge[3];
+  double bx = 0, cx = 0, cy = 0;
+  std::vector<Tri> sub;
+};
+
+class Recovery {
+ public:
+  Recovery(const Mesh& surface, const BoundaryRecoveryOptions& options);
+  RecoveredVolume run();
+
+ private:
+  const double* xyz(Id v) const { return &coords_[3 * static_cast<std::size_t>(v)]; }
+  Bary bary(std::size_t f, Id p) const;
+  std::array<double, 2> frame(std::size_t f, const Bary& l) const {
+    const Facet& t = facets_[f];
+    return {l[1] * t.bx + l[2] * t.cx, l[2] * t.cy};
+  }
+  std::array<double, 2> frame(std::size_t f, Id p) const { return frame(f, bary(f, p)); }
+  bool on_boundary(std::size_t f, Id a, Id b) const;
+  Id new_point(const double* p, const PointInfo& info);
+  void split_subsegment(std::size_t e, std::size_t k);
+  double split_param(const InputEdge& e, std::size_t k) const;
+  void refine_subface(std::size_t f, const Tri& s);
+  bool locate(std::size_t f, const Bary& l, std::size_t* tri, int* zero) const;
+  void insert_in_facet(std::size_t f, Id p, std::size_t tri, int zero);
+  void split_in_facet(std::size_t f, Id u, Id v, Id p);
+  void legalize(std::size_t f, std::vector<std::pair<Id, Id>>& stack);
+  std::optional<std::size_t> find_directed(std::size_t f, Id a, Id b) const;
+  Mesh volume(const Tetrahedralization& tz) const;
+  bool refine_flat_tets(const Mesh& v);
+
+  const Mesh& surface_;
+  std::vector<Id> vertices_;    // surface vertex of each input point
+  std::vector<double> coords_;  // all points, input then Steiner
+  std::vector<PointInfo> info_;
+  std::vector<InputEdge> edges_;
+  std::vector<Facet> facets_;
+  std::size_t cap_ = 0;
+  std::optional<Delaunay3d> kernel_;
+  BoundaryRecoveryStats stats_;
+};
+
+std::string vertex_pair(Id a, Id b) {
+  std::string s = "vertices ";
+  s += std::to_string(a + 1);
+  s += " and ";
+  s += std::to_string(b + 1);
+  return s;
+}
+
+Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surface_(s) {
+  require_closed_surface(s);
+  const SelfIntersections crossing = find_self_intersections(s, 1);
+  if (crossing.pairs > 0) {
+    std::string msg = "the surface cannot bound a volume: it intersects itself (first: triangles ";
+    msg += std::to_string(crossing.first_a + 1);
+    msg += " and ";
+    msg += std::to_string(crossing.first_b + 1);
+    msg += ")";
+    throw InputError(msg);
+  }
+  std::vector<Id> old2new(s.num_vertices(), kNoId);
+  for (Id v : s.triangles) old2new[static_cast<std::size_t>(v)] = 0;
+  for (std::size_t v = 0; v < old2new.size(); ++v)
+    if (old2new[v] != kNoId) {
+      old2new[v] = static_cast<Id>(vertices_.size());
+      vertices_.push_back(static_cast<Id>(v));
+      coords_.insert(coords_.end(), s.coords.begin() + static_cast<std::ptrdiff_t>(3 * v),
+                     s.coords.begin() + static_cast<std::ptrdiff_t>(3 * v + 3));
+    }
+  const std::size_t nv = vertices_.size();
+  info_.assign(nv, PointInfo{});
+  stats_.surface_vertices = nv;
+  cap_ = static_cast<std::size_t>(options.max_steiner_per_vertex * static_cast<double>(nv));
+
+  std::map<std::uint64_t, Id> edge_of;
+  facets_.resize(s.num_triangles());
+  for (std::size_t f = 0; f < facets_.size(); ++f) {
+    Facet& t = facets_[f];
+    for (int j = 0; j < 3; ++j) t.c[j] = old2new[static_cast<std::size_t>(s.triangles[3 * f + j])];
+    for (int j = 0; j < 3; ++j) {
+      const Id a = t.c[(j + 1) % 3], b = t.c[(j + 2) % 3];
+      auto [it, added] = edge_of.try_emplace(pair_key(a, b), static_cast<Id>(edges_.size()));
+      if (added) {
+        InputEdge e;
+        e.a = std::min(a, b);
+        e.b = std::max(a, b);
+        e.points = {{0.0, e.a}, {1.0, e.b}};
+        edges_.push_back(std::move(e));
+      }
+      InputEdge& e = edges_[static_cast<std::size_t>(it->second)];
+      e.tri[e.tri[0] == kNoId ? 0 : 1] = static_cast<Id>(f);
+      t.edge[j] = it->second;
+    }
+    const double* p0 = xyz(t.c[0]);
+    double u[3], w[3];
+    for (int i = 0; i < 3; ++i) {
+      u[i] = xyz(t.c[1])[i] - p0[i];
+      w[i] = xyz(t.c[2])[i] - p0[i];
+    }
+    t.bx = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    t.cx = (u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) / t.bx;
+    t.cy = std::sqrt(std::max(0.0, w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - t.cx * t.cx));
+    t.sub.push_back({t.c[0], t.c[1], t.c[2]});
+  }
+
+  std::vector<Id> order = insertion_order(coords_, InsertionOrder::kBrio);
+  kernel_.emplace(&coords_, order);
+  kernel_->reserve(2 * nv);
+  for (std::size_t k = 4; k < order.size(); ++k) {
+    Id same = kNoId;
+    if (!kernel_->insert(order[k], &same)) {
+      std::string msg = "the surface cannot bound a volume: 1 pairs of vertices at the same place (first: ";
+      msg += vertex_pair(vertices_[static_cast<std::size_t>(same)],
+                         vertices_[static_cast<std::size_t>(order[k])]);
+      msg += ")";
+      throw InputError(msg);
+    }
+  }
+}
+
+Bary Recovery::bary(std::size_t f, Id p) const {
+  const Facet& t = facets_[f];
+  const PointInfo& info = info_[static_cast<std::size_t>(p)];
+  Bary l{0, 0, 0};
+  const auto slot = [&](Id v) {
+    for (int j = 0; j < 3; ++j)
+      if (t.c[j] == v) return j;
+    RIEMESH_CHECK(false);
+    return 0;
+  };
+  switch (info.kind) {
+    case Kind::kVertex:
+      l[static_cast<std::size_t>(slot(p))] = 1;
+      break;
+    case Kind::kEdge: {
+      const InputEdge& e = edges_[static_cast<std::size_t>(info.owner)];
+      l[static_cast<std::size_t>(slot(e.a))] = 1 - info.t;
+      l[static_cast<std::size_t>(slot(e.b))] = info.t;
+      break;
+    }
+    case Kind::kFace:
+      RIEMESH_CHECK(static_cast<std::size_t>(info.owner) == f);
+      l = info.lambda;
+      break;
+  }
+  return l;
+}
+
+/// Both ends on the same side of the triangle (a subsegment: never flipped).
+bool Recovery::on_boundary(std::size_t f, Id a, Id b) const {
+  const Bary la = bary(f, a), lb = bary(f, b);
+  for (int i = 0; i < 3; ++i)
+    if (la[static_cast<std::size_t>(i)] == 0 && lb[static_cast<std::size_t>(i)] == 0) return true;
+  return false;
+}
+
+Id Recovery::new_point(const double* p, const PointInfo& info) {
+  const std::size_t steiner = info_.size() - vertices_.size();
+  if (steiner >= cap_) {
+    std::string msg = "boundary recovery gave up after ";
+    msg += std::to_string(steiner);
+    msg += " Steiner points (the cap is ";
+    msg += std::to_string(cap_ / std::max<std::size_t>(vertices_.size(), 1));
+    msg += " per surface vertex): the surface may intersect itself";
+    throw InputError(msg);
+  }
+  const auto id = static_cast<Id>(info_.size());
+  coords_.insert(coords_.end(), p, p + 3);
+  info_.push_back(info);
+  Id same = kNoId;
+  if (!kernel_->insert(id, &same)) {
+    std::string msg = "boundary recovery: a Steiner point falls on vertex ";
+    msg += std::to_string((same < static_cast<Id>(vertices_.size())
+                               ? vertices_[static_cast<std::size_t>(same)]
+                               : same) + 1);
+    msg += " (surface parts closer than rounding allows, or the surface intersects itself)";
+    throw InputError(msg);
+  }
+  if (info.kind == Kind::kEdge)
+    ++stats_.steiner_on_edges;
+  else
+    ++stats_.steiner_in_faces;
+  return id;
+}
+
+/// Where to split subsegment k of e: its middle, or, when exactly one end is an input vertex, the
+/// point at a power-of-two distance from that vertex nearest to the middle (concentric shells).
+double Recovery::split_param(const InputEdge& e, std::size_t k) const {
+  const double tp = e.points[k].t, tq = e.points[k + 1].t;
+  const double mid = 0.5 * (tp + tq);
+  if ((tp == 0) != (tq == 1)) {
+    const double* a = xyz(e.a);
+    const double* b = xyz(e.b);
+    const double length =
+        std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                  (b[2] - a[2]) * (b[2] - a[2]));
+    const double half = 0.5 * (tq - tp) * length;
+    const double d = std::exp2(std::round(std::log2(half))) / length;
+    const double t = tp == 0 ? d : 1 - d;
+    if (t > tp + 0.25 * (tq - tp) && t < tq - 0.25 * (tq - tp)) return t;
+  }
+  return mid;
+}
+
+void Recovery::split_subsegment(std::size_t ei, std::size_t k) {
+  InputEdge& e = edges_[ei];
+  const double t = split_param(e, k);
+  const Id u = e.points[k].id, v = e.points[k + 1].id;
+  if (!(t > e.points[k].t && t < e.points[k + 1].t)) {
+    std::string msg = "boundary recovery: the edge between ";
+    msg += vertex_pair(vertices_[static_cast<std::size_t>(e.a)],
+                       vertices_[static_cast<std::size_t>(e.b)]);
+    msg += " cannot be split further (surface parts closer than rounding allows)";
+    throw InputError(msg);
+  }
+  double p[3];
+  const double* a = xyz(e.a);
+  const double* b = xyz(e.b);
+  for (int i = 0; i < 3; ++i) p[i] = (1 - t) * a[i] + t * b[i];
+  PointInfo info;
+  info.kind = Kind::kEdge;
+  info.owner = static_cast<Id>(ei);
+  info.t = t;
+  const Id id = new_point(p, info);
+  e.points.insert(e.points.begin() + static_cast<std::ptrdiff_t>(k + 1), EdgePoint{t, id});
+  for (Id f : e.tri) split_in_facet(static_cast<std::size_t>(f), u, v, id);
+}
+
+std::optional<std::size_t> Recovery::find_directed(std::size_t f, Id a, Id b) const {
+  const std::vector<Tri>& sub = facets_[f].sub;
+  for (std::size_t i = 0; i < sub.size(); ++i)
+    for (int j = 0; j < 3; ++j)
+      if (sub[i][static_cast<std::size_t>(j)] == a && sub[i][static_cast<std::size_t>((j + 1) % 3)] == b)
+        return i;
+  return std::nullopt;
+}
+
+/// Rotates t so that (t[0], t[1]) = (a, b).
+Tri rotate_to(const Tri& t, Id a) {
+  if (t[0] == a) return t;
+  if (t[1] == a) return {t[1], t[2], t[0]};
+  return {t[2], t[0], t[1]};
+}
+
+void Recovery::split_in_facet(std::size_t f, Id u, Id v, Id p) {
+  std::optional<std::size_t> i = find_directed(f, u, v);
+  Id a = u;
+  if (!i) {
+    i = find_directed(f, v, u);
+    a = v;
+  }
+  RIEMESH_CHECK(i.has_value());
+  std::vector<Tri>& sub = facets_[f].sub;
+  const Tri t = rotate_to(sub[*i], a);
+  sub[*i] = {t[0], p, t[2]};
+  sub.push_back({p, t[1], t[2]});
+  std::vector<std::pair<Id, Id>> stack = {{t[1], t[2]}, {t[2], t[0]}};
+  legalize(f, stack);
+}
+
+/// Lawson flips towards the Delaunay triangulation in the facet's frame, never across a
+/// subsegment and only where the quadrilateral is strictly convex in barycentric coordinates.
+void Recovery::legalize(std::size_t f, std::vector<std::pair<Id, Id>>& stack) {
+  std::vector<Tri>& sub = facets_[f].sub;
+  std::size_t flips = 0;
+  while (!stack.empty() && flips < 64 * sub.size() + 64) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    if (on_boundary(f, a, b)) continue;
+    const std::optional<std::size_t> i = find_directed(f, a, b), j = find_directed(f, b, a);
+    if (!i || !j) continue;
+    const Id c = rotate_to(sub[*i], a)[2], d = rotate_to(sub[*j], b)[2];
+    const auto pa = frame(f, a), pb = frame(f, b), pc = frame(f, c), pd = frame(f, d);
+    if (incircle(pa.data(), pb.data(), pc.data(), pd.data()) <= 0) continue;
+    const Bary la = bary(f, a), lb = bary(f, b), lc = bary(f, c), ld = bary(f, d);
+    if (bary_orient(la, ld, lc) <= 0 || bary_orient(ld, lb, lc) <= 0) continue;
+    sub[*i] = {a, d, c};
+    sub[*j] = {d, b, c};
+    ++flips;
+    stack.insert(stack.end(), {{a, d}, {d, b}, {b, c}, {c, a}});
+  }
+}
+
+/// The subface containing l (closed) and, when l is on its side opposite vertex k, k in *zero
+/// (-1 inside, -2 on a vertex). False when no subface contains it.
+bool Recovery::locate(std::size_t f, const Bary& l, std::size_t* tri, int* zero) const {
+  const std::vector<Tri>& sub = facets_[f].sub;
+  for (std::size_t i = 0; i < sub.size(); ++i) {
+    Bary x[3];
+    for (int j = 0; j < 3; ++j) x[j] = bary(f, sub[i][static_cast<std::size_t>(j)]);
+    int o[3];
+    bool inside = true;
+    for (int j = 0; j < 3 && inside; ++j) {
+      o[j] = bary_orient(x[(j + 1) % 3], x[(j + 2) % 3], l);
+      inside = o[j] >= 0;
+    }
+    if (!inside) continue;
+    const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+    *tri = i;
+    *zero = zeros == 0 ? -1 : zeros == 1 ? (o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2) : -2;
+    return true;
+  }
+  return false;
+}
+
+void Recovery::insert_in_facet(std::size_t f, Id p, std::size_t i, int zero) {
+  std::vector<Tri>& sub = facets_[f].sub;
+  const Tri t = sub[i];
+  std::vector<std::pair<Id, Id>> stack;
+  if (zero == -1) {
+    sub[i] = {t[0], t[1], p};
+    sub.push_back({t[1], t[2], p});
+    sub.push_back({t[2], t[0], p});
+    stack = {{t[0], t[1]}, {t[1], t[2]}, {t[2], t[0]}};
+  } else {
+    // p on the side (x1, x2) opposite x0 = t[zero]; the neighbour (x2, x1, y) across it.
+    const Tri x = rotate_to(t, t[static_cast<std::size_t>(zero)]);
+    const std::optional<std::size_t> j = find_directed(f, x[2], x[1]);
+    RIEMESH_CHECK(j.has_value());
+    const Id y = rotate_to(sub[*j], x[2])[2];
+    sub[i] = {x[0], x[1], p};
+    sub.push_back({x[0], p, x[2]});
+    sub[*j] = {y, x[2], p};
+    sub.push_back({y, p, x[1]});
+    stack = {{x[0], x[1]}, {x[2], x[0]}, {y, x[2]}, {x[1], y}};
+  }
+  legalize(f, stack);
+}
+
+/// A missing subface s of facet f: a point at its circumcentre, or, if that point encroaches a
+/// subsegment of f (or leaves f), that subsegment split; the centroid when neither applies.
+void Recovery::refine_subface(std::size_t f, const Tri& s) {
+  const Facet& t = facets_[f];
+  const auto pa = frame(f, s[0]), pb = frame(f, s[1]), pc = frame(f, s[2]);
+  const double bx = pb[0] - pa[0], by = pb[1] - pa[1], cx = pc[0] - pa[0], cy = pc[1] - pa[1];
+  const double den = 2 * (bx * cy - by * cx);
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const double ox = pa[0] + (cy * b2 - by * c2) / den, oy = pa[1] + (bx * c2 - cx * b2) / den;
+  Bary l;
+  l[2] = oy / t.cy;
+  l[1] = (ox - l[2] * t.cx) / t.bx;
+  l[0] = 1 - l[1] - l[2];
+  const bool finite = std::isfinite(l[0]) && std::isfinite(l[1]) && std::isfinite(l[2]);
+  // Encroached subsegments of f: the circumcentre strictly inside their diametral circle.
+  if (finite) {
+    std::size_t best_edge = 0, best_k = 0;
+    double best = 0;
+    for (int j = 0; j < 3; ++j) {
+      const std::size_t ei = static_cast<std::size_t>(t.edge[j]);
+      const InputEdge& e = edges_[ei];
+      for (std::size_t k = 0; k + 1 < e.points.size(); ++k) {
+        const auto p = frame(f, e.points[k].id), q = frame(f, e.points[k + 1].id);
+        const double dot = (ox - p[0]) * (ox - q[0]) + (oy - p[1]) * (oy - q[1]);
+        const double len2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+        if (dot < 0 && dot / len2 < best) {
+          best = dot / len2;
+          best_edge = ei;
+          best_k = k;
+        }
+      }
+    }
+    if (best < 0) {
+      split_subsegment(best_edge, best_k);
+      return;
+    }
+  }
+  std::size_t tri = 0;
+  int zero = 0;
+  const bool usable = finite && l[0] > 0 && l[1] > 0 && l[2] > 0 && locate(f, l, &tri, &zero) &&
+                      zero != -2;
+  if (!usable) {
+    // The centroid, strictly inside s.
+    const Bary x0 = bary(f, s[0]), x1 = bary(f, s[1]), x2 = bary(f, s[2]);
+    for (std::size_t i = 0; i < 3; ++i) l[i] = (x0[i] + x1[i] + x2[i]) / 3;
+    if (!locate(f, l, &tri, &zero) || zero == -2)
+      throw Error("boundary recovery: a subface's centroid is not inside it");
+  }
+  if (zero >= 0 && on_boundary(f, facets_[f].sub[tri][static_cast<std::size_t>((zero + 1) % 3)],
+                               facets_[f].sub[tri][static_cast<std::size_t>((zero + 2) % 3)]))
+    throw Error("boundary recovery: a point inside a triangle falls on its side");
+  double p[3];
+  for (int i = 0; i < 3; ++i)
+    p[i] = l[0] * xyz(t.c[0])[i] + l[1] * xyz(t.c[1])[i] + l[2] * xyz(t.c[2])[i];
+  PointInfo info;
+  info.kind = Kind::kFace;
+  info.owner = static_cast<Id>(f);
+  info.lambda = l;
+  const Id id = new_point(p, info);
+  insert_in_facet(f, id, tri, zero);
+}
+
+Mesh Recovery::volume(const Tetrahedralization& tz) const {
+  // The refined surface (all points, the subfaces) and volume_inside on it.
+  Mesh refined;
+  refined.dim = 3;
+  refined.coords = coords_;
+  const std::size_t n = info_.size();
+  refined.vert_ref.assign(n, 0);
+  refined.vert_tag.assign(n, 0);
+  for (std::size_t k = 0; k < vertices_.size(); ++k) {
+    const auto v = static_cast<std::size_t>(vertices_[k]);
+    if (v < surface_.vert_ref.size()) refined.vert_ref[k] = surface_.vert_ref[v];
+    if (v < surface_.vert_tag.size()) refined.vert_tag[k] = surface_.vert_tag[v];
+  }
+  for (std::size_t f = 0; f < facets_.size(); ++f)
+    for (const Tri& s : facets_[f].sub) {
+      refined.triangles.insert(refined.triangles.end(), s.begin(), s.end());
+      refined.tri_ref.push_back(f < surface_.tri_ref.size() ? surface_.tri_ref[f] : 0);
+      refined.tri_tag.push_back(f < surface_.tri_tag.size() ? surface_.tri_tag[f] : 0);
+    }
+  SurfaceDelaunay d;
+  d.vertices.resize(n);
+  for (std::size_t k = 0; k < n; ++k) d.vertices[k] = static_cast<Id>(k);
+  d.coords = coords_;
+  d.tz = tz;
+  d.num_faces = refined.num_triangles();
+  return volume_inside(refined, d);
+}
+
+/// Inside tets of (relative) volume near zero: four nearly cocircular surface points, whose
+/// tetrahedron rounding made positive, both diagonals present. Each such tet gets a subsegment
+/// of its edges split, or else a subface of its faces refined, which puts a point inside its
+/// circumsphere. False when there is none (or none can be treated).
+bool Recovery::refine_flat_tets(const Mesh& v) {
+  std::map<std::uint64_t, std::pair<std::size_t, std::size_t>> subsegment;
+  std::map<Tri, std::pair<std::size_t, Tri>> subface;
+  bool acted = false;
+  for (std::size_t t = 0; t < v.num_tets(); ++t) {
+    const Id* q = &v.tets[4 * t];
+    const double* p[4] = {xyz(q[0]), xyz(q[1]), xyz(q[2]), xyz(q[3])};
+    double longest = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k) d2 += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
+        longest = std::max(longest, d2);
+      }
+    longest = std::sqrt(longest);
+    const double vol = orient3d(p[0], p[1], p[2], p[3]) / 6;
+    if (vol > kFlatTolerance * longest * longest * longest) continue;
+    if (subsegment.empty()) {
+      for (std::size_t e = 0; e < edges_.size(); ++e)
+        for (std::size_t k = 0; k + 1 < edges_[e].points.size(); ++k)
+          subsegment[pair_key(edges_[e].points[k].id, edges_[e].points[k + 1].id)] = {e, k};
+      for (std::size_t f = 0; f < facets_.size(); ++f)
+        for (const Tri& s : facets_[f].sub) subface[sorted3(s)] = {f, s};
+    }
+    bool done = false;
+    for (int i = 0; i < 4 && !done; ++i)
+      for (int j = i + 1; j < 4 && !done; ++j) {
+        const auto it = subsegment.find(pair_key(q[i], q[j]));
+        if (it == subsegment.end()) continue;
+        // Still a subsegment (an earlier split this round may have changed it)?
+        const InputEdge& e = edges_[it->second.first];
+        const std::size_t k = it->second.second;
+        if (k + 1 < e.points.size() && pair_key(e.points[k].id, e.points[k + 1].id) == it->first) {
+          split_subsegment(it->second.first, k);
+          acted = done = true;
+        }
+      }
+    for (int i = 0; i < 4 && !done; ++i) {
+      const auto it = subface.find(sorted3({q[(i + 1) % 4], q[(i + 2) % 4], q[(i + 3) % 4]}));
+      if (it == subface.end()) continue;
+      const auto& [f, s] = it->second;
+      const std::vector<Tri>& sub = facets_[f].sub;
+      if (std::find(sub.begin(), sub.end(), s) != sub.end()) {
+        refine_subface(f, s);
+        acted = done = true;
+      }
+    }
+  }
+  return acted;
+}
+
+RecoveredVolume Recovery::run() {
+  for (;;) {
+    const Tetrahedralization tz = kernel_->result();
+    std::vector<std::uint64_t> tet_edges;
+    std::vector<Tri> tet_faces;
+    tet_edges.reserve(6 * tz.num_tets());
+    tet_faces.reserve(4 * tz.num_tets());
+    for (std::size_t t = 0; t < tz.num_tets(); ++t) {
+      const Id* v = &tz.tets[4 * t];
+      for (int i = 0; i < 4; ++i) {
+        for (int j = i + 1; j < 4; ++j) tet_edges.push_back(pair_key(v[i], v[j]));
+        tet_faces.push_back(sorted3({v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]}));
+      }
+    }
+    std::sort(tet_edges.begin(), tet_edges.end());
+    tet_edges.erase(std::unique(tet_edges.begin(), tet_edges.end()), tet_edges.end());
+    std::sort(tet_faces.begin(), tet_faces.end());
+    tet_faces.erase(std::unique(tet_faces.begin(), tet_faces.end()), tet_faces.end());
+    const auto has_edge = [&](Id a, Id b) {
+      return std::binary_search(tet_edges.begin(), tet_edges.end(), pair_key(a, b));
+    };
+    const auto has_face = [&](const Tri& s) {
+      return std::binary_search(tet_faces.begin(), tet_faces.end(), sorted3(s));
+    };
+
+    std::vector<std::pair<std::size_t, std::size_t>> missing_segments;
+    for (std::size_t e = 0; e < edges_.size(); ++e)
+      for (std::size_t k = 0; k + 1 < edges_[e].points.size(); ++k)
+        if (!has_edge(edges_[e].points[k].id, edges_[e].points[k + 1].id))
+          missing_segments.push_back({e, k});
+    std::vector<std::pair<std::size_t, Tri>> missing_faces;
+    for (std::size_t f = 0; f < facets_.size(); ++f)
+      for (const Tri& s : facets_[f].sub)
+        if (!has_face(s)) missing_faces.push_back({f, s});
+    if (stats_.rounds == 0) {
+      stats_.delaunay_tets = tz.num_tets();
+      stats_.missing_edges = missing_segments.size();
+      stats_.missing_faces = missing_faces.size();
+    }
+    ++stats_.rounds;
+    if (!missing_segments.empty()) {
+      // Later subsegments of an edge first, so that the indices of earlier ones stay valid.
+      for (auto it = missing_segments.rbegin(); it != missing_segments.rend(); ++it)
+        split_subsegment(it->first, it->second);
+      continue;
+    }
+    if (missing_faces.empty()) {
+      Mesh v = volume(tz);
+      if (!refine_flat_tets(v)) return {std::move(v), stats_};
+      continue;
+    }
+    for (const auto& [f, s] : missing_faces) {
+      const std::vector<Tri>& sub = facets_[f].sub;
+      if (std::find(sub.begin(), sub.end(), s) != sub.end()) refine_subface(f, s);
+    }
+  }
+}
+
+}  // namespace
+
+RecoveredVolume recover_volume(const Mesh& surface, const BoundaryRecoveryOptions& options) {
+  Recovery r(surface, options);
+  return r.run();
+}
+
+}  // namespace riemesh

@@ -1,0 +1,63 @@
+#pragma once
+// Conforming boundary recovery in 3D (BOOK.md §4: Delaunay meshing, boundary recovery): the volume
+// bounded by a closed surface, tetrahedralised so that the surface is a union of tet faces, with
+// Steiner points added on the surface only where the Delaunay tetrahedralisation of the surface
+// vertices misses part of it.
+//
+// Method (conforming Delaunay recovery; every point goes through the incremental kernel
+// Delaunay3d::insert, so the tetrahedralisation stays Delaunay throughout):
+// - each input triangle keeps its own triangulation into "subfaces" (points on its edges and
+//   inside it), made by splitting and then Lawson-flipping towards 2D Delaunay in the triangle's
+//   plane; the subsegments (pieces of the input edges) are never flipped;
+// - rounds: every subsegment that is no tet edge is split (at its middle, or, next to an input
+//   vertex, at a power-of-two distance from that vertex — Shewchuk's concentric shells, so that
+//   small input angles do not cascade); when all are present, every subface that is no tet face
+//   gets a point at its circumcentre, unless that point encroaches (lies in the diametral circle
+//   of) a subsegment of its triangle or falls outside, in which case that subsegment is split;
+// - a point on edge (a, b) is (1 − t)·a + t·b and a point in triangle abc is λ0·a + λ1·b + λ2·c
+//   (barycentric interpolation), so the recovered boundary lies on the input surface up to
+//   rounding; the subface triangulations are built on the exact barycentric coordinates (points
+//   of an edge are exactly collinear there), so neighbouring triangles always agree on the
+//   subsegments of their common edge;
+// - the tetrahedra inside are those reached from outside the hull by crossing the subfaces an odd
+//   number of times; the subfaces are written as boundary triangles with their input refs.
+// No Steiner point is placed inside the volume. Self-intersecting surfaces are refused up front
+// (they would never converge); a surface that needs more than max_steiner_per_vertex Steiner
+// points per surface vertex gives an InputError instead of a hang.
+#include <cstddef>
+
+#include "mesh/mesh.hpp"
+
+namespace riemesh {
+
+struct BoundaryRecoveryOptions {
+  double max_steiner_per_vertex = 20;  // cap on Steiner points / surface vertices
+};
+
+struct BoundaryRecoveryStats {
+  std::size_t surface_vertices = 0;
+  std::size_t delaunay_tets = 0;     // tetrahedralisation of the surface vertices alone
+  std::size_t missing_edges = 0;     // surface edges that are no edge of that tetrahedralisation
+  std::size_t missing_faces = 0;     // surface triangles that are no face of it
+  std::size_t steiner_on_edges = 0;  // Steiner points on input edges
+  std::size_t steiner_in_faces = 0;  // Steiner points inside input triangles
+  std::size_t steiner_inside = 0;    // Steiner points inside the volume (always 0 here)
+  std::size_t rounds = 0;            // recovery rounds (one tetrahedralisation scan each)
+  std::size_t steiner() const { return steiner_on_edges + steiner_in_faces + steiner_inside; }
+};
+
+struct RecoveredVolume {
+  /// Vertices: the surface's vertices of triangles (in increasing id order, refs and tags kept),
+  /// then the Steiner points (ref 0). Boundary triangles: the subfaces of each input triangle,
+  /// oriented like it, with its ref and tag. Tet refs are 0.
+  Mesh volume;
+  BoundaryRecoveryStats stats;
+};
+
+/// The tetrahedralised volume bounded by `surface` (closed, manifold, consistently oriented, not
+/// self-intersecting: checked by require_closed_surface, then find_self_intersections), its
+/// boundary recovered by Steiner points on the surface. Deterministic. InputError for a defective
+/// surface (naming the defect) or when the Steiner cap is reached.
+RecoveredVolume recover_volume(const Mesh& surface, const BoundaryRecoveryOptions& options = {});
+
+}  // namespace riemesh

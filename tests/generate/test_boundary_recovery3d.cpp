@@ -1,0 +1,233 @@
+// Conforming 3D boundary recovery: the volume inside a closed surface, Steiner points on the
+// surface only, boundary exactly on the input surface, volume equal to the enclosed volume.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "generate/boundary_recovery3d.hpp"
+#include "io/mesh_file.hpp"
+#include "mesh/check.hpp"
+#include "mesh/distance.hpp"
+#include "mesh/fixtures.hpp"
+
+namespace riemesh {
+namespace {
+
+Vec3 point(const Mesh& m, Id v) {
+  const double* p = &m.coords[3 * static_cast<std::size_t>(v)];
+  return Vec3{p[0], p[1], p[2]};
+}
+
+double tet_volume(const Mesh& m) {
+  double sum = 0;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    const Vec3 a = point(m, m.tets[4 * t]), b = point(m, m.tets[4 * t + 1]),
+               c = point(m, m.tets[4 * t + 2]), d = point(m, m.tets[4 * t + 3]);
+    sum += dot(b - a, cross(c - a, d - a)) / 6;
+  }
+  return sum;
+}
+
+/// Volume enclosed by the (outward) triangles, by the divergence theorem.
+double enclosed_volume(const Mesh& m) {
+  double sum = 0;
+  for (std::size_t t = 0; t < m.num_triangles(); ++t)
+    sum += dot(point(m, m.triangles[3 * t]),
+               cross(point(m, m.triangles[3 * t + 1]), point(m, m.triangles[3 * t + 2]))) / 6;
+  return sum;
+}
+
+double area(const Mesh& m) {
+  double sum = 0;
+  for (std::size_t t = 0; t < m.num_triangles(); ++t) {
+    const Vec3 a = point(m, m.triangles[3 * t]);
+    sum += norm(cross(point(m, m.triangles[3 * t + 1]) - a, point(m, m.triangles[3 * t + 2]) - a)) / 2;
+  }
+  return sum;
+}
+
+double diameter(const Mesh& m) {
+  Vec3 lo = point(m, 0), hi = lo;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], point(m, static_cast<Id>(v))[i]);
+      hi[i] = std::max(hi[i], point(m, static_cast<Id>(v))[i]);
+    }
+  return norm(hi - lo);
+}
+
+/// The boundary faces of a volume mesh (faces of one tet), outward.
+Mesh boundary_of(const Mesh& vol) {
+  static constexpr int kOut[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  std::map<std::array<Id, 3>, std::array<Id, 3>> faces;
+  std::map<std::array<Id, 3>, int> count;
+  for (std::size_t t = 0; t < vol.num_tets(); ++t)
+    for (const auto& f : kOut) {
+      std::array<Id, 3> v = {vol.tets[4 * t + f[0]], vol.tets[4 * t + f[1]], vol.tets[4 * t + f[2]]};
+      std::array<Id, 3> key = v;
+      std::sort(key.begin(), key.end());
+      faces[key] = v;
+      ++count[key];
+    }
+  Mesh s;
+  s.dim = 3;
+  s.coords = vol.coords;
+  s.vert_ref.assign(vol.num_vertices(), 0);
+  s.vert_tag.assign(vol.num_vertices(), 0);
+  for (const auto& [key, n] : count)
+    if (n == 1) {
+      s.triangles.insert(s.triangles.end(), faces[key].begin(), faces[key].end());
+      s.tri_ref.push_back(1);
+      s.tri_tag.push_back(0);
+    }
+  // Drop vertices of no triangle (interior ones), keeping the order.
+  std::vector<Id> old2new(s.num_vertices(), kNoId);
+  for (Id v : s.triangles) old2new[static_cast<std::size_t>(v)] = 0;
+  Mesh out;
+  out.dim = 3;
+  for (std::size_t v = 0; v < old2new.size(); ++v)
+    if (old2new[v] != kNoId) {
+      old2new[v] = static_cast<Id>(out.num_vertices());
+      out.coords.insert(out.coords.end(), &s.coords[3 * v], &s.coords[3 * v] + 3);
+    }
+  out.vert_ref.assign(out.num_vertices(), 0);
+  out.vert_tag.assign(out.num_vertices(), 0);
+  for (Id v : s.triangles) out.triangles.push_back(old2new[static_cast<std::size_t>(v)]);
+  out.tri_ref = s.tri_ref;
+  out.tri_tag = s.tri_tag;
+  return out;
+}
+
+/// Checks the recovered volume of `s`: valid mesh, boundary triangles = boundary of the tets,
+/// covering the input surface (same area, vertices on it), same enclosed volume.
+void expect_conforming_volume(const Mesh& s, const RecoveredVolume& r, const std::string& name) {
+  const Mesh& v = r.volume;
+  const CheckReport report = check_mesh(v);
+  EXPECT_TRUE(report.valid()) << name << ": " << to_string(report.issues.front().category);
+  EXPECT_EQ(v.num_vertices(), r.stats.surface_vertices + r.stats.steiner()) << name;
+  EXPECT_EQ(r.stats.steiner_inside, 0u) << name;
+  const double vol = enclosed_volume(s);
+  EXPECT_NEAR(tet_volume(v), vol, 1e-9 * std::fabs(vol)) << name;
+  EXPECT_NEAR(enclosed_volume(v), vol, 1e-9 * std::fabs(vol)) << name;
+  const double a = area(s);
+  EXPECT_NEAR(area(v), a, 1e-9 * a) << name;
+  EXPECT_EQ(boundary_of(v).num_triangles(), v.num_triangles()) << name;
+  const TriangleTree tree(s);
+  const double tol = 1e-12 * diameter(s);
+  double worst = 0;
+  for (Id u : v.triangles) worst = std::max(worst, tree.nearest(point(v, u)).distance);
+  EXPECT_LE(worst, tol) << name;
+}
+
+/// The twisted prism of test_surface_delaunay3d.cpp split into Schönhardt's polyhedron: no
+/// tetrahedralisation without Steiner points.
+Mesh schonhardt() {
+  Mesh s;
+  s.dim = 3;
+  for (int level = 0; level < 2; ++level)
+    for (int i = 0; i < 3; ++i) {
+      const double angle = (120.0 * i + 30.0 * level) * M_PI / 180, r = level ? 0.8 : 1.0;
+      s.coords.insert(s.coords.end(), {r * std::cos(angle), r * std::sin(angle), double(level)});
+    }
+  s.triangles = {0, 2, 1, 3, 4, 5};
+  for (Id i = 0; i < 3; ++i) {
+    const Id a = i, a1 = (i + 1) % 3, b = 3 + i, b1 = 3 + (i + 1) % 3;
+    s.triangles.insert(s.triangles.end(), {a, a1, b1, a, b1, b});
+  }
+  s.vert_ref.assign(6, 0);
+  s.vert_tag.assign(6, 0);
+  s.tri_ref = {1, 2, 3, 3, 4, 4, 5, 5};
+  s.tri_tag.assign(8, 0);
+  return s;
+}
+
+TEST(BoundaryRecovery3d, SchonhardtPrismNeedsSteinerPoints) {
+  const Mesh s = schonhardt();
+  const RecoveredVolume r = recover_volume(s);
+  EXPECT_GT(r.stats.missing_faces, 0u);
+  EXPECT_GE(r.stats.steiner(), 1u);
+  expect_conforming_volume(s, r, "schonhardt");
+  // Refs follow the input triangles: every input ref is on some boundary triangle.
+  for (int ref = 1; ref <= 5; ++ref)
+    EXPECT_NE(std::find(r.volume.tri_ref.begin(), r.volume.tri_ref.end(), ref),
+              r.volume.tri_ref.end())
+        << ref;
+}
+
+TEST(BoundaryRecovery3d, ConformingSurfaceNeedsNone) {
+  const Mesh s = sphere_surface(3);
+  const RecoveredVolume r = recover_volume(s);
+  EXPECT_EQ(r.stats.steiner(), 0u);
+  EXPECT_EQ(r.stats.missing_faces, 0u);
+  EXPECT_EQ(r.volume.num_triangles(), s.num_triangles());
+  expect_conforming_volume(s, r, "sphere");
+}
+
+TEST(BoundaryRecovery3d, SteinerCapGivesAnInputError) {
+  BoundaryRecoveryOptions options;
+  options.max_steiner_per_vertex = 0;
+  try {
+    recover_volume(schonhardt(), options);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("gave up"), std::string::npos) << e.what();
+  }
+}
+
+TEST(BoundaryRecovery3d, DefectiveSurfaceIsRefused) {
+  Mesh open = sphere_surface(1);
+  open.triangles.resize(open.triangles.size() - 3);
+  open.tri_ref.pop_back();
+  open.tri_tag.pop_back();
+  EXPECT_THROW(recover_volume(open), InputError);
+}
+
+TEST(BoundaryRecovery3d, SelfIntersectingSurfaceIsNamed) {
+  // Two closed copies of Schönhardt's prism, the second shifted through the first.
+  Mesh s = schonhardt();
+  const Mesh b = schonhardt();
+  const Id n = static_cast<Id>(s.num_vertices());
+  for (std::size_t k = 0; k < b.coords.size(); ++k) s.coords.push_back(b.coords[k] + (k % 3 == 0 ? 0.5 : 0.0));
+  for (Id v : b.triangles) s.triangles.push_back(v + n);
+  s.vert_ref.resize(s.num_vertices(), 0);
+  s.vert_tag.resize(s.num_vertices(), 0);
+  s.tri_ref.resize(s.num_triangles(), 1);
+  s.tri_tag.resize(s.num_triangles(), 0);
+  try {
+    recover_volume(s);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("intersects itself"), std::string::npos) << e.what();
+  }
+}
+
+TEST(BoundaryRecovery3d, SharedSurfacesAreRecovered) {
+  const std::string data = RIEMESH_SHARED_DATA;
+  std::vector<std::pair<std::string, Mesh>> cases;
+  for (const char* name : {"bunny", "rotor"})
+    cases.push_back({name, read_mesh(data + "/surf/" + name + ".mesh")});
+  cases.push_back({"screw_vol boundary", boundary_of(read_mesh(data + "/vol/screw_vol.mesh"))});
+  for (const auto& [name, s] : cases) {
+    const RecoveredVolume r = recover_volume(s);
+    EXPECT_GT(r.stats.missing_faces, 0u) << name;  // the plain Delaunay mesh is not enough
+    expect_conforming_volume(s, r, name);
+  }
+}
+
+TEST(BoundaryRecovery3d, Deterministic) {
+  const Mesh s = read_mesh(std::string(RIEMESH_SHARED_DATA) + "/surf/rotor.mesh");
+  const RecoveredVolume a = recover_volume(s), b = recover_volume(s);
+  EXPECT_EQ(a.volume.coords, b.volume.coords);
+  EXPECT_EQ(a.volume.tets, b.volume.tets);
+  EXPECT_EQ(a.volume.triangles, b.volume.triangles);
+  EXPECT_EQ(a.stats.steiner(), b.stats.steiner());
+}
+
+}  // namespace
+}  // namespace riemesh
