@@ -15,6 +15,7 @@
 #include "mesh/check.hpp"
 #include "mesh/distance.hpp"
 #include "mesh/fixtures.hpp"
+#include "twisted_prism.hpp"
 
 namespace riemesh {
 namespace {
@@ -128,22 +129,8 @@ void expect_conforming_volume(const Mesh& s, const RecoveredVolume& r, const std
 /// The twisted prism of test_surface_delaunay3d.cpp split into Schönhardt's polyhedron: no
 /// tetrahedralisation without Steiner points.
 Mesh schonhardt() {
-  Mesh s;
-  s.dim = 3;
-  for (int level = 0; level < 2; ++level)
-    for (int i = 0; i < 3; ++i) {
-      const double angle = (120.0 * i + 30.0 * level) * M_PI / 180, r = level ? 0.8 : 1.0;
-      s.coords.insert(s.coords.end(), {r * std::cos(angle), r * std::sin(angle), double(level)});
-    }
-  s.triangles = {0, 2, 1, 3, 4, 5};
-  for (Id i = 0; i < 3; ++i) {
-    const Id a = i, a1 = (i + 1) % 3, b = 3 + i, b1 = 3 + (i + 1) % 3;
-    s.triangles.insert(s.triangles.end(), {a, a1, b1, a, b1, b});
-  }
-  s.vert_ref.assign(6, 0);
-  s.vert_tag.assign(6, 0);
+  Mesh s = test::twisted_prism(false);
   s.tri_ref = {1, 2, 3, 3, 4, 4, 5, 5};
-  s.tri_tag.assign(8, 0);
   return s;
 }
 
