@@ -7,6 +7,8 @@
 #include <memory>
 #include <string>
 
+#include <sys/resource.h>
+
 #include "apps/adapt_surface.hpp"
 #include "apps/commands.hpp"
 #include "apps/field_args.hpp"
@@ -148,6 +150,16 @@ void run_surface(const AdaptArgs& a, const Mesh& mesh) {
   run_adapt_surface(s, mesh);
 }
 
+/// `-v 1` at the end of a 3D run: the peak resident memory of the process (getrusage; reading,
+/// remeshing and writing included) and that per output tetrahedron (issue #7).
+void print_peak_memory(std::size_t tets) {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return;
+  const double bytes = 1024.0 * static_cast<double>(usage.ru_maxrss);  // ru_maxrss: KiB on Linux
+  std::fprintf(stderr, "peak memory: %.1f MB, %.0f bytes per output tetrahedron (%zu tetrahedra)\n",
+               bytes / 1e6, tets > 0 ? bytes / static_cast<double>(tets) : 0.0, tets);
+}
+
 /// The 3D metric field: --metric (6 tensor coefficients or sizes), --hsiz, or --optim.
 std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
@@ -169,6 +181,7 @@ void run3d(const AdaptArgs& a, const Mesh& mesh) {
     if (!a.quiet) print_pass(s, a.verbosity, "tetrahedra");
   });
   finish<3>(a, mesh, fields, r);
+  if (a.verbosity > 0 && !a.quiet) print_peak_memory(r.mesh.num_tets());
 }
 
 void run(AdaptArgs& a) {
