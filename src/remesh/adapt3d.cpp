@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/error.hpp"
@@ -263,16 +264,25 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
   if (input.dim != 3 || input.num_tets() == 0)
     throw InputError("3D remeshing needs a tetrahedral mesh");
   Adapt3dResult result;
-  Mesh ordered = input;
-  const Renumbering order = renumber_hilbert(ordered);
-  std::vector<SymMat3> permuted(metrics.begin(), metrics.end());
-  if (metrics.size() == input.num_vertices())
-    for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
-  const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
-  const std::vector<SymMat3> prepared =
-      prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted), options, result.report);
-  Remesh3dContext ctx(ordered, prepared, options);
-  TetMesh& m = ctx.mesh();
+  // Memory (issue #7): the renumbered copy of the input, its adjacency and the metric copies
+  // are only needed to build the context; they go before the passes, as the context (background
+  // mesh) goes before the output mesh is built.
+  std::optional<Remesh3dContext> ctx;
+  {
+    Mesh ordered = input;
+    const Renumbering order = renumber_hilbert(ordered);
+    std::vector<SymMat3> prepared;
+    {
+      std::vector<SymMat3> permuted(metrics.begin(), metrics.end());
+      if (metrics.size() == input.num_vertices())
+        for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
+      const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
+      prepared = prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted),
+                                    options, result.report);
+    }
+    ctx.emplace(ordered, prepared, options);
+  }
+  TetMesh& m = ctx->mesh();
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
   double prev_in = 0.0, prev_qmin = 0.0;
@@ -281,12 +291,12 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
     PassStats st;
     st.pass = pass;
     if (options.insert) {
-      st.splits = split_sweeps(ctx, st);
-      st.collapses = collapse_sweep(ctx, st);
+      st.splits = split_sweeps(*ctx, st);
+      st.collapses = collapse_sweep(*ctx, st);
     }
     for (int k = 0; k < 2; ++k) {
       if (options.swap) st.swaps += swap_sweep(m, st);
-      if (options.move) st.moves += smooth_sweep(ctx, st);
+      if (options.move) st.moves += smooth_sweep(*ctx, st);
     }
     // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
     if (options.insert) st.collapses += short_edge_sweep(m, st);
@@ -297,7 +307,7 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
     // Last: sliver removal around the tets still below the quality target.
     SliverLimits sl;
     sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
-    sliver_sweeps(ctx, sl, st);
+    sliver_sweeps(*ctx, sl, st);
     summarize(m, st);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);
@@ -317,7 +327,10 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
     if (ops < best_ops) best_ops = ops, best_pass = pass;
   }
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
-  result.mesh = to_mesh(m, ctx.edge_refs(), &result.metrics);
+  const TetMesh final_mesh = std::move(m);
+  const std::vector<std::int32_t> edge_refs = ctx->edge_refs();
+  ctx.reset();
+  result.mesh = to_mesh(final_mesh, edge_refs, &result.metrics);
   return result;
 }
 
