@@ -43,7 +43,7 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   m.vkind.assign(nv, VertexKind::kFixed);
   m.vplane.assign(2 * nv, 0);
   m.vtet.assign(nv, kNoId);
-  const Adjacency adj = build_adjacency(mesh.tets, 4, nv);
+  const Adjacency adj = build_face_adjacency(mesh.tets, 4, nv);
   if (!adj.nonmanifold_faces.empty()) throw InputError("the tetrahedra share a face three times");
   m.tv.assign(mesh.tets.begin(), mesh.tets.end());
   m.tref.assign(mesh.tet_ref.begin(), mesh.tet_ref.end());
