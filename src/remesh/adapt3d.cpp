@@ -42,35 +42,45 @@ struct Edge {
 };
 
 /// The unique live edges (a < b), sorted, each with the first tet holding it. Bucketed by a
-/// (counting sort), then each small bucket sorted by b: linear in the tets.
+/// (counting sort, entries (b, tet): a is the bucket), then each small bucket sorted by b:
+/// linear in the tets. The 6 entries per tet are the largest transient of a pass (issue #7):
+/// 8 bytes each, and the result is sized exactly.
 std::vector<Edge> all_edges(const TetMesh& m) {
+  struct Entry {
+    Id b, tet;
+  };
   std::vector<std::size_t> start(m.vertex_capacity() + 1, 0);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
     if (!m.tet_alive(static_cast<Id>(t))) continue;
     for (const auto& [i, j] : kTetEdge) ++start[std::min(m.tv[4 * t + i], m.tv[4 * t + j]) + 1];
   }
   for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<Edge> e(start.back());
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
-    if (!m.tet_alive(static_cast<Id>(t))) continue;
-    for (const auto& [i, j] : kTetEdge) {
-      const Id a = m.tv[4 * t + i], b = m.tv[4 * t + j];
-      e[fill[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), static_cast<Id>(t)};
+  std::vector<Entry> e(start.back());
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
+      if (!m.tet_alive(static_cast<Id>(t))) continue;
+      for (const auto& [i, j] : kTetEdge) {
+        const Id a = m.tv[4 * t + i], b = m.tv[4 * t + j];
+        e[fill[std::min(a, b)]++] = {std::max(a, b), static_cast<Id>(t)};
+      }
     }
   }
-  std::size_t out = 0;
+  std::size_t unique = 0;
   for (std::size_t v = 0; v + 1 < start.size(); ++v) {
     const auto first = e.begin() + static_cast<std::ptrdiff_t>(start[v]);
     const auto last = e.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-    std::sort(first, last, [](const Edge& x, const Edge& y) {
+    std::sort(first, last, [](const Entry& x, const Entry& y) {
       return x.b != y.b ? x.b < y.b : x.tet < y.tet;
     });
-    for (auto it = first; it != last; ++it)
-      if (it == first || it->b != (it - 1)->b) e[out++] = *it;
+    for (auto it = first; it != last; ++it) unique += it == first || it->b != (it - 1)->b;
   }
-  e.resize(out);
-  return e;
+  std::vector<Edge> out;
+  out.reserve(unique);
+  for (std::size_t v = 0; v + 1 < start.size(); ++v)
+    for (std::size_t k = start[v]; k < start[v + 1]; ++k)
+      if (k == start[v] || e[k].b != e[k - 1].b) out.push_back({static_cast<Id>(v), e[k].b, e[k].tet});
+  return out;
 }
 
 template <class Select>
