@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "mesh/adjacency.hpp"
@@ -270,6 +271,11 @@ std::string stall_reason(const TetMesh& m) {
 
 Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
                       const Adapt3dOptions& options, const PassCallback& on_pass) {
+  return adapt3d(Mesh(input), metrics, options, on_pass);
+}
+
+Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
+                      const Adapt3dOptions& options, const PassCallback& on_pass) {
   options.validate();
   if (input.dim != 3 || input.num_tets() == 0)
     throw InputError("3D remeshing needs a tetrahedral mesh");
@@ -279,12 +285,13 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
   // mesh) goes before the output mesh is built.
   std::optional<Remesh3dContext> ctx;
   {
-    Mesh ordered = input;
+    const std::size_t input_vertices = input.num_vertices();
+    Mesh ordered = std::move(input);
     const Renumbering order = renumber_hilbert(ordered);
     std::vector<SymMat3> prepared;
     {
       std::vector<SymMat3> permuted(metrics.begin(), metrics.end());
-      if (metrics.size() == input.num_vertices())
+      if (metrics.size() == input_vertices)
         for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
       const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
       prepared = prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted),
