@@ -6,6 +6,9 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
+
+#include <sys/resource.h>
 
 #include "apps/adapt_surface.hpp"
 #include "apps/commands.hpp"
@@ -148,6 +151,16 @@ void run_surface(const AdaptArgs& a, const Mesh& mesh) {
   run_adapt_surface(s, mesh);
 }
 
+/// `-v 1` at the end of a 3D run: the peak resident memory of the process (getrusage; reading,
+/// remeshing and writing included) and that per output tetrahedron (issue #7).
+void print_peak_memory(std::size_t tets) {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return;
+  const double bytes = 1024.0 * static_cast<double>(usage.ru_maxrss);  // ru_maxrss: KiB on Linux
+  std::fprintf(stderr, "peak memory: %.1f MB, %.0f bytes per output tetrahedron (%zu tetrahedra)\n",
+               bytes / 1e6, tets > 0 ? bytes / static_cast<double>(tets) : 0.0, tets);
+}
+
 /// The 3D metric field: --metric (6 tensor coefficients or sizes), --hsiz, or --optim.
 std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
@@ -159,23 +172,28 @@ std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
 }
 
 /// A tetrahedral mesh: adapt3d (planar boundary patches remeshed, curved ones kept).
-void run3d(const AdaptArgs& a, const Mesh& mesh) {
+void run3d(const AdaptArgs& a, Mesh&& mesh) {
   const std::vector<SymMat3> metrics = load_metric3(a, mesh);
   const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
   Adapt3dOptions opt;
   static_cast<Adapt2dOptions&>(opt) = a.opt;
   opt.keep_surface = a.nosurf;
-  const Adapt3dResult r = adapt3d(mesh, metrics, opt, [&](const PassStats& s) {
+  const auto progress = [&](const PassStats& s) {
     if (!a.quiet) print_pass(s, a.verbosity, "tetrahedra");
-  });
+  };
+  // Without fields to transfer the input is needed no more: the remesher takes it over instead
+  // of copying it (memory, issue #7); finish() reads the input only to transfer fields.
+  const Adapt3dResult r = fields.empty() ? adapt3d(std::move(mesh), metrics, opt, progress)
+                                         : adapt3d(mesh, metrics, opt, progress);
   finish<3>(a, mesh, fields, r);
+  if (a.verbosity > 0 && !a.quiet) print_peak_memory(r.mesh.num_tets());
 }
 
 void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
   if (!(a.hsiz >= 0.0) || !std::isfinite(a.hsiz))
     throw InputError("--hsiz must be a size > 0");
-  const Mesh mesh = read_mesh(a.input);
+  Mesh mesh = read_mesh(a.input);
   const bool surface = mesh.kind() == MeshKind::kSurface;
   if (a.aniso && !surface)
     throw InputError("--aniso applies to surface meshes (the 2D metric is given)");
@@ -209,7 +227,7 @@ void run(AdaptArgs& a) {
   if (a.optim && a.opt.hgrad > 0.0) a.opt.hgrad = 0.0;  // the implied sizes are kept as they are
   a.opt.validate();
   if (a.verbosity < 0) a.quiet = true;  // MMG's -v -1: silent
-  if (mesh.kind() == MeshKind::kVolume) return run3d(a, mesh);
+  if (mesh.kind() == MeshKind::kVolume) return run3d(a, std::move(mesh));
   if (mesh.dim != 2)
     throw InputError(a.input + ": only planar, surface and tetrahedral meshes can be adapted");
   const std::vector<SymMat2> metrics = load_metric(a, mesh);

@@ -164,8 +164,10 @@ void build_edges(Adjacency& adj, const std::vector<Id>& s) {
 
 }  // namespace
 
-Adjacency build_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
-                          std::size_t num_vertices) {
+namespace {
+
+Adjacency build(const std::vector<Id>& simplices, int verts_per_simplex,
+                std::size_t num_vertices, bool with_edges) {
   const int k = verts_per_simplex;
   if (k != 3 && k != 4)
     throw InputError("build_adjacency: verts_per_simplex must be 3 or 4, got " + std::to_string(k));
@@ -186,12 +188,24 @@ Adjacency build_adjacency(const std::vector<Id>& simplices, int verts_per_simple
   build_vert2elem(adj, simplices, k);
   if (k == 4) {
     build_neighbours<4>(adj, simplices);
-    build_edges<4>(adj, simplices);
+    if (with_edges) build_edges<4>(adj, simplices);
   } else {
     build_neighbours<3>(adj, simplices);
-    build_edges<3>(adj, simplices);
+    if (with_edges) build_edges<3>(adj, simplices);
   }
   return adj;
+}
+
+}  // namespace
+
+Adjacency build_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
+                          std::size_t num_vertices) {
+  return build(simplices, verts_per_simplex, num_vertices, true);
+}
+
+Adjacency build_face_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
+                               std::size_t num_vertices) {
+  return build(simplices, verts_per_simplex, num_vertices, false);
 }
 
 Adjacency build_adjacency(const Mesh& mesh) {

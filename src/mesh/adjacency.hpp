@@ -56,6 +56,11 @@ struct Adjacency {
 Adjacency build_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
                           std::size_t num_vertices);
 
+/// As build_adjacency without the edges (edges and elem2edge empty): the neighbours and the
+/// vertex balls only, about half the memory, for callers that need no edge ids.
+Adjacency build_face_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
+                               std::size_t num_vertices);
+
 /// The elements of the mesh's main simplex array (tets of a volume, triangles otherwise).
 Adjacency build_adjacency(const Mesh& mesh);
 

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "mesh/adjacency.hpp"
@@ -41,35 +43,45 @@ struct Edge {
 };
 
 /// The unique live edges (a < b), sorted, each with the first tet holding it. Bucketed by a
-/// (counting sort), then each small bucket sorted by b: linear in the tets.
+/// (counting sort, entries (b, tet): a is the bucket), then each small bucket sorted by b:
+/// linear in the tets. The 6 entries per tet are the largest transient of a pass (issue #7):
+/// 8 bytes each, and the result is sized exactly.
 std::vector<Edge> all_edges(const TetMesh& m) {
+  struct Entry {
+    Id b, tet;
+  };
   std::vector<std::size_t> start(m.vertex_capacity() + 1, 0);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
     if (!m.tet_alive(static_cast<Id>(t))) continue;
     for (const auto& [i, j] : kTetEdge) ++start[std::min(m.tv[4 * t + i], m.tv[4 * t + j]) + 1];
   }
   for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<Edge> e(start.back());
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
-    if (!m.tet_alive(static_cast<Id>(t))) continue;
-    for (const auto& [i, j] : kTetEdge) {
-      const Id a = m.tv[4 * t + i], b = m.tv[4 * t + j];
-      e[fill[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), static_cast<Id>(t)};
+  std::vector<Entry> e(start.back());
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
+      if (!m.tet_alive(static_cast<Id>(t))) continue;
+      for (const auto& [i, j] : kTetEdge) {
+        const Id a = m.tv[4 * t + i], b = m.tv[4 * t + j];
+        e[fill[std::min(a, b)]++] = {std::max(a, b), static_cast<Id>(t)};
+      }
     }
   }
-  std::size_t out = 0;
+  std::size_t unique = 0;
   for (std::size_t v = 0; v + 1 < start.size(); ++v) {
     const auto first = e.begin() + static_cast<std::ptrdiff_t>(start[v]);
     const auto last = e.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-    std::sort(first, last, [](const Edge& x, const Edge& y) {
+    std::sort(first, last, [](const Entry& x, const Entry& y) {
       return x.b != y.b ? x.b < y.b : x.tet < y.tet;
     });
-    for (auto it = first; it != last; ++it)
-      if (it == first || it->b != (it - 1)->b) e[out++] = *it;
+    for (auto it = first; it != last; ++it) unique += it == first || it->b != (it - 1)->b;
   }
-  e.resize(out);
-  return e;
+  std::vector<Edge> out;
+  out.reserve(unique);
+  for (std::size_t v = 0; v + 1 < start.size(); ++v)
+    for (std::size_t k = start[v]; k < start[v + 1]; ++k)
+      if (k == start[v] || e[k].b != e[k - 1].b) out.push_back({static_cast<Id>(v), e[k].b, e[k].tet});
+  return out;
 }
 
 template <class Select>
@@ -259,20 +271,35 @@ std::string stall_reason(const TetMesh& m) {
 
 Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
                       const Adapt3dOptions& options, const PassCallback& on_pass) {
+  return adapt3d(Mesh(input), metrics, options, on_pass);
+}
+
+Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
+                      const Adapt3dOptions& options, const PassCallback& on_pass) {
   options.validate();
   if (input.dim != 3 || input.num_tets() == 0)
     throw InputError("3D remeshing needs a tetrahedral mesh");
   Adapt3dResult result;
-  Mesh ordered = input;
-  const Renumbering order = renumber_hilbert(ordered);
-  std::vector<SymMat3> permuted(metrics.begin(), metrics.end());
-  if (metrics.size() == input.num_vertices())
-    for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
-  const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
-  const std::vector<SymMat3> prepared =
-      prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted), options, result.report);
-  Remesh3dContext ctx(ordered, prepared, options);
-  TetMesh& m = ctx.mesh();
+  // Memory (issue #7): the renumbered copy of the input, its adjacency and the metric copies
+  // are only needed to build the context; they go before the passes, as the context (background
+  // mesh) goes before the output mesh is built.
+  std::optional<Remesh3dContext> ctx;
+  {
+    const std::size_t input_vertices = input.num_vertices();
+    Mesh ordered = std::move(input);
+    const Renumbering order = renumber_hilbert(ordered);
+    std::vector<SymMat3> prepared;
+    {
+      std::vector<SymMat3> permuted(metrics.begin(), metrics.end());
+      if (metrics.size() == input_vertices)
+        for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
+      const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
+      prepared = prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted),
+                                    options, result.report);
+    }
+    ctx.emplace(ordered, prepared, options);
+  }
+  TetMesh& m = ctx->mesh();
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
   double prev_in = 0.0, prev_qmin = 0.0;
@@ -281,12 +308,12 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
     PassStats st;
     st.pass = pass;
     if (options.insert) {
-      st.splits = split_sweeps(ctx, st);
-      st.collapses = collapse_sweep(ctx, st);
+      st.splits = split_sweeps(*ctx, st);
+      st.collapses = collapse_sweep(*ctx, st);
     }
     for (int k = 0; k < 2; ++k) {
       if (options.swap) st.swaps += swap_sweep(m, st);
-      if (options.move) st.moves += smooth_sweep(ctx, st);
+      if (options.move) st.moves += smooth_sweep(*ctx, st);
     }
     // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
     if (options.insert) st.collapses += short_edge_sweep(m, st);
@@ -297,7 +324,7 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
     // Last: sliver removal around the tets still below the quality target.
     SliverLimits sl;
     sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
-    sliver_sweeps(ctx, sl, st);
+    sliver_sweeps(*ctx, sl, st);
     summarize(m, st);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);
@@ -317,7 +344,10 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
     if (ops < best_ops) best_ops = ops, best_pass = pass;
   }
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
-  result.mesh = to_mesh(m, ctx.edge_refs(), &result.metrics);
+  const TetMesh final_mesh = std::move(m);
+  const std::vector<std::int32_t> edge_refs = ctx->edge_refs();
+  ctx.reset();
+  result.mesh = to_mesh(final_mesh, edge_refs, &result.metrics);
   return result;
 }
 

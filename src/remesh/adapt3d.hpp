@@ -40,4 +40,9 @@ struct Adapt3dResult {
 Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
                       const Adapt3dOptions& options, const PassCallback& on_pass = {});
 
+/// The same, taking over the input mesh (moved from; unspecified afterwards): saves the copy
+/// the remesher renumbers, when the caller needs the input no more (memory, issue #7).
+Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
+                      const Adapt3dOptions& options, const PassCallback& on_pass = {});
+
 }  // namespace riemesh

@@ -137,7 +137,7 @@ void BackgroundMesh<D>::build(std::span<const double> coords, std::span<const Id
     logs_.resize(nv);
     for (std::size_t v = 0; v < nv; ++v) logs_[v] = log_spd(metrics_[v]);
   }
-  elem2elem_ = adjacency ? adjacency->elem2elem : build_adjacency(simplices_, kVerts, nv).elem2elem;
+  elem2elem_ = adjacency ? adjacency->elem2elem : build_face_adjacency(simplices_, kVerts, nv).elem2elem;
   // Walks from a hint crossing a uniform mesh take O(ns^(1/D)) steps; beyond a generous multiple
   // of that, the grid search is cheaper than walking on (and a cycle cannot run forever).
   max_walk_steps_ =

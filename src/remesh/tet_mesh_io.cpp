@@ -25,21 +25,28 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
     throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
                      std::to_string(nv) + " vertices");
   TetMesh m;
+  // Room for 1/8 more vertices and tets than the input: at steady state (input close to the
+  // output) the passes then never double the arrays' capacity, the largest part of the peak.
+  const std::size_t rv = nv + nv / 8 + 16, rt = nt + nt / 8 + 16;
+  m.xyz.reserve(rv), m.metric.reserve(rv), m.vref.reserve(rv), m.vtag.reserve(rv);
+  m.vkind.reserve(rv), m.vplane.reserve(2 * rv), m.vtet.reserve(rv);
+  m.tv.reserve(4 * rt), m.tadj.reserve(4 * rt), m.fref.reserve(4 * rt), m.fbdy.reserve(4 * rt);
+  m.tref.reserve(rt), m.mark.reserve(rt);
   m.xyz.resize(nv);
   for (std::size_t v = 0; v < nv; ++v)
     m.xyz[v] = Vec3{{mesh.coords[3 * v], mesh.coords[3 * v + 1], mesh.coords[3 * v + 2]}};
   m.metric.assign(metrics.begin(), metrics.end());
-  m.vref = mesh.vert_ref;
+  m.vref.assign(mesh.vert_ref.begin(), mesh.vert_ref.end());
   m.vref.resize(nv, 0);
-  m.vtag = mesh.vert_tag;
+  m.vtag.assign(mesh.vert_tag.begin(), mesh.vert_tag.end());
   m.vtag.resize(nv, kTagNone);
   m.vkind.assign(nv, VertexKind::kFixed);
   m.vplane.assign(2 * nv, 0);
   m.vtet.assign(nv, kNoId);
-  const Adjacency adj = build_adjacency(mesh.tets, 4, nv);
+  const Adjacency adj = build_face_adjacency(mesh.tets, 4, nv);
   if (!adj.nonmanifold_faces.empty()) throw InputError("the tetrahedra share a face three times");
-  m.tv = mesh.tets;
-  m.tref = mesh.tet_ref;
+  m.tv.assign(mesh.tets.begin(), mesh.tets.end());
+  m.tref.assign(mesh.tet_ref.begin(), mesh.tet_ref.end());
   m.tref.resize(nt, 0);
   m.tadj.assign(4 * nt, kNoId);
   m.fref.assign(4 * nt, 0);

@@ -25,6 +25,20 @@ ntri() {
 "$R" adapt -in "$C" -met "$TMP/cube.sol" -hmin 0.02 -hgrad 0 -out "$TMP/m.mesh" -v 1 \
   --out-metric "$TMP/m.sol" 2>"$TMP/log" && ok adapt3d-mmg-spellings || ko adapt3d-mmg-spellings
 grep -q "tetrahedra" "$TMP/log" && grep -q "splits" "$TMP/log" && ok verbose-stats || ko verbose-stats
+# -v 1 ends with the peak memory and the bytes per output tetrahedron (count = the output's).
+/usr/bin/python3 - "$TMP/log" "$TMP/m.mesh" <<'PY' && ok verbose-peak-memory || ko verbose-peak-memory
+import re, sys
+m = re.search(r"peak memory: ([0-9.]+) MB, ([0-9]+) bytes per output tetrahedron \(([0-9]+) tetrahedra\)",
+              open(sys.argv[1]).read())
+toks = open(sys.argv[2]).read().split()
+ntet = int(toks[toks.index('Tetrahedra') + 1])
+if not m:
+    sys.exit(1)
+mb, per, n = float(m.group(1)), int(m.group(2)), int(m.group(3))
+sys.exit(0 if n == ntet and 1.0 < mb < 1e5 and abs(per - mb * 1e6 / n) <= 1 + 1e-3 * per else 1)
+PY
+"$R" adapt "$C" --hsiz 0.2 -o "$TMP/q.mesh" -q -v 1 2>"$TMP/qlog"
+! grep -q "peak memory" "$TMP/qlog" && ok quiet-no-peak-memory || ko quiet-no-peak-memory
 "$R" check "$TMP/m.mesh" >/dev/null && ok metric-valid || ko metric-valid
 [ -s "$TMP/m.sol" ] && ok out-metric || ko out-metric
 

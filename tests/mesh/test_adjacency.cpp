@@ -132,6 +132,20 @@ TEST(Adjacency, NonManifoldFacesAreListed) {
   for (Id f : adj.nonmanifold_faces) EXPECT_EQ(adj.elem2elem[f], kNoId);
 }
 
+TEST(Adjacency, FaceAdjacencyIsTheFullOneWithoutEdges) {
+  const Mesh m = unit_cube(3);
+  const Adjacency full = build_adjacency(m.tets, 4, m.num_vertices());
+  const Adjacency faces = build_face_adjacency(m.tets, 4, m.num_vertices());
+  EXPECT_EQ(faces.elem2elem, full.elem2elem);
+  EXPECT_EQ(faces.vert2elem, full.vert2elem);
+  EXPECT_EQ(faces.vert2elem_offsets, full.vert2elem_offsets);
+  EXPECT_TRUE(faces.edges.empty());
+  EXPECT_TRUE(faces.elem2edge.empty());
+  const std::vector<Id> tris = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+  EXPECT_EQ(build_face_adjacency(tris, 3, 5).nonmanifold_faces, (std::vector<Id>{2, 5, 8}));
+  EXPECT_THROW(build_face_adjacency({0, 1, 5}, 3, 4), InputError);
+}
+
 TEST(Adjacency, RejectsBadInput) {
   EXPECT_THROW(build_adjacency({0, 1, 2, 3}, 3, 4), InputError);
   EXPECT_THROW(build_adjacency({0, 1, 5}, 3, 4), InputError);

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "core/error.hpp"
 #include "mesh/check.hpp"
@@ -123,6 +124,21 @@ TEST(Adapt3d, Deterministic) {
   EXPECT_EQ(a.mesh.tets, b.mesh.tets);
   EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
   EXPECT_EQ(a.mesh.tri_ref, b.mesh.tri_ref);
+}
+
+TEST(Adapt3d, TakingOverTheInputGivesTheSameMesh) {
+  const Mesh cube = unit_cube(3);
+  const std::vector<SymMat3> metrics = linear_metric(cube, 0.05, 0.3);
+  Adapt3dOptions o;
+  const Adapt3dResult a = adapt3d(cube, metrics, o);
+  Mesh moved = cube;
+  const Adapt3dResult b = adapt3d(std::move(moved), metrics, o);
+  EXPECT_GT(b.mesh.num_tets(), cube.num_tets());
+  EXPECT_EQ(a.mesh.coords, b.mesh.coords);
+  EXPECT_EQ(a.mesh.tets, b.mesh.tets);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  EXPECT_EQ(a.mesh.tri_ref, b.mesh.tri_ref);
+  EXPECT_EQ(a.metrics.size(), b.metrics.size());
 }
 
 TEST(Adapt3d, KeepSurfaceLeavesTheBoundaryAsGiven) {
