@@ -47,12 +47,12 @@ for mesh in "$tmp"/*.surf.mesh; do
   read -r _ n _ tets _ secs < <("$bench" --node "$tmp/$name.surf.node" --runs "$runs")
   tris=$(awk '/^Triangles/ {getline; print; exit}' "$mesh")
   # riemesh mesh: boundary recovery; median CPU time (user + sys) of 3 runs, file I/O included.
-  if msg=$("$riemesh" mesh "$mesh" -o "$tmp/$name.vol.mesh" 2>&1); then
+  if msg=$("$riemesh" mesh --nofill "$mesh" -o "$tmp/$name.vol.mesh" 2>&1); then
     missing=$(printf '%s' "$msg" | sed -n 's/.*tetrahedra, \([0-9]*\) faces and \([0-9]*\) edges missing.*/\1 \/ \2/p')
     steiner=$(printf '%s' "$msg" | sed -n 's/.*; \([0-9]*\) Steiner points (\([0-9]*\) on edges, \([0-9]*\) in faces.*/\1 (\2 + \3)/p')
     read -r dihedral vtets < <(/usr/bin/python3 "$here/min_dihedral.py" "$tmp/$name.vol.mesh")
     cpu=$(for _ in 1 2 3; do
-            /usr/bin/time -f "%U %S" "$riemesh" mesh -q "$mesh" -o "$tmp/$name.vol.mesh" 2>&1 >/dev/null |
+            /usr/bin/time -f "%U %S" "$riemesh" mesh -q --nofill "$mesh" -o "$tmp/$name.vol.mesh" 2>&1 >/dev/null |
               awk '{print $1 + $2}'
           done | sort -g | sed -n 2p)
   else

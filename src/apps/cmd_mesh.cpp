@@ -24,7 +24,7 @@ namespace {
 struct MeshArgs {
   std::string input, output, metric, interp;
   std::vector<std::string> holes;
-  bool keep_boundary = false, quiet = false;
+  bool keep_boundary = false, quiet = false, nofill = false;
   Mesh2dOptions opt;
   const CLI::Option* hausd = nullptr;
   const CLI::Option* hgrad = nullptr;
@@ -46,10 +46,17 @@ void run(MeshArgs& a) {
   mesh_format(a.output);  // an unknown output extension fails before any work
   const Mesh domain = read_mesh(a.input);
   if (domain.dim == 3) {  // a closed surface: the volume inside it
-    if (a.opt.hsiz > 0.0 || !a.metric.empty() || a.hausd->count() > 0 || !a.holes.empty())
-      throw InputError(a.input + ": a surface is meshed with its vertices only so far; --hsiz, "
-                       "--metric, --hausd and --hole apply to planar domains");
-    mesh_volume_from_surface(a.input, domain, a.output, a.quiet);
+    if (!a.metric.empty() || a.hausd->count() > 0 || !a.holes.empty())
+      throw InputError(a.input + ": a surface is meshed with --hsiz or sizes from its edges so "
+                       "far; --metric, --hausd and --hole apply to planar domains");
+    if (a.nofill && a.opt.hsiz > 0.0)
+      throw InputError("--hsiz and --nofill contradict: --nofill adds no interior points");
+    VolumeFillArgs f;
+    f.fill = !a.nofill;
+    f.hsiz = a.opt.hsiz;
+    if (a.hgrad->count() > 0) f.hgrad = a.opt.adapt.hgrad;
+    f.quiet = a.quiet;
+    mesh_volume_from_surface(a.input, domain, a.output, f);
     return;
   }
   if (!a.metric.empty()) a.opt.metric = read_metric_file<2>(a.metric, domain);
@@ -94,7 +101,8 @@ void register_mesh(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "mesh", "Mesh a planar domain from its boundary Edges (Delaunay, then optimisation), or the "
               "volume inside a closed surface (Delaunay of its vertices, boundary recovered by "
-              "Steiner points on the surface, reported)");
+              "Steiner points on the surface, reported; then interior points for --hsiz or the "
+              "boundary's sizes, optimised with the surface kept)");
   cmd->add_option("input", a->input,
                   "Domain: a 2D .mesh/.meshb/.msh whose Edges (with refs) bound it, each with "
                   "the domain on its left (outer loops counter-clockwise, holes clockwise)")
@@ -109,6 +117,8 @@ void register_mesh(CLI::App& app) {
   cmd->add_option("--hole", a->holes,
                   "A point X,Y inside a hole (repeatable); when given, hole points alone "
                   "decide which regions are holes");
+  cmd->add_flag("--nofill", a->nofill,
+                "Surfaces: keep the tetrahedra of the boundary points only (no interior points)");
   cmd->add_flag("--keep-boundary", a->keep_boundary,
                 "Keep the boundary vertices and edges as given even with --hsiz/--metric/--hausd");
   cmd->add_option("--hmin", a->opt.adapt.hmin, "Smallest size")->capture_default_str();

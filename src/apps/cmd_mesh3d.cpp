@@ -7,12 +7,13 @@
 
 #include "core/error.hpp"
 #include "generate/boundary_recovery3d.hpp"
+#include "generate/volume_fill3d.hpp"
 #include "io/mesh_file.hpp"
 
 namespace riemesh::cli {
 
 void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
-                              const std::string& output, bool quiet) {
+                              const std::string& output, const VolumeFillArgs& args) {
   if (surface.dim != 3 || !surface.tets.empty() || surface.triangles.empty())
     throw InputError(input + ": not a surface (3D triangles without tetrahedra)");
   RecoveredVolume r;
@@ -24,14 +25,41 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
     msg += e.what();
     throw InputError(msg);
   }
-  write_mesh(r.volume, output);
-  if (!quiet) {
-    const BoundaryRecoveryStats& s = r.stats;
-    std::printf("%s: %zu vertices, %zu tetrahedra, %zu boundary triangles; %zu Steiner points "
+  const BoundaryRecoveryStats& s = r.stats;
+  Mesh out;
+  double q_min = 0.0;
+  if (args.fill) {
+    Adapt3dOptions o;
+    o.hgrad = args.hgrad;
+    try {
+      Adapt3dResult filled = fill_volume(std::move(r.volume), args.hsiz, o, [&](const PassStats& p) {
+        if (!args.quiet)
+          std::fprintf(stderr, "fill pass %2d: %zu vertices %zu tetrahedra, q_min %.3f (%.2f s)\n",
+                       p.pass, p.vertices, p.triangles, p.q_min, p.seconds);
+        q_min = p.q_min;
+      });
+      out = std::move(filled.mesh);
+    } catch (const InputError& e) {
+      std::string msg = input;
+      msg += ": ";
+      msg += e.what();
+      throw InputError(msg);
+    }
+  } else {
+    out = std::move(r.volume);
+  }
+  write_mesh(out, output);
+  if (!args.quiet) {
+    if (args.fill)
+      std::printf("%s: %zu vertices, %zu tetrahedra (q_min %.3f), %zu boundary triangles; ",
+                  output.c_str(), out.num_vertices(), out.num_tets(), q_min, out.num_triangles());
+    else
+      std::printf("%s: %zu vertices, %zu tetrahedra, %zu boundary triangles; ", output.c_str(),
+                  out.num_vertices(), out.num_tets(), out.num_triangles());
+    std::printf("%zu Steiner points "
                 "(%zu on edges, %zu in faces, %zu inside); Delaunay of the %zu surface vertices: "
                 "%zu tetrahedra, %zu faces and %zu edges missing, recovered in %zu rounds\n",
-                output.c_str(), r.volume.num_vertices(), r.volume.num_tets(),
-                r.volume.num_triangles(), s.steiner(), s.steiner_on_edges, s.steiner_in_faces,
+                s.steiner(), s.steiner_on_edges, s.steiner_in_faces,
                 s.steiner_inside, s.surface_vertices, s.delaunay_tets, s.missing_faces,
                 s.missing_edges, s.rounds);
   }

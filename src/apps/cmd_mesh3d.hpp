@@ -7,12 +7,20 @@
 
 namespace riemesh::cli {
 
-/// Tetrahedralises the closed surface `surface` read from `input` and writes the volume inside it
-/// to `output`; prints one summary line unless quiet. Throws InputError naming `input` for a
-/// surface with a defect (hole, non-manifold edge, inconsistent orientation, coincident
-/// vertices) and when boundary recovery gives up (Steiner cap, e.g. a self-intersecting
-/// surface); nothing is written then. The summary line reports the Steiner points.
+/// What `riemesh mesh SURFACE.mesh` does inside the recovered volume.
+struct VolumeFillArgs {
+  bool fill = true;    ///< false (--nofill): the tetrahedra of the boundary points only
+  double hsiz = 0.0;   ///< interior size; 0: from the boundary edges
+  double hgrad = 1.3;  ///< size gradation of the fill (0: off)
+  bool quiet = false;
+};
+
+/// Tetrahedralises the closed surface `surface` read from `input` (boundary recovered with
+/// Steiner points on the surface), fills it with interior points (unless fill is off) and writes
+/// the volume to `output`; prints one summary line unless quiet. Throws InputError naming `input`
+/// for a surface with a defect (hole, non-manifold edge, inconsistent orientation, coincident
+/// vertices, self-intersection); nothing is written then.
 void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
-                              const std::string& output, bool quiet);
+                              const std::string& output, const VolumeFillArgs& args);
 
 }  // namespace riemesh::cli

@@ -15,7 +15,7 @@ write_tet_surface() {  # FILE NUM-TRIANGLES
   } >"$1"
 }
 write_tet_surface "$TMP/tet.mesh" 4
-out=$("$R" mesh "$TMP/tet.mesh" -o "$TMP/tet_vol.mesh"); code=$?
+out=$("$R" mesh "$TMP/tet.mesh" -o "$TMP/tet_vol.mesh" --nofill); code=$?
 if [ $code -eq 0 ] && [[ "$out" == *"4 vertices, 1 tetrahedra, 4 boundary triangles"* ]] &&
    "$R" check "$TMP/tet_vol.mesh" >/dev/null; then ok mesh3d-tet; else ko "mesh3d-tet: $code $out"; fi
 
@@ -26,13 +26,48 @@ expect_no_file mesh3d-open-no-output "$TMP/open_vol.mesh"
   ok mesh3d-open-named || ko mesh3d-open-named
 
 # elephant.mesh: every triangle is a Delaunay face, the volume is valid.
-"$R" mesh -q "$SHARED/data/surf/elephant.mesh" -o "$TMP/elephant.mesh" &&
+"$R" mesh -q --nofill "$SHARED/data/surf/elephant.mesh" -o "$TMP/elephant.mesh" &&
   "$R" check "$TMP/elephant.mesh" >/dev/null && ok mesh3d-elephant || ko mesh3d-elephant
 
 # bunny.mesh: 128 triangles are not Delaunay faces; boundary recovery adds Steiner points on the
 # surface, reported, and the volume is valid.
-out=$("$R" mesh "$SHARED/data/surf/bunny.mesh" -o "$TMP/bunny.mesh"); code=$?
+out=$("$R" mesh "$SHARED/data/surf/bunny.mesh" -o "$TMP/bunny.mesh" --nofill); code=$?
 if [ $code -eq 0 ] && [[ "$out" =~ \ ([1-9][0-9]*)\ Steiner\ points\ \(([0-9]+)\ on\ edges,\ ([0-9]+)\ in\ faces,\ 0\ inside\) ]] &&
    [ $((BASH_REMATCH[2] + BASH_REMATCH[3])) -eq "${BASH_REMATCH[1]}" ] &&
    "$R" check "$TMP/bunny.mesh" >/dev/null; then ok mesh3d-bunny-recovered; else ko "mesh3d-bunny-recovered: $code $out"; fi
+
+# Interior points (the default): the surface of the unit cube (2 x 2 cells per face) filled for
+# --hsiz 0.25: its boundary is recovered (the grid is cospherical: Steiner points on its edges)
+# and kept, interior vertices are added (more vertices than surface + Steiner ones), it is valid.
+/usr/bin/python3 - "$TMP/cube.mesh" <<'PY'
+import itertools, sys
+n = 2
+pts = sorted({p for p in itertools.product(range(n + 1), repeat=3) if 0 in p or n in p})
+idx = {p: i + 1 for i, p in enumerate(pts)}
+tris = []
+for axis in range(3):
+    for side in (0, n):
+        for a, b in itertools.product(range(n), repeat=2):
+            def P(u, v):
+                q = [0, 0, 0]; q[axis] = side; q[(axis + 1) % 3] = u; q[(axis + 2) % 3] = v
+                return idx[tuple(q)]
+            c = [P(a, b), P(a + 1, b), P(a + 1, b + 1), P(a, b + 1)]
+            if side == 0: c.reverse()  # outward normals
+            tris += [(c[0], c[1], c[2]), (c[0], c[2], c[3])]
+with open(sys.argv[1], "w") as f:
+    f.write("MeshVersionFormatted 2\nDimension 3\nVertices\n%d\n" % len(pts))
+    f.write("".join("%g %g %g 0\n" % tuple(x / n for x in p) for p in pts))
+    f.write("Triangles\n%d\n" % len(tris) + "".join("%d %d %d 1\n" % t for t in tris) + "End\n")
+PY
+out=$("$R" mesh "$TMP/cube.mesh" -o "$TMP/cube_fill.mesh" --hsiz 0.25 2>/dev/null); code=$?
+if [ $code -eq 0 ] && [[ "$out" =~ ^[^:]*:\ ([0-9]+)\ vertices,\ ([0-9]+)\ tetrahedra\ \(q_min\ [0-9.]+\),\ ([0-9]+)\ boundary\ triangles\;\ ([0-9]+)\ Steiner ]] &&
+   [ "${BASH_REMATCH[1]}" -gt $((26 + BASH_REMATCH[4])) ] && [ "${BASH_REMATCH[3]}" -ge 48 ] &&
+   "$R" check "$TMP/cube_fill.mesh" >/dev/null; then
+  ok "mesh3d-fill ($out)"
+else
+  ko "mesh3d-fill: $code $out"
+fi
+expect_error mesh3d-fill-nofill-hsiz mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --hsiz 0.25 --nofill
+expect_error mesh3d-metric-refused mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --metric "$TMP/none.sol"
+expect_no_file mesh3d-refused-no-output "$TMP/y.mesh"
 exit $fail
