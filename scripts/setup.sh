@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config    # toolchain
+  ccache                                          # compiler cache (build.sh uses it when present)
   clang libclang-rt-14-dev                        # fuzzers (libFuzzer runtime) and the sanitizer build
   libgtest-dev libgmock-dev libbenchmark-dev      # tests and benchmarks
   libcli11-dev libeigen3-dev                      # command line, small dense algebra
