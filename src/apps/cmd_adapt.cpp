@@ -78,27 +78,30 @@ void finish(const AdaptArgs& a, const Mesh& input, const std::vector<Field>& fie
   }
 }
 
-/// The metric field for the run: from --metric (tensor, or scalar sizes), --hsiz, or (--optim)
-/// the implied metric of the input mesh.
+/// The Lp-optimal metric of complexity N of the solution --field: recovered Hessian (BOOK.md §2).
+template <int D>
+std::vector<SymMat<D>> metric_from_field(const AdaptArgs& a, const Mesh& mesh) {
+  const std::vector<Field> fields = read_sol(a.field, mesh);
+  const Field& u = select_field(fields, a.field_name, a.field);
+  const std::vector<SymMat<D>> hessians =
+      recover_hessian<D>(mesh, u.values, parse_recovery_method(a.recovery));
+  HessianMetricOptions h;
+  h.norm = parse_norm(a.norm);
+  h.complexity = a.complexity;
+  h.hmin = a.opt.hmin;
+  h.hmax = a.opt.hmax;
+  h.aniso_max = a.aniso_max;
+  h.validate();
+  return hessian_metric<D>(mesh, hessians, h);
+}
+
+/// The metric field for the run: from --metric (tensor, or scalar sizes), --hsiz, --field, or
+/// (--optim) the implied metric of the input mesh.
 std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
   if (!a.metric.empty()) return read_metric_file<2>(a.metric, mesh);
   if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
-  if (!a.field.empty()) {
-    // Metric from the solution: recovered Hessian, Lp-optimal metric of complexity N.
-    const std::vector<Field> fields = read_sol(a.field, mesh);
-    const Field& u = select_field(fields, a.field_name, a.field);
-    const std::vector<SymMat2> hessians =
-        recover_hessian<2>(mesh, u.values, parse_recovery_method(a.recovery));
-    HessianMetricOptions h;
-    h.norm = parse_norm(a.norm);
-    h.complexity = a.complexity;
-    h.hmin = a.opt.hmin;
-    h.hmax = a.opt.hmax;
-    h.aniso_max = a.aniso_max;
-    h.validate();
-    return hessian_metric<2>(mesh, hessians, h);
-  }
+  if (!a.field.empty()) return metric_from_field<2>(a, mesh);
   return implied_metric_of_used(mesh);
 }
 
@@ -161,11 +164,10 @@ void print_peak_memory(std::size_t tets) {
                bytes / 1e6, tets > 0 ? bytes / static_cast<double>(tets) : 0.0, tets);
 }
 
-/// The 3D metric field: --metric (6 tensor coefficients or sizes), --hsiz, or --optim.
+/// The 3D metric field: --metric (6 tensor coefficients or sizes), --hsiz, --field or --optim.
 std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
-  if (!a.field.empty())
-    throw InputError("--field (Hessian metric) is 2D only so far: give --metric, --hsiz or --optim");
+  if (!a.field.empty()) return metric_from_field<3>(a, mesh);
   if (!a.metric.empty()) return read_metric_file<3>(a.metric, mesh);
   if (a.hsiz > 0.0) return std::vector<SymMat3>(nv, isotropic_metric<3>(a.hsiz));
   return implied_metric<3>(mesh.coords, mesh.tets);
@@ -256,7 +258,7 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--out-metric", a->out_metric, "Write the metric at the output vertices (.sol)");
   cmd->add_option("--field", a->field,
                   "Solution (.sol): adapt to its Lp-optimal Hessian metric of complexity N and "
-                  "transfer it (to --out-fields, default OUT.sol); planar meshes and surfaces");
+                  "transfer it (to --out-fields, default OUT.sol)");
   cmd->add_option("--field-name", a->field_name, "Scalar field of --field by name or 0-based index");
   cmd->add_option("--complexity", a->complexity, "Target complexity N with --field");
   cmd->add_option("--norm", a->norm, "Lp norm of the metric with --field (1, 2, ..., inf)")

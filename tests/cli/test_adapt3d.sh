@@ -88,6 +88,40 @@ open(sys.argv[2], 'w').write('MeshVersionFormatted 2\nDimension 3\nSolAtVertices
 PY
 expect_error non-spd-metric adapt "$C" --metric "$TMP/bad.sol" -o "$TMP/x.mesh"
 expect_no_file non-spd-no-output "$TMP/x.mesh"
-expect_error field-3d adapt "$C" --field "$TMP/s.sol" --complexity 100 -o "$TMP/x.mesh"
+
+# --field: u = x² + 4y² + 16z² has the constant Hessian diag(2, 8, 32), so the Lp metric asks for
+# sizes in the ratio 1 : 1/2 : 1/4 along x, y, z: the mean |dx| of the output edges is about 4
+# times their mean |dz|; the count follows the complexity (6√2 N tets for unit regular ones);
+# the solution is transferred to OUT.sol (one value per output vertex, interpolated P1 from the input).
+/usr/bin/python3 - "$C" "$TMP/q.sol" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+i = toks.index('Vertices'); n = int(toks[i + 1])
+p = [[float(t) for t in toks[i + 2 + 4 * k:i + 5 + 4 * k]] for k in range(n)]
+open(sys.argv[2], 'w').write('MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n%d\n1 1\n' % n +
+                             ''.join('%r\n' % (x * x + 4 * y * y + 16 * z * z) for x, y, z in p) + 'End\n')
+PY
+"$R" adapt "$C" --field "$TMP/q.sol" --complexity 400 --hgrad 0 -o "$TMP/fq.mesh" -q &&
+  "$R" check "$TMP/fq.mesh" >/dev/null && ok adapt3d-field || ko adapt3d-field
+/usr/bin/python3 - "$TMP/fq.mesh" "$TMP/fq.sol" <<'PY' && ok field-anisotropy-count-transfer || ko field-anisotropy-count-transfer
+import sys
+toks = open(sys.argv[1]).read().split()
+i = toks.index('Vertices'); n = int(toks[i + 1])
+p = [[float(t) for t in toks[i + 2 + 4 * k:i + 5 + 4 * k]] for k in range(n)]
+j = toks.index('Tetrahedra'); nt = int(toks[j + 1])
+tets = [[int(t) - 1 for t in toks[j + 2 + 5 * k:j + 6 + 5 * k]] for k in range(nt)]
+edges = {(min(a, b), max(a, b)) for t in tets for a in t for b in t if a != b}
+mean = lambda c: sum(abs(p[a][c] - p[b][c]) for a, b in edges) / len(edges)
+ratio = mean(0) / mean(2)
+s = open(sys.argv[2]).read().split()
+k = s.index('SolAtVertices'); vals = [float(v) for v in s[k + 4:k + 4 + n]]
+err = max(abs(v - (x * x + 4 * y * y + 16 * z * z)) for v, (x, y, z) in zip(vals, p))
+print('tets', nt, 'predicted', round(6 * 2 ** 0.5 * 400), 'dx/dz', round(ratio, 2), 'transfer err', err)
+sys.exit(0 if 2.5 < ratio < 6 and 0.4 * 6 * 2 ** 0.5 * 400 < nt < 2.5 * 6 * 2 ** 0.5 * 400
+         and len(vals) == n and err < 0.1 else 1)
+PY
+expect_error field-3d-no-complexity adapt "$C" --field "$TMP/q.sol" -o "$TMP/x.mesh"
 expect_no_file field-3d-no-output "$TMP/x.mesh"
+expect_error field-3d-missing-file adapt "$C" --field "$TMP/none.sol" --complexity 100 -o "$TMP/x.mesh"
+expect_no_file field-3d-missing-no-output "$TMP/x.mesh"
 exit $fail
