@@ -16,7 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path crasher_root() { return fs::path(__FILE__).parent_path() / "crashers"; }
+fs::path crasher_root() { return fs::path(RIEMESH_TEST_DIR) / "io" / "crashers"; }
 
 // Reads an input the way fuzz/fuzz_<target>.cpp does; false if there is no such target.
 bool replay(const std::string& target, const std::string& bytes) {
