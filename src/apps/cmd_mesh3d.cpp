@@ -16,37 +16,36 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
                               const std::string& output, const VolumeFillArgs& args) {
   if (surface.dim != 3 || !surface.tets.empty() || surface.triangles.empty())
     throw InputError(input + ": not a surface (3D triangles without tetrahedra)");
-  RecoveredVolume r;
-  try {
-    r = recover_volume(surface);
-  } catch (const InputError& e) {
+  const auto named = [&](const InputError& e) {
     std::string msg = input;
     msg += ": ";
     msg += e.what();
-    throw InputError(msg);
-  }
-  const BoundaryRecoveryStats& s = r.stats;
+    return InputError(msg);
+  };
+  BoundaryRecoveryStats s;
   Mesh out;
   double q_min = 0.0;
-  if (args.fill) {
-    Adapt3dOptions o;
-    o.hgrad = args.hgrad;
-    try {
-      Adapt3dResult filled = fill_volume(std::move(r.volume), args.hsiz, o, [&](const PassStats& p) {
+  std::size_t field_points = 0;
+  try {
+    if (args.fill) {
+      Adapt3dOptions o;
+      o.hgrad = args.hgrad;
+      FilledVolume filled = mesh_volume(surface, args.hsiz, o, [&](const PassStats& p) {
         if (!args.quiet)
           std::fprintf(stderr, "fill pass %2d: %zu vertices %zu tetrahedra, q_min %.3f (%.2f s)\n",
                        p.pass, p.vertices, p.triangles, p.q_min, p.seconds);
         q_min = p.q_min;
       });
-      out = std::move(filled.mesh);
-    } catch (const InputError& e) {
-      std::string msg = input;
-      msg += ": ";
-      msg += e.what();
-      throw InputError(msg);
+      s = filled.stats;
+      field_points = filled.field_points;
+      out = std::move(filled.adapted.mesh);
+    } else {
+      RecoveredVolume r = recover_volume(surface);
+      s = r.stats;
+      out = std::move(r.volume);
     }
-  } else {
-    out = std::move(r.volume);
+  } catch (const InputError& e) {
+    throw named(e);
   }
   write_mesh(out, output);
   if (!args.quiet) {
@@ -57,11 +56,12 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
       std::printf("%s: %zu vertices, %zu tetrahedra, %zu boundary triangles; ", output.c_str(),
                   out.num_vertices(), out.num_tets(), out.num_triangles());
     std::printf("%zu Steiner points "
-                "(%zu on edges, %zu in faces, %zu inside); Delaunay of the %zu surface vertices: "
-                "%zu tetrahedra, %zu faces and %zu edges missing, recovered in %zu rounds\n",
-                s.steiner(), s.steiner_on_edges, s.steiner_in_faces,
-                s.steiner_inside, s.surface_vertices, s.delaunay_tets, s.missing_faces,
-                s.missing_edges, s.rounds);
+                "(%zu on edges, %zu in faces, %zu inside); Delaunay of the %zu surface vertices",
+                s.steiner(), s.steiner_on_edges, s.steiner_in_faces, s.steiner_inside,
+                s.surface_vertices);
+    if (args.fill) std::printf(" and %zu field points", field_points);
+    std::printf(": %zu tetrahedra, %zu faces and %zu edges missing, recovered in %zu rounds\n",
+                s.delaunay_tets, s.missing_faces, s.missing_edges, s.rounds);
   }
 }
 

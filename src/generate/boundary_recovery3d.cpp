@@ -48,7 +48,7 @@ int bary_orient(const Bary& a, const Bary& b, const Bary& c) {
 }
 
 /// How a point lies on the surface.
-enum class Kind : std::uint8_t { kVertex, kEdge, kFace };
+enum class Kind : std::uint8_t { kVertex, kEdge, kFace, kInterior };
 struct PointInfo {
   Kind kind = Kind::kVertex;
   Id owner = kNoId;  // input edge (kEdge) or input triangle (kFace)
@@ -103,9 +103,11 @@ class Recovery {
   std::optional<std::size_t> find_directed(std::size_t f, Id a, Id b) const;
   Mesh volume(const Tetrahedralization& tz) const;
   bool refine_flat_tets(const Mesh& v);
+  void require_interior_used(const Mesh& v) const;
 
   const Mesh& surface_;
   std::vector<Id> vertices_;    // surface vertex of each input point
+  std::size_t interior_ = 0;    // interior points, after the surface's (coords_, info_)
   std::vector<double> coords_;  // all points, input then Steiner
   std::vector<PointInfo> info_;
   std::vector<InputEdge> edges_;
@@ -144,7 +146,13 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
                      s.coords.begin() + static_cast<std::ptrdiff_t>(3 * v + 3));
     }
   const std::size_t nv = vertices_.size();
-  info_.assign(nv, PointInfo{});
+  if (options.interior_points.size() % 3 != 0)
+    throw InputError("interior points: 3 coordinates per point expected");
+  for (double c : options.interior_points)
+    if (!std::isfinite(c)) throw InputError("interior points: a coordinate is not finite");
+  coords_.insert(coords_.end(), options.interior_points.begin(), options.interior_points.end());
+  interior_ = options.interior_points.size() / 3;
+  info_.assign(nv + interior_, PointInfo{Kind::kInterior});
   stats_.surface_vertices = nv;
   cap_ = static_cast<std::size_t>(options.max_steiner_per_vertex * static_cast<double>(nv));
 
@@ -181,13 +189,20 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
 
   std::vector<Id> order = insertion_order(coords_, InsertionOrder::kBrio);
   kernel_.emplace(&coords_, order);
-  kernel_->reserve(2 * nv);
+  for (std::size_t k = 0; k < nv; ++k) info_[k].kind = Kind::kVertex;
+  kernel_->reserve(2 * nv + interior_);
   for (std::size_t k = 4; k < order.size(); ++k) {
     Id same = kNoId;
     if (!kernel_->insert(order[k], &same)) {
+      const auto a = static_cast<std::size_t>(same), b = static_cast<std::size_t>(order[k]);
+      if (a >= nv || b >= nv) {
+        std::string msg = "interior point ";
+        msg += std::to_string(std::max(a, b) - nv + 1);
+        msg += " coincides with another point";
+        throw InputError(msg);
+      }
       std::string msg = "the surface cannot bound a volume: 1 pairs of vertices at the same place (first: ";
-      msg += vertex_pair(vertices_[static_cast<std::size_t>(same)],
-                         vertices_[static_cast<std::size_t>(order[k])]);
+      msg += vertex_pair(vertices_[a], vertices_[b]);
       msg += ")";
       throw InputError(msg);
     }
@@ -217,6 +232,9 @@ Bary Recovery::bary(std::size_t f, Id p) const {
     case Kind::kFace:
       RIEMESH_CHECK(static_cast<std::size_t>(info.owner) == f);
       l = info.lambda;
+      break;
+    case Kind::kInterior:  // never on a facet
+      RIEMESH_CHECK(false);
       break;
   }
   return l;
@@ -493,6 +511,24 @@ Mesh Recovery::volume(const Tetrahedralization& tz) const {
   return volume_inside(refined, d);
 }
 
+/// Every interior point must be a vertex of an inside tet (else it was outside or on the surface).
+void Recovery::require_interior_used(const Mesh& v) const {
+  if (interior_ == 0) return;
+  const std::size_t first = vertices_.size();
+  std::vector<char> used(interior_, 0);
+  for (Id q : v.tets) {
+    const auto k = static_cast<std::size_t>(q);
+    if (k >= first && k < first + interior_) used[k - first] = 1;
+  }
+  for (std::size_t k = 0; k < interior_; ++k)
+    if (!used[k]) {
+      std::string msg = "interior point ";
+      msg += std::to_string(k + 1);
+      msg += " is not inside the surface";
+      throw InputError(msg);
+    }
+}
+
 /// Inside tets of (relative) volume near zero: four nearly cocircular surface points, whose
 /// tetrahedron rounding made positive, both diagonals present. Each such tet gets a subsegment
 /// of its edges split, or else a subface of its faces refined, which puts a point inside its
@@ -596,7 +632,10 @@ RecoveredVolume Recovery::run() {
     }
     if (missing_faces.empty()) {
       Mesh v = volume(tz);
-      if (!refine_flat_tets(v)) return {std::move(v), stats_};
+      if (!refine_flat_tets(v)) {
+        require_interior_used(v);
+        return {std::move(v), stats_};
+      }
       continue;
     }
     for (const auto& [f, s] : missing_faces) {

@@ -25,6 +25,7 @@
 // (they would never converge); a surface that needs more than max_steiner_per_vertex Steiner
 // points per surface vertex gives an InputError instead of a hang.
 #include <cstddef>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -32,6 +33,11 @@ namespace riemesh {
 
 struct BoundaryRecoveryOptions {
   double max_steiner_per_vertex = 20;  // cap on Steiner points / surface vertices
+  /// Points strictly inside the volume (x, y, z each), inserted with the surface vertices (field
+  /// points, volume_fill3d.hpp); they become the volume's vertices after the surface's, before
+  /// the Steiner points. InputError when one is not a vertex of an inside tetrahedron (outside,
+  /// or on the surface) or coincides with another point.
+  std::vector<double> interior_points;
 };
 
 struct BoundaryRecoveryStats {
@@ -48,7 +54,7 @@ struct BoundaryRecoveryStats {
 
 struct RecoveredVolume {
   /// Vertices: the surface's vertices of triangles (in increasing id order, refs and tags kept),
-  /// then the Steiner points (ref 0). Boundary triangles: the subfaces of each input triangle,
+  /// then the interior points of the options, then the Steiner points (ref 0). Boundary triangles: the subfaces of each input triangle,
   /// oriented like it, with its ref and tag. Tet refs are 0.
   Mesh volume;
   BoundaryRecoveryStats stats;

@@ -11,6 +11,7 @@
 #include "generate/boundary_recovery3d.hpp"
 #include "generate/volume_fill3d.hpp"
 #include "mesh/check.hpp"
+#include "mesh/distance.hpp"
 #include "remesh/surface_test_meshes.hpp"
 
 namespace riemesh {
@@ -69,6 +70,78 @@ TEST(VolumeFill3d, FilledCubeIsValidAndKeepsItsBoundary) {
   const Adapt3dResult g = fill_volume(std::move(again), 0.25, o);
   EXPECT_EQ(g.mesh.coords, f.mesh.coords);
   EXPECT_EQ(g.mesh.tets, f.mesh.tets);
+}
+
+TEST(VolumeFill3d, FieldPointsAreInsideAwayFromTheSurfaceAtTheSizeSpacing) {
+  const RecoveredVolume r = recover_volume(test::cube_surface(4));
+  const double h = 0.1;
+  const std::vector<double> sizes(r.volume.num_vertices(), h);
+  const FieldPoints3 f = field_points3d(r.volume, sizes);
+  // Octree leaves of side 1/16 (the first ≤ 0.1 of the unit box), kept when more than 1.5 h from
+  // the faces: the cells 2..13 along each axis (centres (i + ½)/16, jitter ±0.2/32).
+  ASSERT_EQ(f.size(), 12u * 12u * 12u);
+  ASSERT_EQ(f.coords.size(), 3 * f.size());
+  const TriangleTree surface(r.volume);
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    const Vec3 p{f.coords[3 * k], f.coords[3 * k + 1], f.coords[3 * k + 2]};
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_GT(p[c], 0.0);
+      EXPECT_LT(p[c], 1.0);
+    }
+    EXPECT_GE(surface.nearest(p).distance, 1.5 * h - 1e-12);
+    EXPECT_DOUBLE_EQ(f.sizes[k], h);
+  }
+  // Nearest neighbours at about the cell side (1/16, jitter ±20%).
+  for (std::size_t k = 0; k < f.size(); k += 17) {
+    double best = 1e300;
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      if (j == k) continue;
+      double d2 = 0.0;
+      for (int c = 0; c < 3; ++c) d2 += std::pow(f.coords[3 * k + c] - f.coords[3 * j + c], 2);
+      best = std::min(best, d2);
+    }
+    EXPECT_GT(std::sqrt(best), 0.6 / 16);
+    EXPECT_LT(std::sqrt(best), 1.4 / 16);
+  }
+  const FieldPoints3 again = field_points3d(r.volume, sizes);
+  EXPECT_EQ(again.coords, f.coords);
+}
+
+TEST(VolumeFill3d, InteriorPointsAreRecoveredInside) {
+  BoundaryRecoveryOptions o;
+  o.interior_points = {0.5, 0.5, 0.5, 0.3, 0.6, 0.4};
+  const RecoveredVolume r = recover_volume(test::cube_surface(3), o);
+  EXPECT_TRUE(check_mesh(r.volume).valid());
+  EXPECT_NEAR(tet_volume_sum(r.volume), 1.0, 1e-12);
+  const std::size_t first = r.stats.surface_vertices;
+  EXPECT_EQ(r.volume.coords[3 * first], 0.5);
+  EXPECT_EQ(r.volume.coords[3 * (first + 1) + 1], 0.6);
+  std::set<Id> used(r.volume.tets.begin(), r.volume.tets.end());
+  EXPECT_TRUE(used.count(static_cast<Id>(first)) && used.count(static_cast<Id>(first + 1)));
+  o.interior_points = {1.5, 0.5, 0.5};
+  try {
+    recover_volume(test::cube_surface(3), o);
+    ADD_FAILURE() << "a point outside was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("interior point 1 is not inside the surface"), std::string::npos)
+        << e.what();
+  }
+  o.interior_points = {0.5, 0.5};
+  EXPECT_THROW(recover_volume(test::cube_surface(3), o), InputError);
+}
+
+TEST(VolumeFill3d, MeshVolumeFromASurface) {
+  // Sizes from the boundary edges (hsiz 0): the interior matches the kept surface.
+  const Mesh surface = test::cube_surface(8);
+  const FilledVolume f = mesh_volume(surface, 0.0, Adapt3dOptions{});
+  EXPECT_GT(f.field_points, 20u);
+  EXPECT_TRUE(check_mesh(f.adapted.mesh).valid());
+  EXPECT_NEAR(tet_volume_sum(f.adapted.mesh), 1.0, 1e-12);
+  EXPECT_EQ(f.adapted.mesh.num_triangles(), surface.num_triangles() + 2 * f.stats.steiner());
+  EXPECT_GT(f.adapted.report.passes.back().q_min, 0.4);
+  const FilledVolume g = mesh_volume(surface, 0.0, Adapt3dOptions{});
+  EXPECT_EQ(g.adapted.mesh.coords, f.adapted.mesh.coords);
+  EXPECT_EQ(g.adapted.mesh.tets, f.adapted.mesh.tets);
 }
 
 TEST(VolumeFill3d, BadSizeIsAnError) {
