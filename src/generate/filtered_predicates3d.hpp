@@ -13,6 +13,11 @@ namespace riemesh::detail {
 int orient3d_exact_sign(const double* a, const double* b, const double* c, const double* d);
 int insphere_exact_sign(const double* a, const double* b, const double* c, const double* d,
                         const double* e);
+/// orient3d_sign / insphere_sign below, out of line: the later stages behind the static filters,
+/// so that the static stage inlines into the kernels' loops.
+int orient3d_filtered_sign(const double* a, const double* b, const double* c, const double* d);
+int insphere_filtered_sign(const double* a, const double* b, const double* c, const double* d,
+                           const double* e);
 
 inline double det3(double a00, double a01, double a02, double a10, double a11, double a12,
                    double a20, double a21, double a22) {
@@ -136,7 +141,7 @@ inline int orient3d_sign(const StaticFilter3d& f, const double* a, const double*
                           c[2] - a[2], d[0] - a[0], d[1] - a[1], d[2] - a[2]);
   if (det > f.orient) return 1;
   if (det < -f.orient) return -1;
-  return orient3d_sign(a, b, c, d);
+  return orient3d_filtered_sign(a, b, c, d);
 }
 
 /// insphere_sign for points of the filter's box.
@@ -151,7 +156,7 @@ inline int insphere_sign(const StaticFilter3d& f, const double* a, const double*
                           dx, dy, dz, dx * dx + dy * dy + dz * dz);
   if (det > f.insphere) return 1;
   if (det < -f.insphere) return -1;
-  return insphere_sign(a, b, c, d, e);
+  return insphere_filtered_sign(a, b, c, d, e);
 }
 
 }  // namespace riemesh::detail
