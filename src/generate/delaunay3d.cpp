@@ -225,8 +225,9 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
 /// first of the two to come stores its face in a small hash table keyed by the edge, the second
 /// finds it there and links both.
 void Delaunay3d::fill_cavity() {
-  // Face i of a positive tet, ordered so that vertex i is on its positive side.
-  static constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+  // Face f of a positive tet is, in order, {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}[f]
+  // (vertex f on its positive side); the edge from its vertex e to vertex e + 1 lies on the new
+  // tet's face opposite its vertex e + 2 (mod 3).
   const std::size_t nb = boundary_.size();
   // At most 3 nb / 2 edges: a load factor under 3/8.
   int bits = 6;
@@ -250,11 +251,8 @@ void Delaunay3d::fill_cavity() {
     mark_[t] = 0;
     mark_[f.outer >> 2] = 0;  // the marks are cleared for the next insertion
     nbr(f.outer) = 4 * t + static_cast<std::uint32_t>(f.face);
-    const int* s = kFace[f.face];
-    for (int e = 0; e < 3; ++e) {
-      // Edge s[e] - s[e+1] lies on the face opposite s[e+2].
-      const int opposite = s[(e + 2) % 3];
-      const Id a = f.v[s[e]], b = f.v[s[(e + 1) % 3]];
+    // Edge (a, b) of the face, on the new tet's face opposite vertex `opposite`.
+    const auto link = [&](Id a, Id b, int opposite) {
       const std::uint64_t key = a < b ? (std::uint64_t{static_cast<std::uint32_t>(a)} << 32) |
                                             static_cast<std::uint32_t>(b)
                                       : (std::uint64_t{static_cast<std::uint32_t>(b)} << 32) |
@@ -265,14 +263,22 @@ void Delaunay3d::fill_cavity() {
         EdgeSlot& slot = table[i];
         if (slot.stamp != epoch) {
           slot = {key, code, epoch};
-          break;
+          return;
         }
         if (slot.key == key) {
           tet.n[opposite] = slot.code;
           nbr(slot.code) = code;
-          break;
+          return;
         }
       }
+    };
+    // The face's edges, one case per face index so that the indices are constants.
+    const Id* w = f.v;
+    switch (f.face) {
+      case 0: link(w[1], w[3], 2); link(w[3], w[2], 1); link(w[2], w[1], 3); break;
+      case 1: link(w[0], w[2], 3); link(w[2], w[3], 0); link(w[3], w[0], 2); break;
+      case 2: link(w[0], w[3], 1); link(w[3], w[1], 0); link(w[1], w[0], 3); break;
+      default: link(w[0], w[1], 2); link(w[1], w[2], 0); link(w[2], w[0], 1); break;
     }
   }
   for (std::size_t k = nb; k < cavity_.size(); ++k) {
