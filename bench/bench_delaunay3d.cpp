@@ -8,6 +8,9 @@
 // Or, on the points of a TetGen .node file (for bench/delaunay3d_vs_tetgen.sh):
 //      build/bench/riemesh_bench_delaunay3d --node FILE.node [--runs R] [--order brio|hilbert|given]
 //   prints "points N tets T median_seconds S" (median over R runs of delaunay3d, reading excluded).
+// Or the kernel's work per point on N random points, Hilbert-sorted beforehand (as Sorted/N) or in
+// BRIO order, with one run only (for valgrind --tool=callgrind, whose counts the load does not
+// disturb): build/bench/riemesh_bench_delaunay3d --counts N [--order brio]
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -104,14 +107,32 @@ int run_node_file(const char* path, int runs, InsertionOrder order) {
   return 0;
 }
 
+int run_counts(std::size_t n, bool brio) {
+  const std::vector<double> xyz = brio ? random_cube(n) : hilbert_sorted(random_cube(n));
+  std::vector<Id> ids = insertion_order(xyz, brio ? InsertionOrder::kBrio : InsertionOrder::kAsGiven);
+  Delaunay3d kernel(&xyz, ids);
+  kernel.reserve(ids.size());
+  for (std::size_t k = 4; k < ids.size(); ++k) kernel.insert(ids[k]);
+  const Delaunay3dStats& s = kernel.stats();
+  const double per = 1.0 / static_cast<double>(n);
+  std::printf("points %zu tets %zu per point: walk steps %.2f, deleted tets %.2f, conflict tests %.2f\n", n,
+              kernel.result().num_tets(), per * static_cast<double>(s.walk_steps),
+              per * static_cast<double>(s.cavity_tets), per * static_cast<double>(s.insphere_tests));
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const char* node = nullptr;
+  std::size_t counts = 0;
+  bool brio = false;  // --order brio given (for --counts, whose default is Hilbert-sorted points)
   int runs = 5;
   InsertionOrder order = InsertionOrder::kBrio;
   for (int i = 1; i + 1 < argc; ++i) {
     if (std::strcmp(argv[i], "--node") == 0) node = argv[i + 1];
+    if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "brio") == 0) brio = true;
+    if (std::strcmp(argv[i], "--counts") == 0) counts = std::strtoull(argv[i + 1], nullptr, 10);
     if (std::strcmp(argv[i], "--runs") == 0) runs = std::max(1, std::atoi(argv[i + 1]));
     if (std::strcmp(argv[i], "--order") == 0)
       order = std::strcmp(argv[i + 1], "hilbert") == 0 ? InsertionOrder::kHilbert
@@ -119,6 +140,7 @@ int main(int argc, char** argv) {
                                                         : InsertionOrder::kBrio;
   }
   if (node) return run_node_file(node, runs, order);
+  if (counts >= 4) return run_counts(counts, brio);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -104,7 +104,6 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
 void Delaunay3d::reserve(std::size_t num_points) {
   tets_.reserve(7 * num_points);
   mark_.reserve(7 * num_points);
-  local_.resize(std::max(local_.size(), num_points + 1), {0, 0});
 }
 
 std::uint32_t Delaunay3d::new_tet() {
@@ -160,14 +159,12 @@ std::uint32_t Delaunay3d::locate(const double* p) {
   }
 }
 
-/// Does p conflict with tet t? Finite: p strictly inside the circumsphere. Ghost: p strictly
-/// beyond its hull face, or on the face's plane and in conflict with the finite tet behind it
-/// (i.e. strictly inside the face's circumcircle), so the cavity stays star-shaped from p.
-bool Delaunay3d::in_conflict(std::uint32_t t, const double* p) {
-  ++stats_.insphere_tests;
+/// Does p conflict with ghost t? When p is strictly beyond its hull face, or on the face's plane
+/// and in conflict with the finite tet behind it (i.e. strictly inside the face's circumcircle),
+/// so the cavity stays star-shaped from p. (A finite tet conflicts when p is strictly inside its
+/// circumsphere: tested inline in find_cavity.)
+bool Delaunay3d::ghost_in_conflict(std::uint32_t t, const double* p) {
   const Id* v = tets_[t].v;
-  if ((v[0] | v[1] | v[2] | v[3]) >= 0)
-    return insphere_sign(filter_, xyz(v[0]), xyz(v[1]), xyz(v[2]), xyz(v[3]), p) > 0;
   const int inf = v[0] == kInfinite ? 0 : v[1] == kInfinite ? 1 : v[2] == kInfinite ? 2 : 3;
   const double* q[4];
   for (int i = 0; i < 4; ++i) q[i] = i == inf ? p : xyz(v[i]);
@@ -183,7 +180,7 @@ bool Delaunay3d::in_conflict(std::uint32_t t, const double* p) {
 /// The cavity: tets in conflict with p reachable from `start` (a depth-first search on an
 /// explicit stack), and its boundary faces as the new tets they will become.
 void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
-  ++epoch_;
+  ++epoch_;  // wraps to 0 after 2^32 insertions: fill_cavity then clears the stamps
   cavity_.clear();
   boundary_.clear();
   stack_.clear();
@@ -198,7 +195,13 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
       const std::uint32_t n = code >> 2;
       if (mark_[n] == kInCavity) continue;
       if (mark_[n] != kOutside) {
-        if (in_conflict(n, p)) {
+        ++stats_.insphere_tests;
+        const Id* w = tets_[n].v;
+        const bool conflict =
+            (w[0] | w[1] | w[2] | w[3]) >= 0
+                ? insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0
+                : ghost_in_conflict(n, p);
+        if (conflict) {
           mark_[n] = kInCavity;
           stack_.push_back(n);
           continue;
@@ -216,55 +219,74 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
   stats_.cavity_tets += cavity_.size();
 }
 
-/// Replaces the cavity by one tet per boundary face joined to the new point. The cavity
-/// boundary is a triangulated sphere seen from the point; its faces, oriented by kFace, traverse
-/// each edge once in each direction. Its vertices get local numbers 0..m-1 (m <= nb/2 + 2 by
-/// Euler's formula), each new tet writes its faces through the point into a small m x m table at
-/// the directed edge they contain, and reads its neighbours at the reversed edges.
+/// Replaces the cavity by one tet per boundary face joined to the new point, in one sweep. The
+/// cavity boundary is a triangulated sphere: each of its edges is on two boundary faces, and the
+/// two new tets on them are neighbours across their faces through that edge and the point. The
+/// first of the two to come stores its face in a small hash table keyed by the edge, the second
+/// finds it there and links both.
 void Delaunay3d::fill_cavity() {
-  // Face i of a positive tet, ordered so that vertex i is on its positive side.
-  static constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+  // Face f of a positive tet is, in order, {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}[f]
+  // (vertex f on its positive side); the edge from its vertex e to vertex e + 1 lies on the new
+  // tet's face opposite its vertex e + 2 (mod 3).
   const std::size_t nb = boundary_.size();
-  const std::uint32_t m = static_cast<std::uint32_t>(nb / 2 + 2);
-  if (edge_table_.size() < static_cast<std::size_t>(m) * m) edge_table_.resize(m * m);
-  std::uint32_t count = 0;
-  const auto local = [&](Id v) {
-    const auto u = static_cast<std::size_t>(v + 1);  // the vertex at infinity is -1
-    if (u >= local_.size()) local_.resize(std::max(2 * local_.size(), u + 1), {0, 0});
-    if (local_[u].stamp != epoch_) {
-      RIEMESH_CHECK(count < m);  // the cavity is a ball: its boundary is a sphere
-      local_[u] = {epoch_, count++};
-    }
-    return local_[u].id;
-  };
-  std::uint32_t* table = edge_table_.data();
+  // At most 3 nb / 2 edges: a load factor under 3/8.
+  int bits = 6;
+  while ((std::size_t{1} << bits) < 4 * nb) ++bits;
+  const std::size_t size = std::size_t{1} << bits;
+  if (edges_.size() < size) edges_.resize(size, EdgeSlot{0, 0, 0});
+  if (epoch_ == 0) {  // the stamps wrapped around: forget them all
+    for (EdgeSlot& e : edges_) e.stamp = 0;
+    epoch_ = 1;
+  }
+  const std::size_t mask = size - 1;
+  const std::uint32_t epoch = epoch_;
+  EdgeSlot* table = edges_.data();
+  std::uint32_t t = 0;
   for (std::size_t k = 0; k < nb; ++k) {
-    BoundaryFace& f = boundary_[k];
-    const std::uint32_t t = k < cavity_.size() ? cavity_[k] : new_tet();
-    std::copy(f.v, f.v + 4, tets_[t].v);
-    tets_[t].n[f.face] = f.outer;
+    const BoundaryFace& f = boundary_[k];
+    t = k < cavity_.size() ? cavity_[k] : new_tet();
+    Tet& tet = tets_[t];
+    std::copy(f.v, f.v + 4, tet.v);
+    tet.n[f.face] = f.outer;
     mark_[t] = 0;
     mark_[f.outer >> 2] = 0;  // the marks are cleared for the next insertion
     nbr(f.outer) = 4 * t + static_cast<std::uint32_t>(f.face);
-    const int* s = kFace[f.face];
-    for (int e = 0; e < 3; ++e) f.local[e] = local(f.v[s[e]]);
-    // Directed edge s[e] -> s[e+1] lies on the face opposite s[e+2].
-    for (int e = 0; e < 3; ++e)
-      table[f.local[e] * m + f.local[(e + 1) % 3]] = 4 * t + static_cast<std::uint32_t>(s[(e + 2) % 3]);
-    f.tet = t;
-  }
-  for (std::size_t k = 0; k < nb; ++k) {
-    const BoundaryFace& f = boundary_[k];
-    const int* s = kFace[f.face];
-    for (int e = 0; e < 3; ++e)
-      tets_[f.tet].n[s[(e + 2) % 3]] = table[f.local[(e + 1) % 3] * m + f.local[e]];
+    // Edge (a, b) of the face, on the new tet's face opposite vertex `opposite`.
+    const auto link = [&](Id a, Id b, int opposite) {
+      const std::uint64_t key = a < b ? (std::uint64_t{static_cast<std::uint32_t>(a)} << 32) |
+                                            static_cast<std::uint32_t>(b)
+                                      : (std::uint64_t{static_cast<std::uint32_t>(b)} << 32) |
+                                            static_cast<std::uint32_t>(a);
+      const std::uint32_t code = 4 * t + static_cast<std::uint32_t>(opposite);
+      std::size_t i = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - bits));
+      for (;; i = (i + 1) & mask) {
+        EdgeSlot& slot = table[i];
+        if (slot.stamp != epoch) {
+          slot = {key, code, epoch};
+          return;
+        }
+        if (slot.key == key) {
+          tet.n[opposite] = slot.code;
+          nbr(slot.code) = code;
+          return;
+        }
+      }
+    };
+    // The face's edges, one case per face index so that the indices are constants.
+    const Id* w = f.v;
+    switch (f.face) {
+      case 0: link(w[1], w[3], 2); link(w[3], w[2], 1); link(w[2], w[1], 3); break;
+      case 1: link(w[0], w[2], 3); link(w[2], w[3], 0); link(w[3], w[0], 2); break;
+      case 2: link(w[0], w[3], 1); link(w[3], w[1], 0); link(w[1], w[0], 3); break;
+      default: link(w[0], w[1], 2); link(w[1], w[2], 0); link(w[2], w[0], 1); break;
+    }
   }
   for (std::size_t k = nb; k < cavity_.size(); ++k) {
     tets_[cavity_[k]].v[0] = kDeleted;
     mark_[cavity_[k]] = 0;
     free_.push_back(cavity_[k]);
   }
-  last_ = boundary_.back().tet;
+  last_ = t;
 }
 
 bool Delaunay3d::insert(Id v, Id* same) {
@@ -291,13 +313,20 @@ bool Delaunay3d::insert(Id v, Id* same) {
 Tetrahedralization Delaunay3d::result() const {
   Tetrahedralization out;
   const std::size_t n = mark_.size();
-  std::vector<Id> old2new(n);
+  // Huge pages for the large arrays (fewer page faults), then sized once and written in place:
+  // no per-element capacity checks.
+  const auto sized = [](std::vector<Id>& a, std::size_t size) {
+    a.reserve(size);
+    detail::advise_huge_pages(a.data(), size * sizeof(Id));
+    a.resize(size);
+  };
+  std::vector<Id> old2new;
+  sized(old2new, n);
   Id count = 0;
   for (std::size_t t = 0; t < n; ++t)
     old2new[t] = is_ghost(static_cast<std::uint32_t>(t)) ? kNoId : count++;
-  // Sized once and written in place: no per-element capacity checks.
-  out.tets.resize(4 * static_cast<std::size_t>(count));
-  out.tet2tet.resize(4 * static_cast<std::size_t>(count));
+  sized(out.tets, 4 * static_cast<std::size_t>(count));
+  sized(out.tet2tet, 4 * static_cast<std::size_t>(count));
   Id* v = out.tets.data();
   Id* a = out.tet2tet.data();
   for (std::size_t t = 0; t < n; ++t) {

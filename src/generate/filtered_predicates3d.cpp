@@ -18,4 +18,13 @@ int insphere_exact_sign(const double* a, const double* b, const double* c, const
   return sign(insphere(a, b, c, d, e));
 }
 
+int orient3d_filtered_sign(const double* a, const double* b, const double* c, const double* d) {
+  return orient3d_sign(a, b, c, d);
+}
+
+int insphere_filtered_sign(const double* a, const double* b, const double* c, const double* d,
+                           const double* e) {
+  return insphere_sign(a, b, c, d, e);
+}
+
 }  // namespace riemesh::detail

@@ -7,12 +7,21 @@
 #include <cmath>
 #include <utility>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace riemesh::detail {
 
 /// Exact signs behind the filters (core/predicates.hpp, adapted to the conventions below).
 int orient3d_exact_sign(const double* a, const double* b, const double* c, const double* d);
 int insphere_exact_sign(const double* a, const double* b, const double* c, const double* d,
                         const double* e);
+/// orient3d_sign / insphere_sign below, out of line: the later stages behind the static filters,
+/// so that the static stage inlines into the kernels' loops.
+int orient3d_filtered_sign(const double* a, const double* b, const double* c, const double* d);
+int insphere_filtered_sign(const double* a, const double* b, const double* c, const double* d,
+                           const double* e);
 
 inline double det3(double a00, double a01, double a02, double a10, double a11, double a12,
                    double a20, double a21, double a22) {
@@ -136,22 +145,73 @@ inline int orient3d_sign(const StaticFilter3d& f, const double* a, const double*
                           c[2] - a[2], d[0] - a[0], d[1] - a[1], d[2] - a[2]);
   if (det > f.orient) return 1;
   if (det < -f.orient) return -1;
-  return orient3d_sign(a, b, c, d);
+  return orient3d_filtered_sign(a, b, c, d);
+}
+
+/// The in-sphere determinant of insphere_sign (rows a, c, b, d), evaluated as written.
+inline double insphere_det_scalar(const double* a, const double* b, const double* c,
+                                  const double* d, const double* e) {
+  const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
+  const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
+  const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
+  const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
+  return det4(ax, ay, az, ax * ax + ay * ay + az * az, cx, cy, cz, cx * cx + cy * cy + cz * cz,
+              bx, by, bz, bx * bx + by * by + bz * bz, dx, dy, dz, dx * dx + dy * dy + dz * dz);
+}
+
+/// insphere_det_scalar two lanes at a time (SSE2, which every x86-64 has): each lane performs
+/// the scalar operations in the scalar order, so the value is bitwise the same (no fused
+/// multiply-adds: the filter's error bound counts every rounding). Rows r0..r3 = a, c, b, d and
+/// columns X, Y, Z, W (W the squared norms); x01 holds column X of rows 0 and 1, etc.
+inline double insphere_det(const double* a, const double* b, const double* c, const double* d,
+                           const double* e) {
+#if defined(__SSE2__)
+  const __m128d ex = _mm_set1_pd(e[0]), ey = _mm_set1_pd(e[1]), ez = _mm_set1_pd(e[2]);
+  const __m128d x01 = _mm_sub_pd(_mm_setr_pd(a[0], c[0]), ex);
+  const __m128d x23 = _mm_sub_pd(_mm_setr_pd(b[0], d[0]), ex);
+  const __m128d y01 = _mm_sub_pd(_mm_setr_pd(a[1], c[1]), ey);
+  const __m128d y23 = _mm_sub_pd(_mm_setr_pd(b[1], d[1]), ey);
+  const __m128d z01 = _mm_sub_pd(_mm_setr_pd(a[2], c[2]), ez);
+  const __m128d z23 = _mm_sub_pd(_mm_setr_pd(b[2], d[2]), ez);
+  const __m128d w01 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x01, x01), _mm_mul_pd(y01, y01)),
+                                 _mm_mul_pd(z01, z01));
+  const __m128d w23 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x23, x23), _mm_mul_pd(y23, y23)),
+                                 _mm_mul_pd(z23, z23));
+  // 2x2 minors of columns X, Y: mij = Xj Yi - Xi Yj (rows i < j), as in det4.
+  const __m128d m02_03 = _mm_sub_pd(_mm_mul_pd(x23, _mm_unpacklo_pd(y01, y01)),
+                                    _mm_mul_pd(_mm_unpacklo_pd(x01, x01), y23));
+  const __m128d m12_13 = _mm_sub_pd(_mm_mul_pd(x23, _mm_unpackhi_pd(y01, y01)),
+                                    _mm_mul_pd(_mm_unpackhi_pd(x01, x01), y23));
+  const __m128d m01_23 =
+      _mm_sub_pd(_mm_mul_pd(_mm_unpackhi_pd(x01, x23), _mm_unpacklo_pd(y01, y23)),
+                 _mm_mul_pd(_mm_unpacklo_pd(x01, x23), _mm_unpackhi_pd(y01, y23)));
+  // 3x3 minors of columns X, Y, Z: [m012, m013] and [m023, m123].
+  const __m128d m012_013 =
+      _mm_add_pd(_mm_sub_pd(_mm_mul_pd(m12_13, _mm_unpacklo_pd(z01, z01)),
+                            _mm_mul_pd(m02_03, _mm_unpackhi_pd(z01, z01))),
+                 _mm_mul_pd(_mm_unpacklo_pd(m01_23, m01_23), z23));
+  const __m128d m023_123 =
+      _mm_add_pd(_mm_sub_pd(_mm_mul_pd(_mm_unpackhi_pd(m01_23, m01_23), z01),
+                            _mm_mul_pd(_mm_unpackhi_pd(m02_03, m12_13), _mm_unpacklo_pd(z23, z23))),
+                 _mm_mul_pd(_mm_unpacklo_pd(m02_03, m12_13), _mm_unpackhi_pd(z23, z23)));
+  // det = ((m123 W0 - m023 W1) + m013 W2) - m012 W3.
+  const __m128d p = _mm_mul_pd(m023_123, _mm_shuffle_pd(w01, w01, 1));  // m023 W1, m123 W0
+  const __m128d q = _mm_mul_pd(m012_013, _mm_shuffle_pd(w23, w23, 1));  // m012 W3, m013 W2
+  const double p0 = _mm_cvtsd_f64(p), p1 = _mm_cvtsd_f64(_mm_unpackhi_pd(p, p));
+  const double q0 = _mm_cvtsd_f64(q), q1 = _mm_cvtsd_f64(_mm_unpackhi_pd(q, q));
+  return ((p1 - p0) + q1) - q0;
+#else
+  return insphere_det_scalar(a, b, c, d, e);
+#endif
 }
 
 /// insphere_sign for points of the filter's box.
 inline int insphere_sign(const StaticFilter3d& f, const double* a, const double* b,
                          const double* c, const double* d, const double* e) {
-  const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
-  const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
-  const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
-  const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
-  const double det = det4(ax, ay, az, ax * ax + ay * ay + az * az, cx, cy, cz,
-                          cx * cx + cy * cy + cz * cz, bx, by, bz, bx * bx + by * by + bz * bz,
-                          dx, dy, dz, dx * dx + dy * dy + dz * dz);
+  const double det = insphere_det(a, b, c, d, e);
   if (det > f.insphere) return 1;
   if (det < -f.insphere) return -1;
-  return insphere_sign(a, b, c, d, e);
+  return insphere_filtered_sign(a, b, c, d, e);
 }
 
 }  // namespace riemesh::detail

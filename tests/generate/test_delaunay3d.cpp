@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -67,6 +68,21 @@ TEST(Delaunay3d, FilteredSignsAgreeWithExactOnes) {
               sign(exact::orient3d(p[0], p[1], p[2], p[3])));
     ASSERT_EQ(detail::insphere_sign(box, p[0], p[1], p[2], p[3], p[4]),
               sign(exact::insphere(p[0], p[1], p[2], p[3], p[4])));
+  }
+}
+
+TEST(Delaunay3d, VectorInsphereDeterminantIsBitwiseTheScalarOne) {
+  // The static filter's bound holds for the scalar evaluation order only.
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 20000; ++trial) {
+    double p[5][3];
+    const double scale = std::ldexp(1.0, trial % 40 - 20);
+    for (auto& q : p)
+      for (double& x : q) x = 3.0 + scale * u(rng);
+    const double vector = detail::insphere_det(p[0], p[1], p[2], p[3], p[4]);
+    const double scalar = detail::insphere_det_scalar(p[0], p[1], p[2], p[3], p[4]);
+    ASSERT_EQ(std::memcmp(&vector, &scalar, sizeof(double)), 0) << vector << " " << scalar;
   }
 }
 
