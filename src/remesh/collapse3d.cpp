@@ -1,6 +1,7 @@
 // Edge collapse: vertex `from` disappears into `to`; the tets of the edge's shell go.
 #include <algorithm>
 
+#include "remesh/boundary3d.hpp"
 #include "remesh/ops3d.hpp"
 
 namespace riemesh {
@@ -22,7 +23,10 @@ bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to)
   if (k == VertexKind::kInterior) return n == 0;
   if (n != 2) return false;
   const std::int32_t p0 = m.vplane[2 * from], p1 = m.vplane[2 * from + 1];
-  if (k == VertexKind::kPlanar) return refs[0] == p0 && refs[1] == p0;
+  if (k == VertexKind::kPlanar || k == VertexKind::kSurface) return refs[0] == p0 && refs[1] == p0;
+  if (k == VertexKind::kCurve)  // along its feature line only
+    return m.surface && ((refs[0] == p0 && refs[1] == p1) || (refs[0] == p1 && refs[1] == p0)) &&
+           m.surface->feature_edge(m, from, to, refs[0], refs[1]);
   return (refs[0] == p0 && refs[1] == p1) || (refs[0] == p1 && refs[1] == p0);
 }
 
@@ -66,6 +70,9 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
     for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));
     if (new_worst < old_worst) return Outcome::kRejectedQuality;
   }
+  // A vertex of a curved patch: the new boundary triangles stay near the input surface.
+  if (on_curved_boundary(m.vkind[from]) && !curved_boundary_ok(m, ball, from, to, m.xyz[to]))
+    return Outcome::kRejectedGeometry;
   const Substitution subst[1] = {{to, from}};
   if (!replace_cavity(m, ball, tets, subst)) return Outcome::kRejectedTopology;
   m.kill_vertex(from);
