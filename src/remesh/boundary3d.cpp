@@ -140,6 +140,30 @@ bool curved_boundary_ok(const TetMesh& m, std::span<const Id> ball, Id v, Id to,
   return m.surface->accepts(old_t, kept, new_t);
 }
 
+bool curved_split_ok(const TetMesh& m, std::span<const Id> shell, Id a, Id b, const Vec3& p) {
+  if (!m.surface) return true;
+  thread_local std::vector<Tri3> old_t, kept, new_t;
+  old_t.clear(), kept.clear(), new_t.clear();
+  for (const Id t : shell)
+    for (int i = 0; i < 4; ++i) {
+      const std::size_t s = 4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i);
+      const Id opp = m.tv[s];
+      if (opp == a || opp == b || !m.fbdy[s] || m.tadj[s] != kNoId || !m.surface->curved(m.fref[s]))
+        continue;
+      Id f[3];
+      for (int k = 0; k < 3; ++k) f[k] = m.tv[4 * t + kTetFace[i][k]];
+      const Tri3 o{m.xyz[f[0]], m.xyz[f[1]], m.xyz[f[2]]};
+      old_t.push_back(o);
+      for (const Id end : {a, b}) {
+        Tri3 n = o;
+        for (int k = 0; k < 3; ++k)
+          if (f[k] == end) n[static_cast<std::size_t>(k)] = p;
+        kept.push_back(o), new_t.push_back(n);
+      }
+    }
+  return m.surface->accepts(old_t, kept, new_t);
+}
+
 void intersect_curvature_sizes(const Mesh& volume, std::vector<SymMat3>& metrics,
                                const Adapt3dOptions& options) {
   const std::size_t nv = volume.num_vertices(), nt = volume.num_triangles();

@@ -10,7 +10,7 @@
 // kCurve (on the reconstructed curve), corners kFixed. A collapse or a move of such a vertex is
 // accepted only when its new boundary triangles stay within hausd of the input surface and the
 // input within hausd of them (surface_hausdorff.hpp), no boundary triangle turning by more than
-// 30°. A split of a boundary edge is refused when it would create a tet whose four vertices are
+// 30°; so is a split of a curved boundary edge. A split of a boundary edge is refused when it would create a tet whose four vertices are
 // on the boundary with quality below kBoundaryTetFloor (such tets, at folds of the surface, no
 // interior operation can repair).
 #include <memory>
@@ -66,6 +66,9 @@ class Boundary3d {
 /// The boundary checks of a collapse (to != kNoId: v goes into `to`) or a move (to == kNoId: v
 /// goes to p) of a kSurface or kCurve vertex v with ball `ball`; true when m.surface is null.
 bool curved_boundary_ok(const TetMesh& m, std::span<const Id> ball, Id v, Id to, const Vec3& p);
+
+/// The same checks for the split of the boundary edge (a, b) (shell `shell`) at p.
+bool curved_split_ok(const TetMesh& m, std::span<const Id> shell, Id a, Id b, const Vec3& p);
 
 /// Intersects, at the vertices of the curved listed patches of `volume`, the metrics with the
 /// geometric metric of that surface (surface_metric.hpp: sizes from curvature keeping the chords

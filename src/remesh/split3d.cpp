@@ -22,8 +22,7 @@ Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_qual
   if (shell.empty()) return Outcome::kRejectedTopology;
   // Geometry first, on the positions (the vertex is created only when the split goes ahead).
   const Id x = m.add_vertex(nv.p, nv.metric);
-  // With curved patches: no tet below the floor on three boundary vertices (boundary3d.hpp).
-  const bool curved = m.surface != nullptr;
+  const bool curved = on_curved_boundary(nv.kind);
   tets.clear();
   for (const Id t : shell) {
     NewTet lo{}, hi{};
@@ -41,6 +40,11 @@ Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_qual
       }
     }
     tets.push_back(lo), tets.push_back(hi);
+  }
+  // A vertex of a curved patch: the halves of the boundary faces stay near the input surface.
+  if (curved && !curved_split_ok(m, shell, a, b, nv.p)) {
+    m.kill_vertex(x);
+    return Outcome::kRejectedGeometry;
   }
   const Substitution subst[2] = {{x, a}, {x, b}};
   if (!replace_cavity(m, shell, tets, subst)) {
