@@ -23,6 +23,17 @@ constexpr double kOnLine = 0.25;
 /// Sizes on curved patches are computed for this fraction of hausd (as surface_adapt.cpp).
 constexpr double kCentroidFactor = 0.75;
 
+/// A new boundary triangle below this Euclidean quality is refused unless an old one was worse
+/// (bad boundary triangles make every tet on them bad, and no volume operator repairs them).
+constexpr double kTriangleFloor = 0.1;
+
+/// Mean-ratio quality 4√3 A / Σ l² of a triangle (1 equilateral).
+double tri_quality(const Tri3& t) {
+  const double l2 = dot(t[1] - t[0], t[1] - t[0]) + dot(t[2] - t[1], t[2] - t[1]) +
+                    dot(t[0] - t[2], t[0] - t[2]);
+  return l2 > 0.0 ? 3.4641016151377544 * norm(cross(t[1] - t[0], t[2] - t[0])) / l2 : 0.0;
+}
+
 Vec3 unit_normal(const Tri3& t) {
   const Vec3 n = cross(t[1] - t[0], t[2] - t[0]);
   const double l = norm(n);
@@ -111,8 +122,13 @@ Vec3 Boundary3d::place(VertexKind kind, const Vec3& p) const {
 
 bool Boundary3d::accepts(const std::vector<Tri3>& old_t, const std::vector<Tri3>& kept,
                          const std::vector<Tri3>& new_t) const {
-  for (std::size_t i = 0; i < new_t.size(); ++i)
+  double old_worst = 1.0, new_worst = 1.0;
+  for (const Tri3& t : old_t) old_worst = std::min(old_worst, tri_quality(t));
+  for (std::size_t i = 0; i < new_t.size(); ++i) {
     if (dot(unit_normal(kept[i]), unit_normal(new_t[i])) < kCosTurn) return false;
+    new_worst = std::min(new_worst, tri_quality(new_t[i]));
+  }
+  if (new_worst < kTriangleFloor && new_worst < old_worst) return false;
   const double h = kCheckMargin * hausd_;
   return new_triangles_close(*geo_, h, new_t, kNoId) && keeps_input_close(*geo_, h, old_t, new_t);
 }

@@ -10,9 +10,10 @@
 // kCurve (on the reconstructed curve), corners kFixed. A collapse or a move of such a vertex is
 // accepted only when its new boundary triangles stay within hausd of the input surface and the
 // input within hausd of them (surface_hausdorff.hpp), no boundary triangle turning by more than
-// 30°; so is a split of a curved boundary edge. A split of a boundary edge is refused when it would create a tet whose four vertices are
-// on the boundary with quality below kBoundaryTetFloor (such tets, at folds of the surface, no
-// interior operation can repair).
+// 30° or falling below Euclidean quality 0.1 (unless one was already worse); so is a split of a
+// curved boundary edge. With curved patches, a boundary split may not create a tet whose four
+// vertices are on the boundary with quality below kBoundaryTetFloor, nor may a collapse unless
+// its ball had a worse one (such tets, at folds of the surface, no operation repairs).
 #include <memory>
 #include <span>
 #include <vector>

@@ -30,6 +30,19 @@ bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to)
   return (refs[0] == p0 && refs[1] == p1) || (refs[0] == p1 && refs[1] == p0);
 }
 
+/// The worst quality of the tets with four boundary vertices among `tets` (1 when none).
+template <class Tets, class Verts>
+double worst_on_boundary(const TetMesh& m, const Tets& tets, Verts verts) {
+  double worst = 1.0;
+  for (const auto& t : tets) {
+    const Id* v = verts(t);
+    bool all = true;
+    for (int i = 0; i < 4 && all; ++i) all = m.vkind[v[i]] != VertexKind::kInterior;
+    if (all) worst = std::min(worst, tet_quality(m, v));
+  }
+  return worst;
+}
+
 }  // namespace
 
 Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) {
@@ -63,6 +76,14 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
     if (!(q > 0.0)) return Outcome::kRejectedGeometry;
     new_worst = std::min(new_worst, q);
     tets.push_back(n);
+  }
+  // With curved patches, no new tet on four boundary vertices below the floor (boundary3d.hpp)
+  // unless the ball had a worse one: such tets, at folds of the surface, stay for good.
+  if (m.surface) {
+    const double w4 = worst_on_boundary(m, tets, [](const NewTet& n) { return n.v; });
+    if (w4 < kBoundaryTetFloor &&
+        w4 < worst_on_boundary(m, ball, [&m](Id t) { return &m.tv[4 * t]; }))
+      return Outcome::kRejectedQuality;
   }
   // Below the floor only when the ball was already worse (its worst quality, computed only then).
   if (new_worst < limits.min_quality) {
