@@ -173,7 +173,8 @@ std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
   return implied_metric<3>(mesh.coords, mesh.tets);
 }
 
-/// A tetrahedral mesh: adapt3d (planar boundary patches remeshed, curved ones kept).
+/// A tetrahedral mesh: adapt3d (planar boundary patches in their planes, curved ones on the
+/// reconstruction of the input surface).
 void run3d(const AdaptArgs& a, Mesh&& mesh) {
   const std::vector<SymMat3> metrics = load_metric3(a, mesh);
   const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
@@ -249,8 +250,9 @@ void register_adapt(CLI::App& app) {
       "adapt",
       "Remesh a planar triangle mesh or a tetrahedral volume to a metric field (unit mesh in "
       "the metric), or a surface (triangles in 3D) to geometric sizes within --hausd. Volumes: "
-      "planar boundary patches are remeshed with the volume; curved boundary surfaces are kept "
-      "as given (--nosurf semantics) for now");
+      "the boundary is remeshed with the volume, planar patches in their planes, curved ones on "
+      "the smooth reconstruction of the input surface within --hausd (ridges by --angle and ref "
+      "changes; --nosurf keeps the whole surface)");
   cmd->add_option("input,--in", a->input, "Input mesh (.mesh, .meshb, .msh)")->required();
   cmd->add_option("-o,--output,--out", a->output, "Output mesh (.mesh, .meshb, .msh, .vtu)");
   cmd->add_option("--metric,--met,--sol", a->metric,
@@ -273,7 +275,9 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--hmax", a->opt.hmax, "Largest size");
   cmd->add_option("--hgrad", a->opt.hgrad, "Gradation: growth ratio between neighbours (0: off)")
       ->capture_default_str();
-  cmd->add_option("--hausd", a->opt.hausd, "Largest distance of boundary chords to the boundary curve")
+  cmd->add_option("--hausd", a->opt.hausd,
+                  "Largest distance of boundary chords to the boundary curve (2D), of the new "
+                  "boundary to the input surface (surfaces, curved patches of volumes)")
       ->capture_default_str();
   cmd->add_option("--angle,--ar", a->opt.angle_deg, "Corner angle threshold (degrees)")
       ->capture_default_str();

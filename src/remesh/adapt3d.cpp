@@ -14,6 +14,7 @@
 #include "mesh/hilbert.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
+#include "remesh/boundary3d.hpp"
 #include "remesh/pass_summary.hpp"
 #include "remesh/prepare_metrics.hpp"
 #include "remesh/remesh3d_context.hpp"
@@ -293,6 +294,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
       std::vector<SymMat3> permuted(metrics.begin(), metrics.end());
       if (metrics.size() == input_vertices)
         for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
+      if (!options.keep_surface) intersect_curvature_sizes(ordered, permuted, options);
       const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
       prepared = prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted),
                                     options, result.report);

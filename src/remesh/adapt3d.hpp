@@ -8,12 +8,12 @@
 // swaps on bad tets, smoothing and, last, sliver removal (sliver3d.hpp), until the lengths
 // settle.
 //
-// Boundary (until the surface remesher lands): a boundary patch (the listed faces of one ref)
-// that is planar is remeshed with the volume: its edges are split at points of the plane, its
-// vertices collapse and move in the plane, and vertices on the line where two planar patches
-// meet collapse along that line. Corners (three patches or more), vertices tagged corner or
-// required, interfaces and every vertex of a curved patch are kept as given (--nosurf
-// semantics), as is the whole surface with keep_surface.
+// Boundary: a boundary patch (the listed faces of one ref) that is planar is remeshed with the
+// volume: its edges are split at points of the plane, its vertices collapse and move in the
+// plane, and vertices on the line where two planar patches meet collapse along that line. A
+// curved patch is remeshed on the smooth reconstruction of the input surface within hausd
+// (boundary3d.hpp). Corners, vertices tagged corner or required and interfaces are kept as
+// given, as is the whole surface with keep_surface.
 #include <span>
 #include <vector>
 
@@ -23,7 +23,7 @@
 
 namespace riemesh {
 
-/// The 2D options (hausd and angle unused in 3D so far) plus the surface switch.
+/// The 2D options (hausd and angle for the curved patches) plus the surface switch.
 struct Adapt3dOptions : Adapt2dOptions {
   bool keep_surface = false;  ///< --nosurf: no boundary vertex moves, goes or is added
 };

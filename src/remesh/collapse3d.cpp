@@ -1,6 +1,7 @@
 // Edge collapse: vertex `from` disappears into `to`; the tets of the edge's shell go.
 #include <algorithm>
 
+#include "remesh/boundary3d.hpp"
 #include "remesh/ops3d.hpp"
 
 namespace riemesh {
@@ -22,8 +23,24 @@ bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to)
   if (k == VertexKind::kInterior) return n == 0;
   if (n != 2) return false;
   const std::int32_t p0 = m.vplane[2 * from], p1 = m.vplane[2 * from + 1];
-  if (k == VertexKind::kPlanar) return refs[0] == p0 && refs[1] == p0;
+  if (k == VertexKind::kPlanar || k == VertexKind::kSurface) return refs[0] == p0 && refs[1] == p0;
+  if (k == VertexKind::kCurve)  // along its feature line only
+    return m.surface && ((refs[0] == p0 && refs[1] == p1) || (refs[0] == p1 && refs[1] == p0)) &&
+           m.surface->feature_edge(m, from, to, refs[0], refs[1]);
   return (refs[0] == p0 && refs[1] == p1) || (refs[0] == p1 && refs[1] == p0);
+}
+
+/// The worst quality of the tets with four boundary vertices among `tets` (1 when none).
+template <class Tets, class Verts>
+double worst_on_boundary(const TetMesh& m, const Tets& tets, Verts verts) {
+  double worst = 1.0;
+  for (const auto& t : tets) {
+    const Id* v = verts(t);
+    bool all = true;
+    for (int i = 0; i < 4 && all; ++i) all = m.vkind[v[i]] != VertexKind::kInterior;
+    if (all) worst = std::min(worst, tet_quality(m, v));
+  }
+  return worst;
 }
 
 }  // namespace
@@ -60,12 +77,23 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
     new_worst = std::min(new_worst, q);
     tets.push_back(n);
   }
+  // With curved patches, no new tet on four boundary vertices below the floor (boundary3d.hpp)
+  // unless the ball had a worse one: such tets, at folds of the surface, stay for good.
+  if (m.surface) {
+    const double w4 = worst_on_boundary(m, tets, [](const NewTet& n) { return n.v; });
+    if (w4 < kBoundaryTetFloor &&
+        w4 < worst_on_boundary(m, ball, [&m](Id t) { return &m.tv[4 * t]; }))
+      return Outcome::kRejectedQuality;
+  }
   // Below the floor only when the ball was already worse (its worst quality, computed only then).
   if (new_worst < limits.min_quality) {
     double old_worst = 1.0;
     for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));
     if (new_worst < old_worst) return Outcome::kRejectedQuality;
   }
+  // A vertex of a curved patch: the new boundary triangles stay near the input surface.
+  if (on_curved_boundary(m.vkind[from]) && !curved_boundary_ok(m, ball, from, to, m.xyz[to]))
+    return Outcome::kRejectedGeometry;
   const Substitution subst[1] = {{to, from}};
   if (!replace_cavity(m, ball, tets, subst)) return Outcome::kRejectedTopology;
   m.kill_vertex(from);

@@ -1,6 +1,7 @@
 // Vertex relocation: accepted when the ball's worst quality improves.
 #include <algorithm>
 
+#include "remesh/boundary3d.hpp"
 #include "remesh/ops3d.hpp"
 
 namespace riemesh {
@@ -19,7 +20,14 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric) {
     worst = std::min(worst, tet_quality(m, t));
     if (!(worst > 0.0)) break;
   }
-  if (worst > old_worst) return Outcome::kApplied;
+  if (worst > old_worst) {
+    if (!on_curved_boundary(m.vkind[v])) return Outcome::kApplied;
+    m.xyz[v] = old_p;  // the boundary checks compare the old and new positions
+    const bool ok = curved_boundary_ok(m, ball, v, kNoId, p);
+    if (ok) m.xyz[v] = p;
+    else m.metric[v] = old_m;
+    return ok ? Outcome::kApplied : Outcome::kRejectedGeometry;
+  }
   m.xyz[v] = old_p, m.metric[v] = old_m;
   return worst > 0.0 ? Outcome::kRejectedQuality : Outcome::kRejectedGeometry;
 }

@@ -52,6 +52,12 @@ Remesh3dContext::Remesh3dContext(const Mesh& input, std::span<const SymMat3> met
       background_(input, flatten(metrics), options.interp),
       mesh_(build_tet_mesh(input, metrics)) {
   find_planes();
+  std::vector<std::int32_t> curved;
+  for (const auto& [ref, pl] : planes_)
+    if (!pl.planar) curved.push_back(ref);
+  if (!options.keep_surface && !curved.empty())
+    boundary_ = std::make_unique<Boundary3d>(mesh_, std::move(curved), options),
+    mesh_.surface = boundary_.get();
   classify_vertices();
   hint_.assign(mesh_.vertex_capacity(), kNoId);
   for (std::size_t v = 0; v < hint_.size(); ++v) hint_[v] = mesh_.vtet[v];
@@ -101,14 +107,16 @@ void Remesh3dContext::classify_vertices() {
   const std::size_t nv = m.vertex_capacity();
   std::vector<std::int32_t> refs(3 * nv, 0);
   std::vector<int> count(nv, 0);
-  std::vector<bool> fixed(nv, false);
+  std::vector<bool> fixed(nv, false), curved(nv, false);
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4);
     if (!m.fbdy[s] || !m.tet_alive(t)) continue;
     const int i = static_cast<int>(s % 4);
     for (int k = 0; k < 3; ++k) {
       const Id v = m.tv[4 * t + kTetFace[i][k]];
-      if (m.tadj[s] != kNoId || !plane(m.fref[s]) || options_.keep_surface) fixed[v] = true;
+      if (m.tadj[s] != kNoId || (!plane(m.fref[s]) && !boundary_) || options_.keep_surface)
+        fixed[v] = true;
+      if (!plane(m.fref[s])) curved[v] = true;
       int& c = count[v];
       if (std::find(&refs[3 * v], &refs[3 * v] + std::min(c, 3), m.fref[s]) != &refs[3 * v] + std::min(c, 3))
         continue;
@@ -122,6 +130,10 @@ void Remesh3dContext::classify_vertices() {
       k = VertexKind::kFixed;
     } else if (count[v] == 0) {
       k = VertexKind::kInterior;
+    } else if (curved[v]) {  // on the reconstruction of the curved patches (boundary3d.hpp)
+      k = boundary_->kind(static_cast<Id>(v));
+      m.vplane[2 * v] = std::min(refs[3 * v], refs[3 * v + count[v] - 1]);
+      m.vplane[2 * v + 1] = std::max(refs[3 * v], refs[3 * v + count[v] - 1]);
     } else if (count[v] == 1) {
       k = VertexKind::kPlanar;
       m.vplane[2 * v] = m.vplane[2 * v + 1] = refs[3 * v];
@@ -147,8 +159,13 @@ bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
   out.plane[0] = out.plane[1] = 0;
   if (n == 1) return false;
   if (n == 2) {
-    if (options_.keep_surface || !plane(refs[0]) || !plane(refs[1])) return false;
-    if (refs[0] == refs[1]) {
+    if (options_.keep_surface) return false;
+    if (!plane(refs[0]) || !plane(refs[1])) {  // a curved patch (boundary3d.hpp)
+      if (!boundary_) return false;
+      const bool line = boundary_->feature_edge(mesh_, a, b, refs[0], refs[1]);
+      out.kind = line ? VertexKind::kCurve : VertexKind::kSurface;
+      out.plane[0] = std::min(refs[0], refs[1]), out.plane[1] = std::max(refs[0], refs[1]);
+    } else if (refs[0] == refs[1]) {
       out.kind = VertexKind::kPlanar;
       out.plane[0] = out.plane[1] = refs[0];
     } else {
@@ -160,6 +177,7 @@ bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
   const Vec3 ab = mesh_.xyz[b] - mesh_.xyz[a];
   const double t = split_fraction(length(mesh_.metric[a], ab), length(mesh_.metric[b], ab));
   out.p = mesh_.xyz[a] + t * ab;
+  if (on_curved_boundary(out.kind)) out.p = boundary_->place(out.kind, out.p);
   out.metric = metric_for(out.p, a);
   return true;
 }
@@ -212,6 +230,8 @@ bool Remesh3dContext::constrain(Id v, Vec3& p) const {
     const Vec3& o = mesh_.xyz[v];
     const Vec3 d = normalize(cross(plane(mesh_.vplane[2 * v])->n, plane(mesh_.vplane[2 * v + 1])->n));
     p = o + dot(p - o, d) * d;
+  } else if (on_curved_boundary(k)) {
+    p = boundary_->place(k, p);
   }
   return true;
 }

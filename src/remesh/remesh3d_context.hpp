@@ -3,10 +3,12 @@
 // mesh with the input metric field, the planes of the planar boundary patches, and the rules
 // that place new and moved vertices and give them their metric.
 #include <map>
+#include <memory>
 #include <vector>
 
 #include "remesh/adapt3d.hpp"
 #include "remesh/background.hpp"
+#include "remesh/boundary3d.hpp"
 #include "remesh/ops3d.hpp"
 
 namespace riemesh {
@@ -35,7 +37,8 @@ class Remesh3dContext {
   bool smoothing_target(Id v, NewVertex3& out) const;
 
   /// Puts p on v's plane (planar boundary vertex) or on its line (ridge vertex, the line through
-  /// v's position); false when v may not move (fixed).
+  /// v's position), on the reconstructed surface or feature line (kSurface, kCurve vertex,
+  /// boundary3d.hpp); false when v may not move (fixed).
   bool constrain(Id v, Vec3& p) const;
 
   /// Records, for vertex v just created or moved, the background tet of the last metric_for.
@@ -58,6 +61,7 @@ class Remesh3dContext {
   std::vector<std::int32_t> edge_refs_;
   std::vector<Id> hint_;
   mutable Id last_found_ = kNoId;
+  std::unique_ptr<Boundary3d> boundary_;  // the curved patches (null: none, or kept)
 };
 
 }  // namespace riemesh

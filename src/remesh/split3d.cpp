@@ -1,7 +1,18 @@
 // Edge split: a vertex on edge (a, b) cuts every tet of the shell in two.
+#include "remesh/boundary3d.hpp"
 #include "remesh/ops3d.hpp"
 
 namespace riemesh {
+namespace {
+
+/// Whether every vertex of tet v other than x (the new boundary vertex) is on the boundary.
+bool all_boundary(const TetMesh& m, const Id (&v)[4], Id x) {
+  for (const Id y : v)
+    if (y != x && m.vkind[y] == VertexKind::kInterior) return false;
+  return true;
+}
+
+}  // namespace
 
 Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_quality,
                    Id* created, Id hint) {
@@ -11,6 +22,7 @@ Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_qual
   if (shell.empty()) return Outcome::kRejectedTopology;
   // Geometry first, on the positions (the vertex is created only when the split goes ahead).
   const Id x = m.add_vertex(nv.p, nv.metric);
+  const bool curved = on_curved_boundary(nv.kind);
   tets.clear();
   for (const Id t : shell) {
     NewTet lo{}, hi{};
@@ -22,12 +34,17 @@ Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_qual
     lo.ref = hi.ref = m.tref[t];
     for (const NewTet& n : {lo, hi}) {
       const double q = tet_quality(m, n.v);
-      if (!(q > 0.0) || q < min_quality) {
+      if (!(q > 0.0) || q < min_quality || (curved && q < kBoundaryTetFloor && all_boundary(m, n.v, x))) {
         m.kill_vertex(x);
         return q > 0.0 ? Outcome::kRejectedQuality : Outcome::kRejectedGeometry;
       }
     }
     tets.push_back(lo), tets.push_back(hi);
+  }
+  // A vertex of a curved patch: the halves of the boundary faces stay near the input surface.
+  if (curved && !curved_split_ok(m, shell, a, b, nv.p)) {
+    m.kill_vertex(x);
+    return Outcome::kRejectedGeometry;
   }
   const Substitution subst[2] = {{x, a}, {x, b}};
   if (!replace_cavity(m, shell, tets, subst)) {

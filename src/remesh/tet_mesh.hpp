@@ -29,8 +29,12 @@ enum class VertexKind : std::uint8_t {
   kInterior,  ///< in no listed face: moves and goes freely
   kPlanar,    ///< on one planar boundary patch (plane ref vplane[2v]): moves in it
   kRidge,     ///< on the line where two planar patches meet (refs vplane[2v], vplane[2v+1])
-  kFixed,     ///< corner, required, on a curved patch or an interface: never moves nor goes
+  kFixed,     ///< corner, required, on an interface (or a curved patch with --nosurf): kept
+  kSurface,   ///< on a curved patch (ref vplane[2v]): stays on its reconstruction (boundary3d.hpp)
+  kCurve,     ///< on a feature line of curved patches (refs vplane[2v..]): stays on that line
 };
+
+class Boundary3d;
 
 struct TetMesh {
   // Vertices.
@@ -50,6 +54,10 @@ struct TetMesh {
   std::vector<std::uint8_t> fbdy;  // 4 per tet: 1 for a listed face
 
   std::vector<Id> free_tets, free_verts;
+
+  /// The curved boundary that kSurface and kCurve vertices stay on (not owned; null when the
+  /// boundary has no curved patch or is kept).
+  const Boundary3d* surface = nullptr;
 
   // Scratch marks for ball and shell walks (stamp per tet); not part of the mesh's state.
   mutable std::vector<std::uint32_t> mark;

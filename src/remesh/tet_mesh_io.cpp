@@ -95,7 +95,7 @@ Mesh to_mesh(const TetMesh& m, std::span<const std::int32_t> edge_refs,
     out.coords.insert(out.coords.end(), {m.xyz[v][0], m.xyz[v][1], m.xyz[v][2]});
     out.vert_ref.push_back(m.vref[v]);
     std::uint8_t tag = m.vtag[v];
-    if (m.vkind[v] == VertexKind::kRidge) tag |= kTagRidge;
+    if (m.vkind[v] == VertexKind::kRidge || m.vkind[v] == VertexKind::kCurve) tag |= kTagRidge;
     out.vert_tag.push_back(tag);
     if (metrics) metrics->push_back(m.metric[v]);
   }

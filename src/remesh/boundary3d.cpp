@@ -1,0 +1,247 @@
+// Curved boundaries of the 3D remesher (boundary3d.hpp).
+#include "remesh/boundary3d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/error.hpp"
+#include "metric/intersection.hpp"
+#include "remesh/surface_metric.hpp"
+
+namespace riemesh {
+namespace {
+
+constexpr double kCosTurn = 0.8660254037844387;  // cos 30°: largest turn of a boundary triangle
+constexpr double kCheckMargin = 0.95;            // the checks use 0.95 hausd (as surface_ops)
+/// Placed points are at most this × hausd from the input polyhedron: the reconstruction is
+/// followed up to the Hausdorff bound that the checks then enforce.
+constexpr double kLift = 0.9;
+/// A same-ref boundary edge between two feature-line vertices is on the line when its midpoint
+/// is closer than this × its length to the reconstructed line.
+constexpr double kOnLine = 0.25;
+/// Sizes on curved patches are computed for this fraction of hausd (as surface_adapt.cpp).
+constexpr double kCentroidFactor = 0.75;
+
+/// A new boundary triangle below this Euclidean quality is refused unless an old one was worse
+/// (bad boundary triangles make every tet on them bad, and no volume operator repairs them).
+constexpr double kTriangleFloor = 0.1;
+
+/// Mean-ratio quality 4√3 A / Σ l² of a triangle (1 equilateral).
+double tri_quality(const Tri3& t) {
+  const double l2 = dot(t[1] - t[0], t[1] - t[0]) + dot(t[2] - t[1], t[2] - t[1]) +
+                    dot(t[0] - t[2], t[0] - t[2]);
+  return l2 > 0.0 ? 3.4641016151377544 * norm(cross(t[1] - t[0], t[2] - t[0])) / l2 : 0.0;
+}
+
+Vec3 unit_normal(const Tri3& t) {
+  const Vec3 n = cross(t[1] - t[0], t[2] - t[0]);
+  const double l = norm(n);
+  return l > 0.0 ? (1.0 / l) * n : Vec3{};
+}
+
+FeatureOptions feature_options(const Adapt3dOptions& o) {
+  FeatureOptions f;
+  f.angle_deg = o.angle_deg;
+  f.detect_angle = o.detect_angles;
+  return f;
+}
+
+Vec3 point_of(const Mesh& m, Id v) {
+  const std::size_t i = 3 * static_cast<std::size_t>(v);
+  return Vec3{{m.coords[i], m.coords[i + 1], m.coords[i + 2]}};
+}
+
+}  // namespace
+
+Boundary3d::Boundary3d(const TetMesh& m, std::vector<std::int32_t> curved_refs,
+                       const Adapt3dOptions& options)
+    : curved_refs_(std::move(curved_refs)), surf_id_(m.vertex_capacity(), kNoId),
+      hausd_(options.hausd) {
+  std::sort(curved_refs_.begin(), curved_refs_.end());
+  Mesh s;
+  s.dim = 3;
+  std::vector<SymMat3> metric;
+  for (std::size_t slot = 0; slot < m.fbdy.size(); ++slot) {
+    const Id t = static_cast<Id>(slot / 4);
+    if (!m.fbdy[slot] || !m.tet_alive(t) || m.tadj[slot] != kNoId || !curved(m.fref[slot]))
+      continue;
+    const int i = static_cast<int>(slot % 4);
+    for (int k = 0; k < 3; ++k) {
+      const Id v = m.tv[4 * t + kTetFace[i][k]];
+      Id& sid = surf_id_[v];
+      if (sid == kNoId) {
+        sid = static_cast<Id>(metric.size());
+        s.coords.insert(s.coords.end(), {m.xyz[v][0], m.xyz[v][1], m.xyz[v][2]});
+        s.vert_ref.push_back(m.vref[v]);
+        s.vert_tag.push_back(m.vtag[v]);
+        metric.push_back(m.metric[v]);
+      }
+      s.triangles.push_back(sid);
+    }
+    s.tri_ref.push_back(m.fref[slot]);
+  }
+  geo_ = std::make_unique<SurfaceProjection>(s, feature_options(options), std::move(metric),
+                                             kLift * hausd_);
+  tag_ = geo_->features().vert_tag;
+}
+
+bool Boundary3d::curved(std::int32_t ref) const {
+  return std::binary_search(curved_refs_.begin(), curved_refs_.end(), ref);
+}
+
+VertexKind Boundary3d::kind(Id v) const {
+  const Id sid = static_cast<std::size_t>(v) < surf_id_.size() ? surf_id_[v] : kNoId;
+  if (sid == kNoId) return VertexKind::kFixed;
+  const std::uint8_t tag = tag_[static_cast<std::size_t>(sid)];
+  if (tag & (kTagCorner | kTagRequired)) return VertexKind::kFixed;
+  return (tag & kTagRidge) ? VertexKind::kCurve : VertexKind::kSurface;
+}
+
+bool Boundary3d::feature_edge(const TetMesh& m, Id a, Id b, std::int32_t r0,
+                              std::int32_t r1) const {
+  if (r0 != r1) return true;
+  for (const Id v : {a, b}) {
+    const VertexKind k = m.vkind[v];
+    if (k == VertexKind::kCurve) continue;
+    // A fixed vertex of the input counts when it is on a feature line (a corner).
+    const Id sid = static_cast<std::size_t>(v) < surf_id_.size() ? surf_id_[v] : kNoId;
+    if (k != VertexKind::kFixed || sid == kNoId ||
+        !(tag_[static_cast<std::size_t>(sid)] & (kTagRidge | kTagCorner)))
+      return false;
+  }
+  const Vec3 mid = 0.5 * (m.xyz[a] + m.xyz[b]);
+  const Vec3 q = geo_->on_feature(mid, kNoId).point;
+  return norm(q - mid) < kOnLine * norm(m.xyz[b] - m.xyz[a]);
+}
+
+Vec3 Boundary3d::place(VertexKind kind, const Vec3& p) const {
+  if (kind == VertexKind::kCurve) return geo_->on_feature(p, kNoId).point;
+  return geo_->on_surface(p, kNoId).point;
+}
+
+bool Boundary3d::accepts(const std::vector<Tri3>& old_t, const std::vector<Tri3>& kept,
+                         const std::vector<Tri3>& new_t) const {
+  double old_worst = 1.0, new_worst = 1.0;
+  for (const Tri3& t : old_t) old_worst = std::min(old_worst, tri_quality(t));
+  for (std::size_t i = 0; i < new_t.size(); ++i) {
+    if (dot(unit_normal(kept[i]), unit_normal(new_t[i])) < kCosTurn) return false;
+    new_worst = std::min(new_worst, tri_quality(new_t[i]));
+  }
+  if (new_worst < kTriangleFloor && new_worst < old_worst) return false;
+  const double h = kCheckMargin * hausd_;
+  return new_triangles_close(*geo_, h, new_t, kNoId) && keeps_input_close(*geo_, h, old_t, new_t);
+}
+
+bool curved_boundary_ok(const TetMesh& m, std::span<const Id> ball, Id v, Id to, const Vec3& p) {
+  if (!m.surface) return true;
+  thread_local std::vector<Tri3> old_t, kept, new_t;
+  old_t.clear(), kept.clear(), new_t.clear();
+  const Vec3 target = to == kNoId ? p : m.xyz[to];
+  for (const Id t : ball)
+    for (int i = 0; i < 4; ++i) {
+      const std::size_t s = 4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i);
+      if (!m.fbdy[s] || m.tadj[s] != kNoId || !m.surface->curved(m.fref[s])) continue;
+      Id f[3];
+      for (int k = 0; k < 3; ++k) f[k] = m.tv[4 * t + kTetFace[i][k]];
+      if (f[0] != v && f[1] != v && f[2] != v) continue;
+      Tri3 o{m.xyz[f[0]], m.xyz[f[1]], m.xyz[f[2]]};
+      old_t.push_back(o);
+      if (to != kNoId && (f[0] == to || f[1] == to || f[2] == to)) continue;
+      Tri3 n = o;
+      for (int k = 0; k < 3; ++k)
+        if (f[k] == v) n[static_cast<std::size_t>(k)] = target;
+      kept.push_back(o), new_t.push_back(n);
+    }
+  return m.surface->accepts(old_t, kept, new_t);
+}
+
+bool curved_split_ok(const TetMesh& m, std::span<const Id> shell, Id a, Id b, const Vec3& p) {
+  if (!m.surface) return true;
+  thread_local std::vector<Tri3> old_t, kept, new_t;
+  old_t.clear(), kept.clear(), new_t.clear();
+  for (const Id t : shell)
+    for (int i = 0; i < 4; ++i) {
+      const std::size_t s = 4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i);
+      const Id opp = m.tv[s];
+      if (opp == a || opp == b || !m.fbdy[s] || m.tadj[s] != kNoId || !m.surface->curved(m.fref[s]))
+        continue;
+      Id f[3];
+      for (int k = 0; k < 3; ++k) f[k] = m.tv[4 * t + kTetFace[i][k]];
+      const Tri3 o{m.xyz[f[0]], m.xyz[f[1]], m.xyz[f[2]]};
+      old_t.push_back(o);
+      for (const Id end : {a, b}) {
+        Tri3 n = o;
+        for (int k = 0; k < 3; ++k)
+          if (f[k] == end) n[static_cast<std::size_t>(k)] = p;
+        kept.push_back(o), new_t.push_back(n);
+      }
+    }
+  return m.surface->accepts(old_t, kept, new_t);
+}
+
+void intersect_curvature_sizes(const Mesh& volume, std::vector<SymMat3>& metrics,
+                               const Adapt3dOptions& options) {
+  const std::size_t nv = volume.num_vertices(), nt = volume.num_triangles();
+  if (metrics.size() != nv || nt == 0) return;
+  Vec3 lo = point_of(volume, 0), hi = lo;
+  for (std::size_t v = 0; v < nv; ++v) {
+    const Vec3 p = point_of(volume, static_cast<Id>(v));
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  }
+  const double tol = 1e-10 * norm(hi - lo);
+  // The planar listed patches (as Remesh3dContext finds them): one normal, all points on it.
+  struct Plane {
+    Vec3 n{};
+    double d = 0.0;
+    bool planar = true;
+  };
+  std::map<std::int32_t, Plane> planes;
+  auto ref_of = [&](std::size_t t) { return volume.tri_ref.size() == nt ? volume.tri_ref[t] : 0; };
+  for (std::size_t t = 0; t < nt; ++t) {
+    const Vec3 a = point_of(volume, volume.triangles[3 * t]);
+    const Vec3 b = point_of(volume, volume.triangles[3 * t + 1]);
+    const Vec3 c = point_of(volume, volume.triangles[3 * t + 2]);
+    const Vec3 n = normalize(cross(b - a, c - a));
+    auto [it, fresh] = planes.try_emplace(ref_of(t));
+    Plane& pl = it->second;
+    if (fresh) pl.n = n, pl.d = dot(n, a);
+    if (std::abs(dot(n, pl.n)) < 1.0 - 1e-9) pl.planar = false;
+    for (const Vec3* p : {&a, &b, &c})
+      if (std::abs(dot(pl.n, *p) - pl.d) > tol) pl.planar = false;
+  }
+  Mesh s;
+  s.dim = 3;
+  std::vector<Id> sid(nv, kNoId), vid;
+  for (std::size_t t = 0; t < nt; ++t) {
+    if (planes[ref_of(t)].planar) continue;
+    for (int k = 0; k < 3; ++k) {
+      const Id v = volume.triangles[3 * t + k];
+      if (sid[v] == kNoId) {
+        sid[v] = static_cast<Id>(vid.size());
+        vid.push_back(v);
+        const Vec3 p = point_of(volume, v);
+        s.coords.insert(s.coords.end(), {p[0], p[1], p[2]});
+        s.vert_ref.push_back(0);
+        s.vert_tag.push_back(volume.vert_tag.size() == nv ? volume.vert_tag[v] : std::uint8_t{kTagNone});
+      }
+      s.triangles.push_back(sid[v]);
+    }
+    s.tri_ref.push_back(ref_of(t));
+  }
+  if (vid.empty()) return;
+  if (!(options.hausd > 0.0))
+    throw InputError("--hausd must be > 0 for a volume with curved boundary patches");
+  SurfaceMetricOptions so;
+  so.hausd = kCentroidFactor * options.hausd;
+  so.hmin = options.hmin;
+  so.hmax = std::isfinite(options.hmax) && options.hmax > 0.0 ? options.hmax : norm(hi - lo);
+  if (so.hmin > so.hmax) so.hmin = so.hmax;
+  so.anisotropic = true;
+  so.hgrad = 0.0;  // graded with the volume metric afterwards (prepare_metrics)
+  const std::vector<SymMat3> g = geometric_surface_metric(s, so, feature_options(options));
+  for (std::size_t i = 0; i < vid.size(); ++i)
+    metrics[static_cast<std::size_t>(vid[i])] = intersect(metrics[static_cast<std::size_t>(vid[i])], g[i]);
+}
+
+}  // namespace riemesh

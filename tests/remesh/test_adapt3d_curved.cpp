@@ -1,0 +1,131 @@
+// adapt3d on volumes with curved boundaries (issue #7): new boundary vertices on the smooth
+// reconstruction of the input surface, within hausd of it, the rest of the behaviour unchanged.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "curved_test_meshes.hpp"
+#include "mesh/check.hpp"
+#include "mesh/distance.hpp"
+#include "mesh/fixtures.hpp"
+#include "metric/metric.hpp"
+#include "remesh/adapt3d.hpp"
+
+using namespace riemesh;
+using riemesh::test::point;
+
+namespace {
+
+/// Largest | distance to the axis − r | over the vertices of the side (0 < z < height) that are
+/// on the boundary (in a listed triangle of ref 1).
+double side_error(const Mesh& m, double r) {
+  std::vector<char> side(m.num_vertices(), 0);
+  for (std::size_t f = 0; f < m.num_triangles(); ++f)
+    if (m.tri_ref[f] == 1)
+      for (int k = 0; k < 3; ++k) side[m.triangles[3 * f + k]] = 1;
+  double worst = 0.0;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v)
+    if (side[v]) {
+      const Vec3 p = point(m, static_cast<Id>(v));
+      worst = std::max(worst, std::abs(std::hypot(p[0], p[1]) - r));
+    }
+  return worst;
+}
+
+std::size_t count_side_vertices(const Mesh& m) {
+  std::vector<char> side(m.num_vertices(), 0);
+  for (std::size_t f = 0; f < m.num_triangles(); ++f)
+    if (m.tri_ref[f] == 1)
+      for (int k = 0; k < 3; ++k) side[m.triangles[3 * f + k]] = 1;
+  return static_cast<std::size_t>(std::count(side.begin(), side.end(), 1));
+}
+
+double worst_quality(const Adapt3dResult& r) { return r.report.passes.back().q_min; }
+
+struct CylinderCase {
+  Mesh input = test::faceted_cylinder(24, 2, 1.0, 1.0);
+  std::vector<SymMat3> metric = test::cylinder_metric(input, 1.0, 0.3, 0.03);
+};
+
+Adapt3dResult adapt_cylinder(const CylinderCase& c, const Adapt3dOptions& o = {}) {
+  return adapt3d(c.input, c.metric, o);
+}
+
+}  // namespace
+
+TEST(Adapt3dCurved, FixturesAreValid) {
+  for (const Mesh& m : {test::faceted_cylinder(24, 2, 1.0, 1.0), test::unit_ball(4)}) {
+    const CheckReport c = check_mesh(m);
+    EXPECT_TRUE(c.valid()) << (c.issues.empty() ? "" : to_string(c.issues[0].category));
+  }
+}
+
+TEST(Adapt3dCurved, RefinedCylinderStaysACylinder) {
+  const CylinderCase c;
+  const Adapt3dResult r = adapt_cylinder(c);
+  const CheckReport check = check_mesh(r.mesh);
+  EXPECT_TRUE(check.valid()) << (check.issues.empty() ? "" : to_string(check.issues[0].category));
+  // Many new side vertices, all on the cylinder (the facets' midpoints are 8.6e-3 inside).
+  EXPECT_GT(count_side_vertices(r.mesh), 2 * count_side_vertices(c.input));
+  EXPECT_LT(side_error(r.mesh, 1.0), 1e-3);
+  EXPECT_GT(worst_quality(r), 0.2);
+  EXPECT_GT(r.report.passes.back().len_in, 0.8);
+}
+
+TEST(Adapt3dCurved, Deterministic) {
+  const CylinderCase c;
+  Adapt3dOptions o;
+  o.max_passes = 3;
+  const Adapt3dResult a = adapt_cylinder(c, o), b = adapt_cylinder(c, o);
+  EXPECT_EQ(a.mesh.coords, b.mesh.coords);
+  EXPECT_EQ(a.mesh.tets, b.mesh.tets);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+}
+
+TEST(Adapt3dCurved, NosurfKeepsTheSurface) {
+  const CylinderCase c;
+  Adapt3dOptions o;
+  o.keep_surface = true;
+  o.max_passes = 1;
+  const Adapt3dResult r = adapt_cylinder(c, o);
+  EXPECT_EQ(r.mesh.num_triangles(), c.input.num_triangles());
+  EXPECT_EQ(count_side_vertices(r.mesh), count_side_vertices(c.input));
+}
+
+TEST(Adapt3dCurved, BallWithinHausd) {
+  const Mesh ball = test::unit_ball(4);
+  Adapt3dOptions o;
+  o.hausd = 0.01;
+  const Adapt3dResult r =
+      adapt3d(ball, std::vector<SymMat3>(ball.num_vertices(), isotropic_metric<3>(0.12)), o);
+  const CheckReport check = check_mesh(r.mesh);
+  EXPECT_TRUE(check.valid()) << (check.issues.empty() ? "" : to_string(check.issues[0].category));
+  EXPECT_GT(r.mesh.num_triangles(), 2 * ball.num_triangles());
+  // Both ways, between the boundary surfaces (as `riemesh distance`).
+  Mesh in_s, out_s;
+  for (const auto& [src, dst] : {std::pair{&ball, &in_s}, std::pair{&r.mesh, &out_s}}) {
+    dst->dim = 3;
+    dst->coords = src->coords;
+    dst->vert_ref.assign(src->num_vertices(), 0);
+    dst->vert_tag.assign(src->num_vertices(), 0);
+    dst->triangles = src->triangles;
+    dst->tri_ref = src->tri_ref;
+  }
+  const HausdorffDistance d = hausdorff_distance(in_s, out_s, DistanceOptions{});
+  EXPECT_LT(d.two_sided(), o.hausd);
+  EXPECT_GT(worst_quality(r), 0.2);
+}
+
+TEST(Adapt3dCurved, PlanarCubeUnchanged) {
+  // No curved patch: the curved-boundary machinery is not built, so --hausd changes nothing.
+  const Mesh cube = unit_cube(2);
+  const std::vector<SymMat3> metric(cube.num_vertices(), isotropic_metric<3>(0.25));
+  Adapt3dOptions a, b;
+  a.max_passes = b.max_passes = 3;
+  b.hausd = 0.5;
+  const Adapt3dResult ra = adapt3d(cube, metric, a), rb = adapt3d(cube, metric, b);
+  EXPECT_EQ(ra.mesh.coords, rb.mesh.coords);
+  EXPECT_EQ(ra.mesh.tets, rb.mesh.tets);
+  EXPECT_EQ(ra.mesh.triangles, rb.mesh.triangles);
+}
