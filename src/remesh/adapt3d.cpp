@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -271,10 +272,17 @@ std::string stall_reason(const TetMesh& m) {
 
 Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
                       const Adapt3dOptions& options, const PassCallback& on_pass) {
-  return adapt3d(Mesh(input), metrics, options, on_pass);
+  return adapt3d(Mesh(input), std::vector<SymMat3>(metrics.begin(), metrics.end()), options,
+                 on_pass);
 }
 
 Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
+                      const Adapt3dOptions& options, const PassCallback& on_pass) {
+  return adapt3d(std::move(input), std::vector<SymMat3>(metrics.begin(), metrics.end()), options,
+                 on_pass);
+}
+
+Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
                       const Adapt3dOptions& options, const PassCallback& on_pass) {
   options.validate();
   if (input.dim != 3 || input.num_tets() == 0)
@@ -290,14 +298,19 @@ Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
     const Renumbering order = renumber_hilbert(ordered);
     std::vector<SymMat3> prepared;
     {
-      std::vector<SymMat3> permuted(metrics.begin(), metrics.end());
-      if (metrics.size() == input_vertices)
-        for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
-      const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
+      std::vector<SymMat3> permuted = std::move(metrics);
+      if (permuted.size() == input_vertices) {
+        const std::vector<SymMat3> given = permuted;
+        for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = given[order.vertices[v]];
+      }
+      // The full adjacency (balls, edges) only for the gradation.
+      const Adjacency adjacency = options.hgrad > 0.0
+                                      ? build_adjacency(ordered.tets, 4, ordered.num_vertices())
+                                      : Adjacency{};
       prepared = prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted),
                                     options, result.report);
     }
-    ctx.emplace(ordered, prepared, options);
+    ctx.emplace(std::move(ordered), std::move(prepared), options);
   }
   TetMesh& m = ctx->mesh();
   long best_ops = std::numeric_limits<long>::max();

@@ -64,6 +64,14 @@ class BackgroundMesh {
                  std::span<const double> metrics,
                  InterpScheme scheme = InterpScheme::kLogEuclidean);
 
+  /// Taking over the arrays (no copy: memory, issue #7): vertices, D + 1 vertex ids per simplex,
+  /// one metric per vertex, and optionally the neighbours (elem2elem of build_face_adjacency of
+  /// the same simplices; empty: built here). Same checks and errors as the span constructor.
+  BackgroundMesh(std::vector<Vec<D>>&& coords, std::vector<Id>&& simplices,
+                 std::vector<SymMat<D>>&& metrics,
+                 InterpScheme scheme = InterpScheme::kLogEuclidean,
+                 std::vector<Id>&& elem2elem = {});
+
   /// From a mesh: its triangles (D = 2, mesh.dim == 2) or tetrahedra (D = 3, a volume).
   /// `adjacency`, when given, is build_adjacency of the same simplices (saves rebuilding it).
   BackgroundMesh(const Mesh& mesh, std::span<const double> metrics,
@@ -118,6 +126,8 @@ class BackgroundMesh {
 
   void build(std::span<const double> coords, std::span<const Id> simplices,
              std::span<const double> metrics, const Adjacency* adjacency = nullptr);
+  /// The checks, volumes, logs, neighbours (unless given) and grid of the arrays in place.
+  void finish(std::vector<Id>&& elem2elem);
   void build_grid();
   /// Signed sub-volumes Vᵢ(p) (p replacing vertex i) divided by the simplex's volume.
   void barycentric(Id s, const Vec<D>& p, double b[kVerts]) const;

@@ -17,7 +17,7 @@ bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to)
       const Id v = m.tv[4 * t + i], s = 4 * t + i;
       if (v == from || v == to || !m.fbdy[s]) continue;
       if (m.tadj[s] != kNoId || n == 2) return false;  // an interface, or not a surface edge
-      refs[n++] = m.fref[s];
+      refs[n++] = m.face_ref(s);
     }
   if (k == VertexKind::kInterior) return n == 0;
   if (n != 2) return false;
