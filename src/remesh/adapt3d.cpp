@@ -232,12 +232,13 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
     if (!wanted[vi] || !m.vert_alive(v)) continue;
     NewVertex3 target;
     if (!ctx.smoothing_target(v, target)) continue;
-    bool moved = move_vertex(m, v, target.p, target.metric) == Outcome::kApplied;
+    double ball_worst = std::numeric_limits<double>::quiet_NaN();  // computed once
+    bool moved = move_vertex(m, v, target.p, target.metric, &ball_worst) == Outcome::kApplied;
     // A refused target: try the way there at half and a quarter.
     const Vec3 from = m.xyz[v];
     for (double f = 0.5; !moved && f > 0.2; f *= 0.5) {
       const Vec3 p = from + f * (target.p - from);
-      moved = move_vertex(m, v, p, ctx.metric_for(p, v)) == Outcome::kApplied;
+      moved = move_vertex(m, v, p, ctx.metric_for(p, v), &ball_worst) == Outcome::kApplied;
     }
     if (moved) {
       ctx.inherit_hint(v);

@@ -68,7 +68,8 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
       if (q > best) best = q, best_p = p;
     }
   if (!(best > worst + 1e-4)) return Outcome::kRejectedQuality;
-  const Outcome o = move_vertex(m, v, best_p, ctx.metric_for(best_p, v));
+  double ball_worst = std::min(worst, 1.0);  // as move_vertex would compute it
+  const Outcome o = move_vertex(m, v, best_p, ctx.metric_for(best_p, v), &ball_worst);
   if (o == Outcome::kApplied) ctx.inherit_hint(v);
   return o;
 }
