@@ -39,59 +39,50 @@ struct Candidate {
   Id tet;  // a tet holding the edge when it was listed (a hint: the mesh changes)
 };
 
-struct Edge {
-  Id a, b, tet;
-};
-
-/// The unique live edges (a < b), sorted, each with the first tet holding it. Bucketed by a
-/// (counting sort, entries (b, tet): a is the bucket), then each small bucket sorted by b:
-/// linear in the tets. The 6 entries per tet are the largest transient of a pass (issue #7):
-/// 8 bytes each, and the result is sized exactly.
-std::vector<Edge> all_edges(const TetMesh& m) {
-  struct Entry {
-    Id b, tet;
-  };
-  std::vector<std::size_t> start(m.vertex_capacity() + 1, 0);
+/// Calls f(a, b, tet) for each unique live edge (a < b), in increasing (a, b), with the first
+/// (lowest id) tet holding it. Bucketed by a (counting sort of 4-byte entries 6 t + k, edge k of
+/// tet t), then each small bucket sorted by (b, tet) in a scratch array: linear in the tets. The
+/// entries are the largest transient of a pass (issue #7): 24 bytes per tet, and no edge list.
+template <class F>
+void for_each_edge(const TetMesh& m, F&& f) {
+  RIEMESH_CHECK(m.tet_capacity() < std::numeric_limits<std::uint32_t>::max() / 6);
+  const auto end = [&](std::uint32_t x, int i) { return m.tv[4 * (x / 6) + kTetEdge[x % 6][i]]; };
+  std::vector<std::uint32_t> start(m.vertex_capacity() + 1, 0);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
     if (!m.tet_alive(static_cast<Id>(t))) continue;
     for (const auto& [i, j] : kTetEdge) ++start[std::min(m.tv[4 * t + i], m.tv[4 * t + j]) + 1];
   }
   for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<Entry> e(start.back());
+  std::vector<std::uint32_t> e(start.back());
   {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
       if (!m.tet_alive(static_cast<Id>(t))) continue;
-      for (const auto& [i, j] : kTetEdge) {
-        const Id a = m.tv[4 * t + i], b = m.tv[4 * t + j];
-        e[fill[std::min(a, b)]++] = {std::max(a, b), static_cast<Id>(t)};
+      for (std::uint32_t k = 0; k < 6; ++k) {
+        const std::uint32_t x = static_cast<std::uint32_t>(6 * t) + k;
+        e[fill[std::min(end(x, 0), end(x, 1))]++] = x;
       }
     }
   }
-  std::size_t unique = 0;
+  std::vector<std::pair<Id, Id>> bucket;  // (b, tet)
   for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-    const auto first = e.begin() + static_cast<std::ptrdiff_t>(start[v]);
-    const auto last = e.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-    std::sort(first, last, [](const Entry& x, const Entry& y) {
-      return x.b != y.b ? x.b < y.b : x.tet < y.tet;
-    });
-    for (auto it = first; it != last; ++it) unique += it == first || it->b != (it - 1)->b;
-  }
-  std::vector<Edge> out;
-  out.reserve(unique);
-  for (std::size_t v = 0; v + 1 < start.size(); ++v)
+    bucket.clear();
     for (std::size_t k = start[v]; k < start[v + 1]; ++k)
-      if (k == start[v] || e[k].b != e[k - 1].b) out.push_back({static_cast<Id>(v), e[k].b, e[k].tet});
-  return out;
+      bucket.emplace_back(std::max(end(e[k], 0), end(e[k], 1)), static_cast<Id>(e[k] / 6));
+    std::sort(bucket.begin(), bucket.end());
+    for (std::size_t k = 0; k < bucket.size(); ++k)
+      if (k == 0 || bucket[k].first != bucket[k - 1].first)
+        f(static_cast<Id>(v), bucket[k].first, bucket[k].second);
+  }
 }
 
 template <class Select>
 std::vector<Candidate> candidates(const TetMesh& m, Select select, bool longer_first) {
   std::vector<Candidate> out;
-  for (const auto& [a, b, t] : all_edges(m)) {
+  for_each_edge(m, [&](Id a, Id b, Id t) {
     const double l = edge_length(m, a, b);
     if (select(l)) out.push_back({l, a, b, t});
-  }
+  });
   std::sort(out.begin(), out.end(), [longer_first](const Candidate& x, const Candidate& y) {
     if (x.length != y.length) return longer_first ? x.length > y.length : x.length < y.length;
     return x.a != y.a ? x.a < y.a : x.b < y.b;
@@ -252,7 +243,7 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
 
 void summarize(const TetMesh& m, PassStats& st) {
   PassSummary sum;
-  for (const auto& [a, b, t] : all_edges(m)) sum.edge(edge_length(m, a, b));
+  for_each_edge(m, [&](Id a, Id b, Id) { sum.edge(edge_length(m, a, b)); });
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
     if (m.tet_alive(static_cast<Id>(t))) sum.element(tet_quality(m, static_cast<Id>(t)));
   sum.fill(st, m.num_live_vertices(), m.num_live_tets());
@@ -261,10 +252,10 @@ void summarize(const TetMesh& m, PassStats& st) {
 std::string stall_reason(const TetMesh& m) {
   double worst = 0, worst_length = 1.0;
   Id wa = kNoId, wb = kNoId;
-  for (const auto& [a, b, t] : all_edges(m)) {
+  for_each_edge(m, [&](Id a, Id b, Id) {
     const double l = edge_length(m, a, b);
     if (length_badness(l) > worst) worst = length_badness(l), worst_length = l, wa = a, wb = b;
-  }
+  });
   if (wa == kNoId) return "no edge left";
   return stall_message<3>(worst_length, 0.5 * (m.xyz[wa] + m.xyz[wb]));
 }
