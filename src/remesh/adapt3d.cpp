@@ -39,6 +39,13 @@ struct Candidate {
   Id tet;  // a tet holding the edge when it was listed (a hint: the mesh changes)
 };
 
+/// A collapse candidate: no hint (collapses walk the ball), 16 bytes instead of 24 — there can
+/// be about one per tet (memory, issue #7).
+struct ShortEdge {
+  double length;
+  Id a, b;
+};
+
 /// Calls f(a, b, tet) for each unique live edge (a < b), in increasing (a, b), with the first
 /// (lowest id) tet holding it. Bucketed by a (counting sort of 4-byte entries 6 t + k, edge k of
 /// tet t), then each small bucket sorted by (b, tet) in a scratch array: linear in the tets. The
@@ -76,14 +83,16 @@ void for_each_edge(const TetMesh& m, F&& f) {
   }
 }
 
-template <class Select>
-std::vector<Candidate> candidates(const TetMesh& m, Select select, bool longer_first) {
-  std::vector<Candidate> out;
+template <class C = Candidate, class Select>
+std::vector<C> candidates(const TetMesh& m, Select select, bool longer_first) {
+  std::vector<C> out;
   for_each_edge(m, [&](Id a, Id b, Id t) {
     const double l = edge_length(m, a, b);
-    if (select(l)) out.push_back({l, a, b, t});
+    if (!select(l)) return;
+    if constexpr (requires(C c) { c.tet; }) out.push_back({l, a, b, t});
+    else out.push_back({l, a, b});
   });
-  std::sort(out.begin(), out.end(), [longer_first](const Candidate& x, const Candidate& y) {
+  std::sort(out.begin(), out.end(), [longer_first](const C& x, const C& y) {
     if (x.length != y.length) return longer_first ? x.length > y.length : x.length < y.length;
     return x.a != y.a ? x.a < y.a : x.b < y.b;
   });
@@ -119,7 +128,8 @@ long collapse_sweep(Remesh3dContext& ctx, PassStats& st) {
   TetMesh& m = ctx.mesh();
   const CollapseLimits limits{0.2, 1.45};
   long done = 0;
-  for (const Candidate& c : candidates(m, [](double l) { return l < kCollapseBelow; }, false)) {
+  const auto is_short = [](double l) { return l < kCollapseBelow; };
+  for (const ShortEdge& c : candidates<ShortEdge>(m, is_short, false)) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
     if (edge_length(m, c.a, c.b) >= kCollapseBelow) continue;
     bool applied = false;
@@ -196,7 +206,8 @@ long bad_tet_sweep(TetMesh& m, PassStats& st) {
 /// Edges shorter than kVeryShort: collapsed with the relaxed limits of the bad tets.
 long short_edge_sweep(TetMesh& m, PassStats& st) {
   long done = 0;
-  for (const Candidate& c : candidates(m, [](double l) { return l < kVeryShort; }, false)) {
+  const auto is_very_short = [](double l) { return l < kVeryShort; };
+  for (const ShortEdge& c : candidates<ShortEdge>(m, is_very_short, false)) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || edge_length(m, c.a, c.b) >= kVeryShort)
       continue;
     bool applied = false;

@@ -149,12 +149,11 @@ void BackgroundMesh<D>::finish(std::vector<Id>&& elem2elem) {
     if (v < 0 || static_cast<std::size_t>(v) >= nv)
       throw InputError(prefix() + "vertex id " + std::to_string(v) + " out of range [0, " +
                        std::to_string(nv) + ")");
-  volumes_.resize(ns);
   for (std::size_t s = 0; s < ns; ++s) {
     Vec<D> x[kVerts];
     for (int i = 0; i < kVerts; ++i) x[i] = coords_[simplices_[kVerts * s + i]];
-    volumes_[s] = simplex::signed_volume(x);
-    if (volumes_[s] == 0.0 || !std::isfinite(volumes_[s]))
+    const double volume = simplex::signed_volume(x);
+    if (volume == 0.0 || !std::isfinite(volume))
       throw InputError(prefix() + "simplex " + std::to_string(s + 1) + " has zero measure");
   }
   for (std::size_t v = 0; v < nv; ++v) {

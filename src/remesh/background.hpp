@@ -98,7 +98,7 @@ class BackgroundMesh {
                           std::span<double> out) const;
 
   std::size_t num_vertices() const { return coords_.size(); }
-  std::size_t num_simplices() const { return volumes_.size(); }
+  std::size_t num_simplices() const { return simplices_.size() / kVerts; }
   InterpScheme scheme() const { return scheme_; }
   const Vec<D>& vertex(Id v) const { return coords_[static_cast<std::size_t>(v)]; }
   std::span<const Id, kVerts> simplex(Id s) const {
@@ -141,7 +141,6 @@ class BackgroundMesh {
   InterpScheme scheme_;
   std::vector<Vec<D>> coords_;
   std::vector<Id> simplices_;
-  std::vector<double> volumes_;  // signed measure × D! of each simplex (det of its edge vectors)
   std::vector<Id> elem2elem_;
   std::vector<SymMat<D>> metrics_;
   std::vector<SymMat<D>> logs_;  // log M per vertex, for kLogEuclidean only
