@@ -181,17 +181,20 @@ void BackgroundMesh<D>::build_grid() {
     for (int a = 0; a < D; ++a) lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
   // About 4 triangles or 64 tetrahedra per cell: a simplex overlaps a few cells, so a cell lists
   // ~12 triangles or a few hundred tetrahedra, the cost of one containment scan in the robust
-  // search. In 3D one cell per 2x2x2 block of the 8-tetrahedra grid used before: the cell lists
-  // were ~36 bytes per tetrahedron, now ~8 (memory, issue #7); the remesher's queries walk from
-  // nearby hints and hardly use the grid.
-  const double target = std::max(1.0, static_cast<double>(num_simplices()) / (D == 2 ? 4 : 64));
+  // search. In 3D one cell per 2x2x2 block of the 8-tetrahedra grid used before: its cell
+  // lists took 16-36 bytes per tetrahedron, now 8x fewer cells hold ~2x fewer entries (memory,
+  // issue #7); the remesher's queries walk from nearby hints and hardly use the grid.
+  const double ns = static_cast<double>(num_simplices());
   grid_.lo = lo;
-  grid_shape<D>(hi - lo, target, grid_.n);
+  grid_shape<D>(hi - lo, std::max(1.0, ns / (D == 2 ? 4 : 64)), grid_.n);
+  // Hints are walked from within 3 cells of the 4-triangle / 8-tetrahedron grid, as before the
+  // 3D grid was coarsened (the same walks, hence the same answers on shared faces).
+  int fine[D];
+  grid_shape<D>(hi - lo, std::max(1.0, ns / (D == 2 ? 4 : 8)), fine);
   std::size_t cells = 1;
   for (int a = 0; a < D; ++a) {
     grid_.cell[a] = (hi[a] - lo[a]) / grid_.n[a];
-    // 3 cells of the finer grid (1.5 of the 3D one): the same reach as before it was coarsened.
-    hint_reach_ = std::max(hint_reach_, (D == 2 ? 3.0 : 1.5) * grid_.cell[a]);
+    hint_reach_ = std::max(hint_reach_, 3.0 * ((hi[a] - lo[a]) / fine[a]));
     grid_.inv_cell[a] = grid_.n[a] / (hi[a] - lo[a]);
     cells *= static_cast<std::size_t>(grid_.n[a]);
   }
