@@ -229,18 +229,19 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
     if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kGoodBall)
       for (int i = 0; i < 4; ++i) wanted[m.tv[4 * t + i]] = 1;
   long done = 0;
+  MoveCache cache;
   for (std::size_t vi = 0; vi < wanted.size(); ++vi) {
     const Id v = static_cast<Id>(vi);
     if (!wanted[vi] || !m.vert_alive(v)) continue;
     NewVertex3 target;
     if (!ctx.smoothing_target(v, target)) continue;
-    double ball_worst = std::numeric_limits<double>::quiet_NaN();  // computed once
-    bool moved = move_vertex(m, v, target.p, target.metric, &ball_worst) == Outcome::kApplied;
+    cache.v = kNoId;  // the ball and its worst quality, computed once for the candidates
+    bool moved = move_vertex(m, v, target.p, target.metric, &cache) == Outcome::kApplied;
     // A refused target: try the way there at half and a quarter.
     const Vec3 from = m.xyz[v];
     for (double f = 0.5; !moved && f > 0.2; f *= 0.5) {
       const Vec3 p = from + f * (target.p - from);
-      moved = move_vertex(m, v, p, ctx.metric_for(p, v), &ball_worst) == Outcome::kApplied;
+      moved = move_vertex(m, v, p, ctx.metric_for(p, v), &cache) == Outcome::kApplied;
     }
     if (moved) {
       ctx.inherit_hint(v);

@@ -1,22 +1,22 @@
 // Vertex relocation: accepted when the ball's worst quality improves.
 #include <algorithm>
-#include <cmath>
 
 #include "remesh/ops3d.hpp"
 
 namespace riemesh {
 
-Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, double* ball_worst) {
-  thread_local std::vector<Id> ball;
+Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, MoveCache* cache) {
+  thread_local MoveCache local;
   if (m.vkind[v] == VertexKind::kFixed) return Outcome::kRejectedTopology;
-  collect_ball(m, v, ball);
-  double old_worst = 1.0;
-  if (ball_worst && !std::isnan(*ball_worst)) {
-    old_worst = *ball_worst;
-  } else {
-    for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));
-    if (ball_worst) *ball_worst = old_worst;
+  MoveCache& c = cache ? *cache : local;
+  if (!cache || c.v != v) {
+    collect_ball(m, v, c.ball);
+    c.worst = 1.0;
+    for (const Id t : c.ball) c.worst = std::min(c.worst, tet_quality(m, t));
+    c.v = cache ? v : kNoId;
   }
+  const std::vector<Id>& ball = c.ball;
+  const double old_worst = c.worst;
   const Vec3 old_p = m.xyz[v];
   const SymMat3 old_m = m.metric[v];
   m.xyz[v] = p, m.metric[v] = metric;
@@ -26,7 +26,7 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, doub
     if (!(worst > 0.0)) break;
   }
   if (worst > old_worst) {
-    if (ball_worst) *ball_worst = std::min(worst, 1.0);
+    c.worst = worst;  // the ball's tets are the same, v moved
     return Outcome::kApplied;
   }
   m.xyz[v] = old_p, m.metric[v] = old_m;

@@ -77,10 +77,17 @@ Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length);
 
 /// Moves v to p (with its new metric) when every tet of its ball stays valid and the ball's
 /// worst quality improves. Fixed vertices never move; keeping a boundary vertex on its plane or
-/// ridge line is the caller's job (p is taken as given). `ball_worst`, when given, caches the
-/// ball's worst quality (capped at 1) across calls on the same vertex: NaN on the first call
-/// (computed and stored), updated when the move is applied.
+/// ridge line is the caller's job (p is taken as given).
+///
+/// `cache`, when given, keeps v's ball and its worst quality (capped at 1) across calls on the
+/// same vertex (several candidate positions): used when cache->v == v, else filled. The caller
+/// resets it (v = kNoId) when anything but these moves of v may have changed the ball.
+struct MoveCache {
+  Id v = kNoId;
+  std::vector<Id> ball;
+  double worst = 0.0;
+};
 Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric,
-                    double* ball_worst = nullptr);
+                    MoveCache* cache = nullptr);
 
 }  // namespace riemesh

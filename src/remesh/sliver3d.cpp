@@ -40,7 +40,9 @@ double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p) {
 Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
   TetMesh& m = ctx.mesh();
   if (m.vkind[v] == VertexKind::kFixed) return Outcome::kRejectedTopology;
-  thread_local std::vector<Id> ball;
+  thread_local MoveCache cache;  // the ball, handed to move_vertex with its worst quality
+  std::vector<Id>& ball = cache.ball;
+  cache.v = kNoId;
   collect_ball(m, v, ball);
   if (ball.empty()) return Outcome::kRejectedTopology;
   const Vec3 p0 = m.xyz[v];
@@ -68,8 +70,8 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
       if (q > best) best = q, best_p = p;
     }
   if (!(best > worst + 1e-4)) return Outcome::kRejectedQuality;
-  double ball_worst = std::min(worst, 1.0);  // as move_vertex would compute it
-  const Outcome o = move_vertex(m, v, best_p, ctx.metric_for(best_p, v), &ball_worst);
+  cache.v = v, cache.worst = std::min(worst, 1.0);  // as move_vertex would compute them
+  const Outcome o = move_vertex(m, v, best_p, ctx.metric_for(best_p, v), &cache);
   if (o == Outcome::kApplied) ctx.inherit_hint(v);
   return o;
 }
