@@ -21,16 +21,22 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
   const SymMat3 old_m = m.metric[v];
   m.xyz[v] = p, m.metric[v] = metric;
   double worst = 1.0;
-  for (const Id t : ball) {
-    worst = std::min(worst, tet_quality(m, t));
-    if (!(worst > 0.0)) break;
+  std::size_t k = 0;
+  for (; k < ball.size(); ++k) {
+    worst = std::min(worst, tet_quality(m, ball[k]));
+    if (!(worst > old_worst)) break;  // refused: the rest only tells geometry from quality
   }
   if (worst > old_worst) {
     c.worst = worst;  // the ball's tets are the same, v moved
     return Outcome::kApplied;
   }
+  bool valid = worst > 0.0;
+  for (++k; k < ball.size() && valid; ++k) {
+    const Id* tv = &m.tv[4 * ball[k]];
+    valid = above_volume_floor(m.xyz[tv[0]], m.xyz[tv[1]], m.xyz[tv[2]], m.xyz[tv[3]]);
+  }
   m.xyz[v] = old_p, m.metric[v] = old_m;
-  return worst > 0.0 ? Outcome::kRejectedQuality : Outcome::kRejectedGeometry;
+  return valid ? Outcome::kRejectedQuality : Outcome::kRejectedGeometry;
 }
 
 }  // namespace riemesh

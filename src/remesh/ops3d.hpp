@@ -4,6 +4,7 @@
 // own admissibility and returns an Outcome (ops2d.hpp): a rejection is a normal answer. They
 // never create a tet whose volume is not above kMinRelativeVolume (longest edge)³, and they
 // replace tets only through replace_cavity (conformity checked on the faces).
+#include <algorithm>
 #include <cmath>
 
 #include "metric/edge_length.hpp"
@@ -30,6 +31,15 @@ inline double quality_in(const SymMat3& mm, const Vec3& p0, const Vec3& p1, cons
   if (!(vol > kMinRelativeVolume * longest * std::sqrt(longest))) return std::min(vol, 0.0);
   const double c = std::cbrt(3.0 * std::sqrt(det(mm)) * vol);
   return 12.0 * c * c / l2;
+}
+
+/// The geometric part of quality_in: tet (p0..p3) is above the relative volume threshold (its
+/// quality is then positive, the metric being SPD).
+inline bool above_volume_floor(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+  const Vec3 e[6] = {p1 - p0, p2 - p0, p3 - p0, p2 - p1, p3 - p1, p3 - p2};
+  double longest = 0.0;
+  for (const Vec3& x : e) longest = std::max(longest, dot(x, x));
+  return tet_volume(p0, p1, p2, p3) > kMinRelativeVolume * longest * std::sqrt(longest);
 }
 
 /// Quality of tet (a, b, c, d) in the mean of its vertex metrics (a cheap stand-in for the

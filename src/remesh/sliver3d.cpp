@@ -22,14 +22,15 @@ Vec3 ideal_apex(const SymMat3& mm, const Vec3& a, const Vec3& b, const Vec3& c, 
   return g + (std::sqrt(2.0 / 3.0) * mean / dn) * d;
 }
 
-/// The worst quality of the ball with v at p (v's metric unchanged).
-double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p) {
+/// The worst quality of the ball with v at p (v's metric unchanged), or some value <= floor
+/// once it is known not to exceed floor.
+double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p, double floor) {
   const Vec3 old = m.xyz[v];
   m.xyz[v] = p;
   double worst = 1.0;
   for (const Id t : ball) {
     worst = std::min(worst, tet_quality(m, t));
-    if (!(worst > 0.0)) break;
+    if (!(worst > 0.0) || !(worst > floor)) break;
   }
   m.xyz[v] = old;
   return worst;
@@ -66,7 +67,7 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
     for (const double f : {1.0, 0.5, 0.25, 0.1}) {
       Vec3 p = p0 + f * (target - p0);
       if (!ctx.constrain(v, p)) return Outcome::kRejectedTopology;
-      const double q = worst_at(m, v, ball, p);
+      const double q = worst_at(m, v, ball, p, best);
       if (q > best) best = q, best_p = p;
     }
   if (!(best > worst + 1e-4)) return Outcome::kRejectedQuality;
