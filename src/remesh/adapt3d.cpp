@@ -148,11 +148,11 @@ long collapse_sweep(Remesh3dContext& ctx, PassStats& st) {
 long swap_sweep(TetMesh& m, PassStats& st) {
   std::vector<Id> bad;
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
-    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kSwapBelow)
+    if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kSwapBelow)
       bad.push_back(static_cast<Id>(t));
   long done = 0;
   for (const Id t : bad) {
-    if (!m.tet_alive(t) || tet_quality(m, t) >= kSwapBelow) continue;
+    if (!m.tet_alive(t) || cached_quality(m, t) >= kSwapBelow) continue;
     Id v[4];
     std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
     bool applied = false;
@@ -177,11 +177,11 @@ long swap_sweep(TetMesh& m, PassStats& st) {
 long bad_tet_sweep(TetMesh& m, PassStats& st) {
   std::vector<Id> bad;
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
-    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kBad)
+    if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kBad)
       bad.push_back(static_cast<Id>(t));
   long done = 0;
   for (const Id t : bad) {
-    if (!m.tet_alive(t) || tet_quality(m, t) >= kBad) continue;
+    if (!m.tet_alive(t) || cached_quality(m, t) >= kBad) continue;
     Candidate edges[6];
     for (int k = 0; k < 6; ++k) {
       const Id a = m.tv[4 * t + kTetEdge[k][0]], b = m.tv[4 * t + kTetEdge[k][1]];
@@ -226,7 +226,7 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
   TetMesh& m = ctx.mesh();
   std::vector<std::uint8_t> wanted(m.vertex_capacity(), 0);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
-    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kGoodBall)
+    if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kGoodBall)
       for (int i = 0; i < 4; ++i) wanted[m.tv[4 * t + i]] = 1;
   long done = 0;
   MoveCache cache;
@@ -257,7 +257,7 @@ void summarize(const TetMesh& m, PassStats& st) {
   PassSummary sum;
   for_each_edge(m, [&](Id a, Id b, Id) { sum.edge(edge_length(m, a, b)); });
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
-    if (m.tet_alive(static_cast<Id>(t))) sum.element(tet_quality(m, static_cast<Id>(t)));
+    if (m.tet_alive(static_cast<Id>(t))) sum.element(cached_quality(m, static_cast<Id>(t)));
   sum.fill(st, m.num_live_vertices(), m.num_live_tets());
 }
 

@@ -63,7 +63,7 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
   // Below the floor only when the ball was already worse (its worst quality, computed only then).
   if (new_worst < limits.min_quality) {
     double old_worst = 1.0;
-    for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));
+    for (const Id t : ball) old_worst = std::min(old_worst, cached_quality(m, t));
     if (new_worst < old_worst) return Outcome::kRejectedQuality;
   }
   const Substitution subst[1] = {{to, from}};

@@ -1,5 +1,6 @@
 // Vertex relocation: accepted when the ball's worst quality improves.
 #include <algorithm>
+#include <limits>
 
 #include "remesh/ops3d.hpp"
 
@@ -12,7 +13,7 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
   if (!cache || c.v != v) {
     collect_ball(m, v, c.ball);
     c.worst = 1.0;
-    for (const Id t : c.ball) c.worst = std::min(c.worst, tet_quality(m, t));
+    for (const Id t : c.ball) c.worst = std::min(c.worst, cached_quality(m, t));
     c.v = cache ? v : kNoId;
   }
   const std::vector<Id>& ball = c.ball;
@@ -28,6 +29,9 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
   }
   if (worst > old_worst) {
     c.worst = worst;  // the ball's tets are the same, v moved
+    for (const Id t : ball)
+      if (static_cast<std::size_t>(t) < m.quality.size())
+        m.quality[t] = std::numeric_limits<double>::quiet_NaN();
     return Outcome::kApplied;
   }
   bool valid = worst > 0.0;

@@ -6,6 +6,7 @@
 // replace tets only through replace_cavity (conformity checked on the faces).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "metric/edge_length.hpp"
 #include "remesh/ops2d.hpp"
@@ -52,6 +53,18 @@ inline double tet_quality(const TetMesh& m, const Id* v) {
   return tet_quality(m, v[0], v[1], v[2], v[3]);
 }
 inline double tet_quality(const TetMesh& m, Id t) { return tet_quality(m, &m.tv[4 * t]); }
+
+/// tet_quality of live tet t as the mesh stands, computed once and kept in m.quality until the
+/// tet or one of its vertices changes (the sweeps scan every tet's quality many times a pass).
+inline double cached_quality(const TetMesh& m, Id t) {
+  if (m.quality.size() < m.tet_capacity()) {
+    if (m.quality.capacity() < m.tref.capacity()) m.quality.reserve(m.tref.capacity());
+    m.quality.resize(m.tet_capacity(), std::numeric_limits<double>::quiet_NaN());
+  }
+  double& q = m.quality[static_cast<std::size_t>(t)];
+  if (std::isnan(q)) q = tet_quality(m, t);
+  return q;
+}
 
 /// A vertex to insert: position, metric, kind and planes.
 struct NewVertex3 {

@@ -55,7 +55,7 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
     const Id a = tv[kTetFace[i][0]], b = tv[kTetFace[i][1]], c = tv[kTetFace[i][2]];
     const SymMat3 mm = 0.25 * (m.metric[a] + m.metric[b] + m.metric[c] + m.metric[v]);
     const Vec3 apex = ideal_apex(mm, m.xyz[a], m.xyz[b], m.xyz[c], p0);
-    const double q = tet_quality(m, t);
+    const double q = cached_quality(m, t);
     const double w = 1.0 / std::pow(std::max(q, 0.02), 4);
     sum = sum + w * apex, wsum += w;
     if (q < worst) worst = q, worst_apex = apex;
@@ -86,7 +86,7 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
     for (std::size_t ti = 0; ti < m.tet_capacity(); ++ti) {
       const Id t = static_cast<Id>(ti);
       if (!m.tet_alive(t)) continue;
-      const double q = tet_quality(m, t);
+      const double q = cached_quality(m, t);
       if (q < limits.target) bad.emplace_back(q, t);
     }
     std::sort(bad.begin(), bad.end());
@@ -94,7 +94,7 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
     if (static_cast<double>(bad.size()) > cap) bad.resize(static_cast<std::size_t>(cap));
     long done = 0;
     for (const auto& [q0, t] : bad) {
-      if (!m.tet_alive(t) || tet_quality(m, t) >= limits.target) continue;
+      if (!m.tet_alive(t) || cached_quality(m, t) >= limits.target) continue;
       Id v[4];
       std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
       bool applied = false;
@@ -108,7 +108,7 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
       for (int i = 0; i < 4 && !applied && limits.move; ++i)
         if (optimise_vertex(ctx, v[i]) == Outcome::kApplied) {
           ++st.moves;
-          applied = !m.tet_alive(t) || tet_quality(m, t) >= limits.target;
+          applied = !m.tet_alive(t) || cached_quality(m, t) >= limits.target;
           if (!applied) ++done;  // counted, but the tet is worked on further
         }
       if (!applied && limits.collapse && m.tet_alive(t)) {

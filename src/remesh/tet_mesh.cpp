@@ -1,6 +1,7 @@
 #include "remesh/tet_mesh.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "mesh/adjacency.hpp"
@@ -258,6 +259,8 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
   for (const NewTet& nt : tets) {
     const Id t = alloc_tet(m);
     ids.push_back(t);
+    if (static_cast<std::size_t>(t) < m.quality.size())
+      m.quality[t] = std::numeric_limits<double>::quiet_NaN();
     for (int i = 0; i < 4; ++i) {
       m.tv[4 * t + i] = nt.v[i];
       m.vtet[nt.v[i]] = t;

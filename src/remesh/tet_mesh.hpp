@@ -61,6 +61,9 @@ struct TetMesh {
   // Scratch marks for ball and shell walks (stamp per tet); not part of the mesh's state.
   mutable std::vector<std::uint32_t> mark;
   mutable std::uint32_t stamp = 0;
+  // Cache of each live tet's quality (ops3d.hpp cached_quality), NaN when unknown: cleared for
+  // the tets replace_cavity creates and by the vertex moves that are kept (move_vertex).
+  mutable std::vector<double> quality;
 
   std::size_t vertex_capacity() const { return xyz.size(); }
   std::size_t tet_capacity() const { return tref.size(); }

@@ -31,7 +31,7 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   m.xyz.reserve(rv), m.metric.reserve(rv), m.vref.reserve(rv), m.vtag.reserve(rv);
   m.vkind.reserve(rv), m.vplane.reserve(2 * rv), m.vtet.reserve(rv);
   m.tv.reserve(4 * rt), m.tadj.reserve(4 * rt), m.fbdy.reserve(4 * rt);
-  m.tref.reserve(rt), m.mark.reserve(rt);
+  m.tref.reserve(rt), m.mark.reserve(rt), m.quality.reserve(rt);
   m.xyz.resize(nv);
   for (std::size_t v = 0; v < nv; ++v)
     m.xyz[v] = Vec3{{mesh.coords[3 * v], mesh.coords[3 * v + 1], mesh.coords[3 * v + 2]}};
