@@ -51,6 +51,10 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   m.tadj.assign(4 * nt, kNoId);
   m.fbdy.assign(4 * nt, 0);
   std::map<std::array<Id, 3>, std::size_t> listed;
+  // Only a face whose three vertices are on listed triangles is looked up (most are interior).
+  std::vector<std::uint8_t> on_listed(nv, 0);
+  for (const Id v : mesh.triangles)
+    if (v >= 0 && static_cast<std::size_t>(v) < nv) on_listed[v] = 1;
   for (std::size_t f = 0; f < mesh.num_triangles(); ++f)
     listed.emplace(sorted3(mesh.triangles[3 * f], mesh.triangles[3 * f + 1],
                            mesh.triangles[3 * f + 2]), f);
@@ -68,7 +72,9 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
         while (j < 4 && std::find(v, v + 4, w[j]) != v + 4) ++j;  // n's vertex not in t
         m.tadj[4 * t + i] = 4 * n + j;
       }
-      const auto it = listed.find(sorted3(v[kTetFace[i][0]], v[kTetFace[i][1]], v[kTetFace[i][2]]));
+      const Id a = v[kTetFace[i][0]], b = v[kTetFace[i][1]], c = v[kTetFace[i][2]];
+      const auto it = on_listed[a] && on_listed[b] && on_listed[c] ? listed.find(sorted3(a, b, c))
+                                                                    : listed.end();
       if (it != listed.end()) {
         const std::int32_t ref = mesh.tri_ref.empty() ? 0 : mesh.tri_ref[it->second];
         m.set_face(4 * t + i, m.ref_code(ref), ref);
