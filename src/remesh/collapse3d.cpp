@@ -38,12 +38,16 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
     if (tet_index(m, t, to) >= 0) shell.push_back(t);
   if (shell.empty()) return Outcome::kRejectedTopology;
   if (!boundary_ok(m, shell, from, to)) return Outcome::kRejectedTopology;
-  // New edge lengths first: the cheapest check and the one that refuses most.
+  // New edge lengths first: the cheapest check and the one that refuses most (each neighbour
+  // once: it is in several tets of the ball).
+  thread_local std::vector<Id> seen;
+  seen.clear();
   for (const Id t : ball)
     for (int i = 0; i < 4; ++i) {
       const Id x = m.tv[4 * t + i];
-      if (x != from && x != to && edge_length(m, to, x) > limits.max_length)
-        return Outcome::kRejectedQuality;
+      if (x == from || x == to || std::find(seen.begin(), seen.end(), x) != seen.end()) continue;
+      if (edge_length(m, to, x) > limits.max_length) return Outcome::kRejectedQuality;
+      seen.push_back(x);
     }
   tets.clear();
   double new_worst = 1.0;
