@@ -12,21 +12,29 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
   MoveCache& c = cache ? *cache : local;
   if (!cache || c.v != v) {
     collect_ball(m, v, c.ball);
-    c.worst = 1.0;
-    for (const Id t : c.ball) c.worst = std::min(c.worst, cached_quality(m, t));
+    c.worst = 1.0, c.first = 0;
+    for (std::size_t k = 0; k < c.ball.size(); ++k) {
+      const double q = cached_quality(m, c.ball[k]);
+      if (q < c.worst) c.worst = q, c.first = k;
+    }
     c.v = cache ? v : kNoId;
   }
+  // The ball's tets in the order: first, then the others.
+  const std::size_t first = c.first < c.ball.size() ? c.first : 0;
+  const auto at = [first](std::size_t k) { return k == 0 ? first : (k <= first ? k - 1 : k); };
   const std::vector<Id>& ball = c.ball;
   const double old_worst = c.worst;
   const Vec3 old_p = m.xyz[v];
   const SymMat3 old_m = m.metric[v];
   m.xyz[v] = p, m.metric[v] = metric;
   double worst = 1.0;
-  std::size_t k = 0;
+  std::size_t k = 0, worst_at = first;
   for (; k < ball.size(); ++k) {
-    worst = std::min(worst, tet_quality(m, ball[k]));
+    const double q = tet_quality(m, ball[at(k)]);
+    if (q < worst) worst = q, worst_at = at(k);
     if (!(worst > old_worst)) break;  // refused: the rest only tells geometry from quality
   }
+  c.first = worst_at;
   if (worst > old_worst) {
     c.worst = worst;  // the ball's tets are the same, v moved
     for (const Id t : ball)
@@ -36,7 +44,7 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
   }
   bool valid = worst > 0.0;
   for (++k; k < ball.size() && valid; ++k) {
-    const Id* tv = &m.tv[4 * ball[k]];
+    const Id* tv = &m.tv[4 * ball[at(k)]];
     valid = above_volume_floor(m.xyz[tv[0]], m.xyz[tv[1]], m.xyz[tv[2]], m.xyz[tv[3]]);
   }
   m.xyz[v] = old_p, m.metric[v] = old_m;

@@ -104,11 +104,15 @@ Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length);
 ///
 /// `cache`, when given, keeps v's ball and its worst quality (capped at 1) across calls on the
 /// same vertex (several candidate positions): used when cache->v == v, else filled. The caller
-/// resets it (v = kNoId) when anything but these moves of v may have changed the ball.
+/// resets it (v = kNoId) when anything but these moves of v may have changed the ball. `first`
+/// (an index in ball) is the tet whose quality is computed first: the worst one, or the one that
+/// refused the last candidate, so that a refused candidate is found out early (the outcome does
+/// not depend on the order).
 struct MoveCache {
   Id v = kNoId;
   std::vector<Id> ball;
   double worst = 0.0;
+  std::size_t first = 0;
 };
 Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric,
                     MoveCache* cache = nullptr);

@@ -23,15 +23,14 @@ Vec3 ideal_apex(const SymMat3& mm, const Vec3& a, const Vec3& b, const Vec3& c, 
 }
 
 /// The worst quality of the ball with v at p (v's metric unchanged), or some value <= floor
-/// once it is known not to exceed floor.
-double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p, double floor) {
+/// once it is known not to exceed floor; ball[first] is tried first (the likely worst).
+double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p, double floor,
+                std::size_t first) {
   const Vec3 old = m.xyz[v];
   m.xyz[v] = p;
-  double worst = 1.0;
-  for (const Id t : ball) {
-    worst = std::min(worst, tet_quality(m, t));
-    if (!(worst > 0.0) || !(worst > floor)) break;
-  }
+  double worst = std::min(1.0, tet_quality(m, ball[first]));
+  for (std::size_t k = 0; k < ball.size() && worst > 0.0 && worst > floor; ++k)
+    if (k != first) worst = std::min(worst, tet_quality(m, ball[k]));
   m.xyz[v] = old;
   return worst;
 }
@@ -49,7 +48,9 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
   const Vec3 p0 = m.xyz[v];
   Vec3 sum{}, worst_apex = p0;
   double wsum = 0.0, worst = 2.0;
-  for (const Id t : ball) {
+  std::size_t worst_index = 0;
+  for (std::size_t k = 0; k < ball.size(); ++k) {
+    const Id t = ball[k];
     const Id* tv = &m.tv[4 * t];
     const int i = tet_index(m, t, v);
     const Id a = tv[kTetFace[i][0]], b = tv[kTetFace[i][1]], c = tv[kTetFace[i][2]];
@@ -58,7 +59,7 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
     const double q = cached_quality(m, t);
     const double w = 1.0 / std::pow(std::max(q, 0.02), 4);
     sum = sum + w * apex, wsum += w;
-    if (q < worst) worst = q, worst_apex = apex;
+    if (q < worst) worst = q, worst_apex = apex, worst_index = k;
   }
   const Vec3 targets[2] = {(1.0 / wsum) * sum, worst_apex};
   Vec3 best_p = p0;
@@ -67,11 +68,11 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
     for (const double f : {1.0, 0.5, 0.25, 0.1}) {
       Vec3 p = p0 + f * (target - p0);
       if (!ctx.constrain(v, p)) return Outcome::kRejectedTopology;
-      const double q = worst_at(m, v, ball, p, best);
+      const double q = worst_at(m, v, ball, p, best, worst_index);
       if (q > best) best = q, best_p = p;
     }
   if (!(best > worst + 1e-4)) return Outcome::kRejectedQuality;
-  cache.v = v, cache.worst = std::min(worst, 1.0);  // as move_vertex would compute them
+  cache.v = v, cache.worst = std::min(worst, 1.0), cache.first = worst_index;  // as move_vertex
   const Outcome o = move_vertex(m, v, best_p, ctx.metric_for(best_p, v), &cache);
   if (o == Outcome::kApplied) ctx.inherit_hint(v);
   return o;
