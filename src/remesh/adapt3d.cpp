@@ -234,8 +234,8 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
     const Id v = static_cast<Id>(vi);
     if (!wanted[vi] || !m.vert_alive(v)) continue;
     NewVertex3 target;
-    if (!ctx.smoothing_target(v, target)) continue;
-    cache.v = kNoId;  // the ball and its worst quality, computed once for the candidates
+    if (!ctx.smoothing_target(v, target, &cache.ball)) continue;
+    fill_move_cache(m, v, cache);  // the ball and its worst quality, once for the candidates
     bool moved = move_vertex(m, v, target.p, target.metric, &cache) == Outcome::kApplied;
     // A refused target: try the way there at half and a quarter.
     const Vec3 from = m.xyz[v];

@@ -6,18 +6,23 @@
 
 namespace riemesh {
 
+void fill_move_cache(const TetMesh& m, Id v, MoveCache& c) {
+  c.worst = 1.0, c.first = 0;
+  for (std::size_t k = 0; k < c.ball.size(); ++k) {
+    const double q = cached_quality(m, c.ball[k]);
+    if (q < c.worst) c.worst = q, c.first = k;
+  }
+  c.v = v;
+}
+
 Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, MoveCache* cache) {
   thread_local MoveCache local;
   if (m.vkind[v] == VertexKind::kFixed) return Outcome::kRejectedTopology;
   MoveCache& c = cache ? *cache : local;
   if (!cache || c.v != v) {
     collect_ball(m, v, c.ball);
-    c.worst = 1.0, c.first = 0;
-    for (std::size_t k = 0; k < c.ball.size(); ++k) {
-      const double q = cached_quality(m, c.ball[k]);
-      if (q < c.worst) c.worst = q, c.first = k;
-    }
-    c.v = cache ? v : kNoId;
+    fill_move_cache(m, v, c);
+    if (!cache) c.v = kNoId;
   }
   // The ball's tets in the order: first, then the others.
   const std::size_t first = c.first < c.ball.size() ? c.first : 0;

@@ -117,4 +117,7 @@ struct MoveCache {
 Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric,
                     MoveCache* cache = nullptr);
 
+/// Fills c for v from c.ball, which must hold v's ball (collect_ball): worst quality and first.
+void fill_move_cache(const TetMesh& m, Id v, MoveCache& c);
+
 }  // namespace riemesh

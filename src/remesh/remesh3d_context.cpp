@@ -189,10 +189,11 @@ void Remesh3dContext::inherit_hint(Id v) {
   hint_[v] = last_found_;
 }
 
-bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out) const {
+bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out, std::vector<Id>* ball_out) const {
   const VertexKind k = mesh_.vkind[v];
   if (k == VertexKind::kFixed) return false;
-  thread_local std::vector<Id> ball, nbrs;
+  thread_local std::vector<Id> own_ball, nbrs;
+  std::vector<Id>& ball = ball_out ? *ball_out : own_ball;
   collect_ball(mesh_, v, ball);
   nbrs.clear();
   for (const Id t : ball)
