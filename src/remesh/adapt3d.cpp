@@ -60,7 +60,12 @@ void for_each_edge(const TetMesh& m, F&& f) {
     for (const auto& [i, j] : kTetEdge) ++start[std::min(m.tv[4 * t + i], m.tv[4 * t + j]) + 1];
   }
   for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t> e(start.back());
+  std::vector<std::uint32_t>& e = m.edge_scratch;  // entries [0, start.back()) are written
+  if (e.size() < start.back()) {  // grown exactly (resize alone would double the capacity)
+    std::vector<std::uint32_t>().swap(e);
+    e.reserve(start.back() + start.back() / 64);
+    e.resize(e.capacity());
+  }
   {
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
@@ -362,6 +367,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   }
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
   const TetMesh final_mesh = std::move(m);
+  std::vector<std::uint32_t>().swap(final_mesh.edge_scratch);
   const std::vector<std::int32_t> edge_refs = ctx->edge_refs();
   ctx.reset();
   result.mesh = to_mesh(final_mesh, edge_refs, &result.metrics);

@@ -64,6 +64,9 @@ struct TetMesh {
   // Cache of each live tet's quality (ops3d.hpp cached_quality), NaN when unknown: cleared for
   // the tets replace_cavity creates and by the vertex moves that are kept (move_vertex).
   mutable std::vector<double> quality;
+  // Scratch of the driver's edge enumeration (6 entries per tet), kept across its calls so that
+  // the pass does not allocate, fault in and zero it each time.
+  mutable std::vector<std::uint32_t> edge_scratch;
 
   std::size_t vertex_capacity() const { return xyz.size(); }
   std::size_t tet_capacity() const { return tref.size(); }
