@@ -62,7 +62,8 @@ struct TetMesh {
   mutable std::vector<std::uint32_t> mark;
   mutable std::uint32_t stamp = 0;
   // Cache of each live tet's quality (ops3d.hpp cached_quality), NaN when unknown: cleared for
-  // the tets replace_cavity creates and by the vertex moves that are kept (move_vertex).
+  // the tets replace_cavity creates and by the vertex moves that are kept (move_vertex). Code
+  // that changes a vertex's position or metric any other way must clear it (quality.clear()).
   mutable std::vector<double> quality;
   // Scratch of the driver's edge enumeration (6 entries per tet), kept across its calls so that
   // the pass does not allocate, fault in and zero it each time.
