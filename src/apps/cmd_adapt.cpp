@@ -176,7 +176,7 @@ std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
 /// A tetrahedral mesh: adapt3d (planar boundary patches in their planes, curved ones on the
 /// reconstruction of the input surface).
 void run3d(const AdaptArgs& a, Mesh&& mesh) {
-  const std::vector<SymMat3> metrics = load_metric3(a, mesh);
+  std::vector<SymMat3> metrics = load_metric3(a, mesh);
   const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
   Adapt3dOptions opt;
   static_cast<Adapt2dOptions&>(opt) = a.opt;
@@ -184,10 +184,12 @@ void run3d(const AdaptArgs& a, Mesh&& mesh) {
   const auto progress = [&](const PassStats& s) {
     if (!a.quiet) print_pass(s, a.verbosity, "tetrahedra");
   };
-  // Without fields to transfer the input is needed no more: the remesher takes it over instead
-  // of copying it (memory, issue #7); finish() reads the input only to transfer fields.
-  const Adapt3dResult r = fields.empty() ? adapt3d(std::move(mesh), metrics, opt, progress)
-                                         : adapt3d(mesh, metrics, opt, progress);
+  // Without fields to transfer the input is needed no more: the remesher takes it and the
+  // metrics over instead of copying them (memory, issue #7); finish() reads the input only to
+  // transfer fields.
+  const Adapt3dResult r = fields.empty()
+                              ? adapt3d(std::move(mesh), std::move(metrics), opt, progress)
+                              : adapt3d(mesh, metrics, opt, progress);
   finish<3>(a, mesh, fields, r);
   if (a.verbosity > 0 && !a.quiet) print_peak_memory(r.mesh.num_tets());
 }

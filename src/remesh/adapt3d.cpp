@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -39,60 +40,65 @@ struct Candidate {
   Id tet;  // a tet holding the edge when it was listed (a hint: the mesh changes)
 };
 
-struct Edge {
-  Id a, b, tet;
+/// A collapse candidate: no hint (collapses walk the ball), 16 bytes instead of 24 — there can
+/// be about one per tet (memory, issue #7).
+struct ShortEdge {
+  double length;
+  Id a, b;
 };
 
-/// The unique live edges (a < b), sorted, each with the first tet holding it. Bucketed by a
-/// (counting sort, entries (b, tet): a is the bucket), then each small bucket sorted by b:
-/// linear in the tets. The 6 entries per tet are the largest transient of a pass (issue #7):
-/// 8 bytes each, and the result is sized exactly.
-std::vector<Edge> all_edges(const TetMesh& m) {
-  struct Entry {
-    Id b, tet;
-  };
-  std::vector<std::size_t> start(m.vertex_capacity() + 1, 0);
+/// Calls f(a, b, tet) for each unique live edge (a < b), in increasing (a, b), with the first
+/// (lowest id) tet holding it. Bucketed by a (counting sort of 4-byte entries 6 t + k, edge k of
+/// tet t), then each small bucket sorted by (b, tet) in a scratch array: linear in the tets. The
+/// entries are the largest transient of a pass (issue #7): 24 bytes per tet, and no edge list.
+template <class F>
+void for_each_edge(const TetMesh& m, F&& f) {
+  RIEMESH_CHECK(m.tet_capacity() < std::numeric_limits<std::uint32_t>::max() / 6);
+  const auto end = [&](std::uint32_t x, int i) { return m.tv[4 * (x / 6) + kTetEdge[x % 6][i]]; };
+  std::vector<std::uint32_t> start(m.vertex_capacity() + 1, 0);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
     if (!m.tet_alive(static_cast<Id>(t))) continue;
     for (const auto& [i, j] : kTetEdge) ++start[std::min(m.tv[4 * t + i], m.tv[4 * t + j]) + 1];
   }
   for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<Entry> e(start.back());
+  std::vector<std::uint32_t>& e = m.edge_scratch;  // entries [0, start.back()) are written
+  if (e.size() < start.back()) {  // grown exactly (resize alone would double the capacity)
+    std::vector<std::uint32_t>().swap(e);
+    e.reserve(start.back() + start.back() / 64);
+    e.resize(e.capacity());
+  }
   {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
       if (!m.tet_alive(static_cast<Id>(t))) continue;
-      for (const auto& [i, j] : kTetEdge) {
-        const Id a = m.tv[4 * t + i], b = m.tv[4 * t + j];
-        e[fill[std::min(a, b)]++] = {std::max(a, b), static_cast<Id>(t)};
+      for (std::uint32_t k = 0; k < 6; ++k) {
+        const std::uint32_t x = static_cast<std::uint32_t>(6 * t) + k;
+        e[fill[std::min(end(x, 0), end(x, 1))]++] = x;
       }
     }
   }
-  std::size_t unique = 0;
+  std::vector<std::pair<Id, Id>> bucket;  // (b, tet)
   for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-    const auto first = e.begin() + static_cast<std::ptrdiff_t>(start[v]);
-    const auto last = e.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-    std::sort(first, last, [](const Entry& x, const Entry& y) {
-      return x.b != y.b ? x.b < y.b : x.tet < y.tet;
-    });
-    for (auto it = first; it != last; ++it) unique += it == first || it->b != (it - 1)->b;
-  }
-  std::vector<Edge> out;
-  out.reserve(unique);
-  for (std::size_t v = 0; v + 1 < start.size(); ++v)
+    bucket.clear();
     for (std::size_t k = start[v]; k < start[v + 1]; ++k)
-      if (k == start[v] || e[k].b != e[k - 1].b) out.push_back({static_cast<Id>(v), e[k].b, e[k].tet});
-  return out;
+      bucket.emplace_back(std::max(end(e[k], 0), end(e[k], 1)), static_cast<Id>(e[k] / 6));
+    std::sort(bucket.begin(), bucket.end());
+    for (std::size_t k = 0; k < bucket.size(); ++k)
+      if (k == 0 || bucket[k].first != bucket[k - 1].first)
+        f(static_cast<Id>(v), bucket[k].first, bucket[k].second);
+  }
 }
 
-template <class Select>
-std::vector<Candidate> candidates(const TetMesh& m, Select select, bool longer_first) {
-  std::vector<Candidate> out;
-  for (const auto& [a, b, t] : all_edges(m)) {
+template <class C = Candidate, class Select>
+std::vector<C> candidates(const TetMesh& m, Select select, bool longer_first) {
+  std::vector<C> out;
+  for_each_edge(m, [&](Id a, Id b, Id t) {
     const double l = edge_length(m, a, b);
-    if (select(l)) out.push_back({l, a, b, t});
-  }
-  std::sort(out.begin(), out.end(), [longer_first](const Candidate& x, const Candidate& y) {
+    if (!select(l)) return;
+    if constexpr (requires(C c) { c.tet; }) out.push_back({l, a, b, t});
+    else out.push_back({l, a, b});
+  });
+  std::sort(out.begin(), out.end(), [longer_first](const C& x, const C& y) {
     if (x.length != y.length) return longer_first ? x.length > y.length : x.length < y.length;
     return x.a != y.a ? x.a < y.a : x.b < y.b;
   });
@@ -128,7 +134,8 @@ long collapse_sweep(Remesh3dContext& ctx, PassStats& st) {
   TetMesh& m = ctx.mesh();
   const CollapseLimits limits{0.2, 1.45};
   long done = 0;
-  for (const Candidate& c : candidates(m, [](double l) { return l < kCollapseBelow; }, false)) {
+  const auto is_short = [](double l) { return l < kCollapseBelow; };
+  for (const ShortEdge& c : candidates<ShortEdge>(m, is_short, false)) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
     if (edge_length(m, c.a, c.b) >= kCollapseBelow) continue;
     bool applied = false;
@@ -147,11 +154,11 @@ long collapse_sweep(Remesh3dContext& ctx, PassStats& st) {
 long swap_sweep(TetMesh& m, PassStats& st) {
   std::vector<Id> bad;
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
-    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kSwapBelow)
+    if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kSwapBelow)
       bad.push_back(static_cast<Id>(t));
   long done = 0;
   for (const Id t : bad) {
-    if (!m.tet_alive(t) || tet_quality(m, t) >= kSwapBelow) continue;
+    if (!m.tet_alive(t) || cached_quality(m, t) >= kSwapBelow) continue;
     Id v[4];
     std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
     bool applied = false;
@@ -176,11 +183,11 @@ long swap_sweep(TetMesh& m, PassStats& st) {
 long bad_tet_sweep(TetMesh& m, PassStats& st) {
   std::vector<Id> bad;
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
-    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kBad)
+    if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kBad)
       bad.push_back(static_cast<Id>(t));
   long done = 0;
   for (const Id t : bad) {
-    if (!m.tet_alive(t) || tet_quality(m, t) >= kBad) continue;
+    if (!m.tet_alive(t) || cached_quality(m, t) >= kBad) continue;
     Candidate edges[6];
     for (int k = 0; k < 6; ++k) {
       const Id a = m.tv[4 * t + kTetEdge[k][0]], b = m.tv[4 * t + kTetEdge[k][1]];
@@ -205,7 +212,8 @@ long bad_tet_sweep(TetMesh& m, PassStats& st) {
 /// Edges shorter than kVeryShort: collapsed with the relaxed limits of the bad tets.
 long short_edge_sweep(TetMesh& m, PassStats& st) {
   long done = 0;
-  for (const Candidate& c : candidates(m, [](double l) { return l < kVeryShort; }, false)) {
+  const auto is_very_short = [](double l) { return l < kVeryShort; };
+  for (const ShortEdge& c : candidates<ShortEdge>(m, is_very_short, false)) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || edge_length(m, c.a, c.b) >= kVeryShort)
       continue;
     bool applied = false;
@@ -224,20 +232,22 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
   TetMesh& m = ctx.mesh();
   std::vector<std::uint8_t> wanted(m.vertex_capacity(), 0);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
-    if (m.tet_alive(static_cast<Id>(t)) && tet_quality(m, static_cast<Id>(t)) < kGoodBall)
+    if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kGoodBall)
       for (int i = 0; i < 4; ++i) wanted[m.tv[4 * t + i]] = 1;
   long done = 0;
+  MoveCache cache;
   for (std::size_t vi = 0; vi < wanted.size(); ++vi) {
     const Id v = static_cast<Id>(vi);
     if (!wanted[vi] || !m.vert_alive(v)) continue;
     NewVertex3 target;
-    if (!ctx.smoothing_target(v, target)) continue;
-    bool moved = move_vertex(m, v, target.p, target.metric) == Outcome::kApplied;
+    if (!ctx.smoothing_target(v, target, &cache.ball)) continue;
+    fill_move_cache(m, v, cache);  // the ball and its worst quality, once for the candidates
+    bool moved = move_vertex(m, v, target.p, target.metric, &cache) == Outcome::kApplied;
     // A refused target: try the way there at half and a quarter.
     const Vec3 from = m.xyz[v];
     for (double f = 0.5; !moved && f > 0.2; f *= 0.5) {
       const Vec3 p = from + f * (target.p - from);
-      moved = move_vertex(m, v, p, ctx.metric_for(p, v)) == Outcome::kApplied;
+      moved = move_vertex(m, v, p, ctx.metric_for(p, v), &cache) == Outcome::kApplied;
     }
     if (moved) {
       ctx.inherit_hint(v);
@@ -251,19 +261,19 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
 
 void summarize(const TetMesh& m, PassStats& st) {
   PassSummary sum;
-  for (const auto& [a, b, t] : all_edges(m)) sum.edge(edge_length(m, a, b));
+  for_each_edge(m, [&](Id a, Id b, Id) { sum.edge(edge_length(m, a, b)); });
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
-    if (m.tet_alive(static_cast<Id>(t))) sum.element(tet_quality(m, static_cast<Id>(t)));
+    if (m.tet_alive(static_cast<Id>(t))) sum.element(cached_quality(m, static_cast<Id>(t)));
   sum.fill(st, m.num_live_vertices(), m.num_live_tets());
 }
 
 std::string stall_reason(const TetMesh& m) {
   double worst = 0, worst_length = 1.0;
   Id wa = kNoId, wb = kNoId;
-  for (const auto& [a, b, t] : all_edges(m)) {
+  for_each_edge(m, [&](Id a, Id b, Id) {
     const double l = edge_length(m, a, b);
     if (length_badness(l) > worst) worst = length_badness(l), worst_length = l, wa = a, wb = b;
-  }
+  });
   if (wa == kNoId) return "no edge left";
   return stall_message<3>(worst_length, 0.5 * (m.xyz[wa] + m.xyz[wb]));
 }
@@ -272,10 +282,17 @@ std::string stall_reason(const TetMesh& m) {
 
 Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
                       const Adapt3dOptions& options, const PassCallback& on_pass) {
-  return adapt3d(Mesh(input), metrics, options, on_pass);
+  return adapt3d(Mesh(input), std::vector<SymMat3>(metrics.begin(), metrics.end()), options,
+                 on_pass);
 }
 
 Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
+                      const Adapt3dOptions& options, const PassCallback& on_pass) {
+  return adapt3d(std::move(input), std::vector<SymMat3>(metrics.begin(), metrics.end()), options,
+                 on_pass);
+}
+
+Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
                       const Adapt3dOptions& options, const PassCallback& on_pass) {
   options.validate();
   if (input.dim != 3 || input.num_tets() == 0)
@@ -291,15 +308,20 @@ Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
     const Renumbering order = renumber_hilbert(ordered);
     std::vector<SymMat3> prepared;
     {
-      std::vector<SymMat3> permuted(metrics.begin(), metrics.end());
-      if (metrics.size() == input_vertices)
-        for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = metrics[order.vertices[v]];
+      std::vector<SymMat3> permuted = std::move(metrics);
+      if (permuted.size() == input_vertices) {
+        const std::vector<SymMat3> given = permuted;
+        for (std::size_t v = 0; v < permuted.size(); ++v) permuted[v] = given[order.vertices[v]];
+      }
       if (!options.keep_surface) intersect_curvature_sizes(ordered, permuted, options);
-      const Adjacency adjacency = build_adjacency(ordered.tets, 4, ordered.num_vertices());
+      // The full adjacency (balls, edges) only for the gradation.
+      const Adjacency adjacency = options.hgrad > 0.0
+                                      ? build_adjacency(ordered.tets, 4, ordered.num_vertices())
+                                      : Adjacency{};
       prepared = prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted),
                                     options, result.report);
     }
-    ctx.emplace(ordered, prepared, options);
+    ctx.emplace(std::move(ordered), std::move(prepared), options);
   }
   TetMesh& m = ctx->mesh();
   long best_ops = std::numeric_limits<long>::max();
@@ -347,6 +369,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
   }
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
   const TetMesh final_mesh = std::move(m);
+  std::vector<std::uint32_t>().swap(final_mesh.edge_scratch);
   const std::vector<std::int32_t> edge_refs = ctx->edge_refs();
   ctx.reset();
   result.mesh = to_mesh(final_mesh, edge_refs, &result.metrics);

@@ -45,4 +45,9 @@ Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
 Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
                       const Adapt3dOptions& options, const PassCallback& on_pass = {});
 
+/// The same, taking over the metrics too (moved from): they are renumbered and prepared in
+/// their own storage, which the background mesh then keeps (memory, issue #7).
+Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
+                      const Adapt3dOptions& options, const PassCallback& on_pass = {});
+
 }  // namespace riemesh

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/spd.hpp"
@@ -82,6 +83,29 @@ BackgroundMesh<D>::BackgroundMesh(std::span<const double> coords, std::span<cons
 }
 
 template <int D>
+BackgroundMesh<D>::BackgroundMesh(std::vector<Vec<D>>&& coords, std::vector<Id>&& simplices,
+                                  std::vector<SymMat<D>>&& metrics, InterpScheme scheme,
+                                  std::vector<Id>&& elem2elem)
+    : scheme_(scheme), coords_(std::move(coords)), simplices_(std::move(simplices)),
+      metrics_(std::move(metrics)) {
+  const std::size_t nv = coords_.size();
+  if (simplices_.size() % kVerts != 0 || simplices_.empty())
+    throw InputError(prefix() + "coordinate or simplex array of a bad size (" +
+                     std::to_string(D * nv) + " coordinates, " +
+                     std::to_string(simplices_.size()) + " simplex ids)");
+  if (nv >= static_cast<std::size_t>(std::numeric_limits<Id>::max()) ||
+      simplices_.size() >= static_cast<std::size_t>(std::numeric_limits<Id>::max()))
+    throw InputError(prefix() + "too many entities for 32-bit ids");
+  if (metrics_.size() != nv)
+    throw InputError(prefix() + std::to_string(metrics_.size() * SymMat<D>::kSize) +
+                     " metric coefficients for " + std::to_string(nv) + " vertices (expected " +
+                     std::to_string(nv * SymMat<D>::kSize) + ")");
+  if (!elem2elem.empty() && elem2elem.size() != simplices_.size())
+    throw InputError(prefix() + "neighbour array of a bad size");
+  finish(std::move(elem2elem));
+}
+
+template <int D>
 BackgroundMesh<D>::BackgroundMesh(const Mesh& mesh, std::span<const double> metrics,
                                   InterpScheme scheme, const Adjacency* adjacency)
     : scheme_(scheme) {
@@ -97,7 +121,6 @@ void BackgroundMesh<D>::build(std::span<const double> coords, std::span<const Id
                      std::to_string(coords.size()) + " coordinates, " +
                      std::to_string(simplices.size()) + " simplex ids)");
   const std::size_t nv = coords.size() / D;
-  const std::size_t ns = simplices.size() / kVerts;
   if (nv >= static_cast<std::size_t>(std::numeric_limits<Id>::max()) ||
       simplices.size() >= static_cast<std::size_t>(std::numeric_limits<Id>::max()))
     throw InputError(prefix() + "too many entities for 32-bit ids");
@@ -107,28 +130,33 @@ void BackgroundMesh<D>::build(std::span<const double> coords, std::span<const Id
                      ")");
   coords_.resize(nv);
   for (std::size_t v = 0; v < nv; ++v)
-    for (int a = 0; a < D; ++a) {
-      coords_[v][a] = coords[D * v + a];
+    for (int a = 0; a < D; ++a) coords_[v][a] = coords[D * v + a];
+  simplices_.assign(simplices.begin(), simplices.end());
+  metrics_.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) std::copy_n(metrics.begin() + kSize * v, kSize, metrics_[v].c);
+  finish(adjacency ? std::vector<Id>(adjacency->elem2elem) : std::vector<Id>{});
+}
+
+template <int D>
+void BackgroundMesh<D>::finish(std::vector<Id>&& elem2elem) {
+  const std::size_t nv = coords_.size(), ns = simplices_.size() / kVerts;
+  for (std::size_t v = 0; v < nv; ++v)
+    for (int a = 0; a < D; ++a)
       if (!std::isfinite(coords_[v][a]))
         throw InputError(prefix() + "vertex " + std::to_string(v + 1) +
                          " has a non-finite coordinate");
-    }
-  simplices_.assign(simplices.begin(), simplices.end());
   for (Id v : simplices_)
     if (v < 0 || static_cast<std::size_t>(v) >= nv)
       throw InputError(prefix() + "vertex id " + std::to_string(v) + " out of range [0, " +
                        std::to_string(nv) + ")");
-  volumes_.resize(ns);
   for (std::size_t s = 0; s < ns; ++s) {
     Vec<D> x[kVerts];
     for (int i = 0; i < kVerts; ++i) x[i] = coords_[simplices_[kVerts * s + i]];
-    volumes_[s] = simplex::signed_volume(x);
-    if (volumes_[s] == 0.0 || !std::isfinite(volumes_[s]))
+    const double volume = simplex::signed_volume(x);
+    if (volume == 0.0 || !std::isfinite(volume))
       throw InputError(prefix() + "simplex " + std::to_string(s + 1) + " has zero measure");
   }
-  metrics_.resize(nv);
   for (std::size_t v = 0; v < nv; ++v) {
-    std::copy_n(metrics.begin() + kSize * v, kSize, metrics_[v].c);
     if (!is_spd(metrics_[v]))
       throw InputError(prefix() + "the metric of vertex " + std::to_string(v + 1) +
                        " is not symmetric positive definite");
@@ -137,7 +165,8 @@ void BackgroundMesh<D>::build(std::span<const double> coords, std::span<const Id
     logs_.resize(nv);
     for (std::size_t v = 0; v < nv; ++v) logs_[v] = log_spd(metrics_[v]);
   }
-  elem2elem_ = adjacency ? adjacency->elem2elem : build_face_adjacency(simplices_, kVerts, nv).elem2elem;
+  elem2elem_ = !elem2elem.empty() ? std::move(elem2elem)
+                                  : build_face_adjacency(simplices_, kVerts, nv).elem2elem;
   // Walks from a hint crossing a uniform mesh take O(ns^(1/D)) steps; beyond a generous multiple
   // of that, the grid search is cheaper than walking on (and a cycle cannot run forever).
   max_walk_steps_ =
@@ -150,15 +179,22 @@ void BackgroundMesh<D>::build_grid() {
   Vec<D> lo = coords_[0], hi = coords_[0];
   for (const Vec<D>& x : coords_)
     for (int a = 0; a < D; ++a) lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
-  // About 4 triangles or 8 tetrahedra per cell: a simplex overlaps a few cells, so a cell lists
-  // ~12 triangles or ~50 tetrahedra, the cost of one containment scan in the robust search.
-  const double target = std::max(1.0, static_cast<double>(num_simplices()) / (D == 2 ? 4 : 8));
+  // About 4 triangles or 64 tetrahedra per cell: a simplex overlaps a few cells, so a cell lists
+  // ~12 triangles or a few hundred tetrahedra, the cost of one containment scan in the robust
+  // search. In 3D one cell per 2x2x2 block of the 8-tetrahedra grid used before: its cell
+  // lists took 16-36 bytes per tetrahedron, now 8x fewer cells hold ~2x fewer entries (memory,
+  // issue #7); the remesher's queries walk from nearby hints and hardly use the grid.
+  const double ns = static_cast<double>(num_simplices());
   grid_.lo = lo;
-  grid_shape<D>(hi - lo, target, grid_.n);
+  grid_shape<D>(hi - lo, std::max(1.0, ns / (D == 2 ? 4 : 64)), grid_.n);
+  // Hints are walked from within 3 cells of the 4-triangle / 8-tetrahedron grid, as before the
+  // 3D grid was coarsened (the same walks, hence the same answers on shared faces).
+  int fine[D];
+  grid_shape<D>(hi - lo, std::max(1.0, ns / (D == 2 ? 4 : 8)), fine);
   std::size_t cells = 1;
   for (int a = 0; a < D; ++a) {
     grid_.cell[a] = (hi[a] - lo[a]) / grid_.n[a];
-    hint_reach_ = std::max(hint_reach_, 3.0 * grid_.cell[a]);
+    hint_reach_ = std::max(hint_reach_, 3.0 * ((hi[a] - lo[a]) / fine[a]));
     grid_.inv_cell[a] = grid_.n[a] / (hi[a] - lo[a]);
     cells *= static_cast<std::size_t>(grid_.n[a]);
   }

@@ -64,6 +64,14 @@ class BackgroundMesh {
                  std::span<const double> metrics,
                  InterpScheme scheme = InterpScheme::kLogEuclidean);
 
+  /// Taking over the arrays (no copy: memory, issue #7): vertices, D + 1 vertex ids per simplex,
+  /// one metric per vertex, and optionally the neighbours (elem2elem of build_face_adjacency of
+  /// the same simplices; empty: built here). Same checks and errors as the span constructor.
+  BackgroundMesh(std::vector<Vec<D>>&& coords, std::vector<Id>&& simplices,
+                 std::vector<SymMat<D>>&& metrics,
+                 InterpScheme scheme = InterpScheme::kLogEuclidean,
+                 std::vector<Id>&& elem2elem = {});
+
   /// From a mesh: its triangles (D = 2, mesh.dim == 2) or tetrahedra (D = 3, a volume).
   /// `adjacency`, when given, is build_adjacency of the same simplices (saves rebuilding it).
   BackgroundMesh(const Mesh& mesh, std::span<const double> metrics,
@@ -90,7 +98,7 @@ class BackgroundMesh {
                           std::span<double> out) const;
 
   std::size_t num_vertices() const { return coords_.size(); }
-  std::size_t num_simplices() const { return volumes_.size(); }
+  std::size_t num_simplices() const { return simplices_.size() / kVerts; }
   InterpScheme scheme() const { return scheme_; }
   const Vec<D>& vertex(Id v) const { return coords_[static_cast<std::size_t>(v)]; }
   std::span<const Id, kVerts> simplex(Id s) const {
@@ -118,6 +126,8 @@ class BackgroundMesh {
 
   void build(std::span<const double> coords, std::span<const Id> simplices,
              std::span<const double> metrics, const Adjacency* adjacency = nullptr);
+  /// The checks, volumes, logs, neighbours (unless given) and grid of the arrays in place.
+  void finish(std::vector<Id>&& elem2elem);
   void build_grid();
   /// Signed sub-volumes Vᵢ(p) (p replacing vertex i) divided by the simplex's volume.
   void barycentric(Id s, const Vec<D>& p, double b[kVerts]) const;
@@ -131,7 +141,6 @@ class BackgroundMesh {
   InterpScheme scheme_;
   std::vector<Vec<D>> coords_;
   std::vector<Id> simplices_;
-  std::vector<double> volumes_;  // signed measure × D! of each simplex (det of its edge vectors)
   std::vector<Id> elem2elem_;
   std::vector<SymMat<D>> metrics_;
   std::vector<SymMat<D>> logs_;  // log M per vertex, for kLogEuclidean only

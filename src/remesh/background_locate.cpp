@@ -62,7 +62,9 @@ void BackgroundMesh<D>::barycentric(Id s, const Vec<D>& p, double b[kVerts]) con
   Vec<D> x[kVerts];
   for (int i = 0; i < kVerts; ++i) x[i] = coords_[v[i]];
   simplex::sub_volumes(x, p, b);
-  const double inv = 1.0 / volumes_[s];
+  // The simplex's volume is computed here rather than stored (8 bytes per simplex, issue #7):
+  // the same function of the same coordinates, so the same bits as at construction.
+  const double inv = 1.0 / simplex::signed_volume(x);
   for (int i = 0; i < kVerts; ++i) b[i] *= inv;
 }
 

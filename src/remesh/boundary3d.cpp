@@ -64,7 +64,7 @@ Boundary3d::Boundary3d(const TetMesh& m, std::vector<std::int32_t> curved_refs,
   std::vector<SymMat3> metric;
   for (std::size_t slot = 0; slot < m.fbdy.size(); ++slot) {
     const Id t = static_cast<Id>(slot / 4);
-    if (!m.fbdy[slot] || !m.tet_alive(t) || m.tadj[slot] != kNoId || !curved(m.fref[slot]))
+    if (!m.fbdy[slot] || !m.tet_alive(t) || m.tadj[slot] != kNoId || !curved(m.face_ref(slot)))
       continue;
     const int i = static_cast<int>(slot % 4);
     for (int k = 0; k < 3; ++k) {
@@ -79,7 +79,7 @@ Boundary3d::Boundary3d(const TetMesh& m, std::vector<std::int32_t> curved_refs,
       }
       s.triangles.push_back(sid);
     }
-    s.tri_ref.push_back(m.fref[slot]);
+    s.tri_ref.push_back(m.face_ref(slot));
   }
   geo_ = std::make_unique<SurfaceProjection>(s, feature_options(options), std::move(metric),
                                              kLift * hausd_);
@@ -141,7 +141,7 @@ bool curved_boundary_ok(const TetMesh& m, std::span<const Id> ball, Id v, Id to,
   for (const Id t : ball)
     for (int i = 0; i < 4; ++i) {
       const std::size_t s = 4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i);
-      if (!m.fbdy[s] || m.tadj[s] != kNoId || !m.surface->curved(m.fref[s])) continue;
+      if (!m.fbdy[s] || m.tadj[s] != kNoId || !m.surface->curved(m.face_ref(s))) continue;
       Id f[3];
       for (int k = 0; k < 3; ++k) f[k] = m.tv[4 * t + kTetFace[i][k]];
       if (f[0] != v && f[1] != v && f[2] != v) continue;
@@ -164,7 +164,7 @@ bool curved_split_ok(const TetMesh& m, std::span<const Id> shell, Id a, Id b, co
     for (int i = 0; i < 4; ++i) {
       const std::size_t s = 4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i);
       const Id opp = m.tv[s];
-      if (opp == a || opp == b || !m.fbdy[s] || m.tadj[s] != kNoId || !m.surface->curved(m.fref[s]))
+      if (opp == a || opp == b || !m.fbdy[s] || m.tadj[s] != kNoId || !m.surface->curved(m.face_ref(s)))
         continue;
       Id f[3];
       for (int k = 0; k < 3; ++k) f[k] = m.tv[4 * t + kTetFace[i][k]];

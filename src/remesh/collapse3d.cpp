@@ -18,7 +18,7 @@ bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to)
       const Id v = m.tv[4 * t + i], s = 4 * t + i;
       if (v == from || v == to || !m.fbdy[s]) continue;
       if (m.tadj[s] != kNoId || n == 2) return false;  // an interface, or not a surface edge
-      refs[n++] = m.fref[s];
+      refs[n++] = m.face_ref(s);
     }
   if (k == VertexKind::kInterior) return n == 0;
   if (n != 2) return false;
@@ -55,12 +55,16 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
     if (tet_index(m, t, to) >= 0) shell.push_back(t);
   if (shell.empty()) return Outcome::kRejectedTopology;
   if (!boundary_ok(m, shell, from, to)) return Outcome::kRejectedTopology;
-  // New edge lengths first: the cheapest check and the one that refuses most.
+  // New edge lengths first: the cheapest check and the one that refuses most (each neighbour
+  // once: it is in several tets of the ball).
+  thread_local std::vector<Id> seen;
+  seen.clear();
   for (const Id t : ball)
     for (int i = 0; i < 4; ++i) {
       const Id x = m.tv[4 * t + i];
-      if (x != from && x != to && edge_length(m, to, x) > limits.max_length)
-        return Outcome::kRejectedQuality;
+      if (x == from || x == to || std::find(seen.begin(), seen.end(), x) != seen.end()) continue;
+      if (edge_length(m, to, x) > limits.max_length) return Outcome::kRejectedQuality;
+      seen.push_back(x);
     }
   tets.clear();
   double new_worst = 1.0;
@@ -88,7 +92,7 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
   // Below the floor only when the ball was already worse (its worst quality, computed only then).
   if (new_worst < limits.min_quality) {
     double old_worst = 1.0;
-    for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));
+    for (const Id t : ball) old_worst = std::min(old_worst, cached_quality(m, t));
     if (new_worst < old_worst) return Outcome::kRejectedQuality;
   }
   // A vertex of a curved patch: the new boundary triangles stay near the input surface.

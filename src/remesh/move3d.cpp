@@ -1,35 +1,69 @@
 // Vertex relocation: accepted when the ball's worst quality improves.
 #include <algorithm>
+#include <limits>
 
 #include "remesh/boundary3d.hpp"
 #include "remesh/ops3d.hpp"
 
 namespace riemesh {
 
-Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric) {
-  thread_local std::vector<Id> ball;
+void fill_move_cache(const TetMesh& m, Id v, MoveCache& c) {
+  c.worst = 1.0, c.first = 0;
+  for (std::size_t k = 0; k < c.ball.size(); ++k) {
+    const double q = cached_quality(m, c.ball[k]);
+    if (q < c.worst) c.worst = q, c.first = k;
+  }
+  c.v = v;
+}
+
+Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, MoveCache* cache) {
+  thread_local MoveCache local;
   if (m.vkind[v] == VertexKind::kFixed) return Outcome::kRejectedTopology;
-  collect_ball(m, v, ball);
-  double old_worst = 1.0;
-  for (const Id t : ball) old_worst = std::min(old_worst, tet_quality(m, t));
+  MoveCache& c = cache ? *cache : local;
+  if (!cache || c.v != v) {
+    collect_ball(m, v, c.ball);
+    fill_move_cache(m, v, c);
+    if (!cache) c.v = kNoId;
+  }
+  // The ball's tets in the order: first, then the others.
+  const std::size_t first = c.first < c.ball.size() ? c.first : 0;
+  const auto at = [first](std::size_t k) { return k == 0 ? first : (k <= first ? k - 1 : k); };
+  const std::vector<Id>& ball = c.ball;
+  const double old_worst = c.worst;
   const Vec3 old_p = m.xyz[v];
   const SymMat3 old_m = m.metric[v];
   m.xyz[v] = p, m.metric[v] = metric;
   double worst = 1.0;
-  for (const Id t : ball) {
-    worst = std::min(worst, tet_quality(m, t));
-    if (!(worst > 0.0)) break;
+  std::size_t k = 0, worst_at = first;
+  for (; k < ball.size(); ++k) {
+    const double q = tet_quality(m, ball[at(k)]);
+    if (q < worst) worst = q, worst_at = at(k);
+    if (!(worst > old_worst)) break;  // refused: the rest only tells geometry from quality
   }
+  c.first = worst_at;
   if (worst > old_worst) {
-    if (!on_curved_boundary(m.vkind[v])) return Outcome::kApplied;
-    m.xyz[v] = old_p;  // the boundary checks compare the old and new positions
-    const bool ok = curved_boundary_ok(m, ball, v, kNoId, p);
-    if (ok) m.xyz[v] = p;
-    else m.metric[v] = old_m;
-    return ok ? Outcome::kApplied : Outcome::kRejectedGeometry;
+    if (on_curved_boundary(m.vkind[v])) {
+      m.xyz[v] = old_p;  // the boundary checks compare the old and new positions
+      const bool ok = curved_boundary_ok(m, ball, v, kNoId, p);
+      if (!ok) {
+        m.metric[v] = old_m;
+        return Outcome::kRejectedGeometry;
+      }
+      m.xyz[v] = p;
+    }
+    c.worst = worst;  // the ball's tets are the same, v moved
+    for (const Id t : ball)
+      if (static_cast<std::size_t>(t) < m.quality.size())
+        m.quality[t] = std::numeric_limits<double>::quiet_NaN();
+    return Outcome::kApplied;
+  }
+  bool valid = worst > 0.0;
+  for (++k; k < ball.size() && valid; ++k) {
+    const Id* tv = &m.tv[4 * ball[at(k)]];
+    valid = above_volume_floor(m.xyz[tv[0]], m.xyz[tv[1]], m.xyz[tv[2]], m.xyz[tv[3]]);
   }
   m.xyz[v] = old_p, m.metric[v] = old_m;
-  return worst > 0.0 ? Outcome::kRejectedQuality : Outcome::kRejectedGeometry;
+  return valid ? Outcome::kRejectedQuality : Outcome::kRejectedGeometry;
 }
 
 }  // namespace riemesh

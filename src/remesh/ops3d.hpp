@@ -4,7 +4,9 @@
 // own admissibility and returns an Outcome (ops2d.hpp): a rejection is a normal answer. They
 // never create a tet whose volume is not above kMinRelativeVolume (longest edge)³, and they
 // replace tets only through replace_cavity (conformity checked on the faces).
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "metric/edge_length.hpp"
 #include "remesh/ops2d.hpp"
@@ -32,6 +34,15 @@ inline double quality_in(const SymMat3& mm, const Vec3& p0, const Vec3& p1, cons
   return 12.0 * c * c / l2;
 }
 
+/// The geometric part of quality_in: tet (p0..p3) is above the relative volume threshold (its
+/// quality is then positive, the metric being SPD).
+inline bool above_volume_floor(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+  const Vec3 e[6] = {p1 - p0, p2 - p0, p3 - p0, p2 - p1, p3 - p1, p3 - p2};
+  double longest = 0.0;
+  for (const Vec3& x : e) longest = std::max(longest, dot(x, x));
+  return tet_volume(p0, p1, p2, p3) > kMinRelativeVolume * longest * std::sqrt(longest);
+}
+
 /// Quality of tet (a, b, c, d) in the mean of its vertex metrics (a cheap stand-in for the
 /// log-Euclidean mean, used consistently for every decision).
 inline double tet_quality(const TetMesh& m, Id a, Id b, Id c, Id d) {
@@ -42,6 +53,18 @@ inline double tet_quality(const TetMesh& m, const Id* v) {
   return tet_quality(m, v[0], v[1], v[2], v[3]);
 }
 inline double tet_quality(const TetMesh& m, Id t) { return tet_quality(m, &m.tv[4 * t]); }
+
+/// tet_quality of live tet t as the mesh stands, computed once and kept in m.quality until the
+/// tet or one of its vertices changes (the sweeps scan every tet's quality many times a pass).
+inline double cached_quality(const TetMesh& m, Id t) {
+  if (m.quality.size() < m.tet_capacity()) {
+    if (m.quality.capacity() < m.tref.capacity()) m.quality.reserve(m.tref.capacity());
+    m.quality.resize(m.tet_capacity(), std::numeric_limits<double>::quiet_NaN());
+  }
+  double& q = m.quality[static_cast<std::size_t>(t)];
+  if (std::isnan(q)) q = tet_quality(m, t);
+  return q;
+}
 
 /// A vertex to insert: position, metric, kind and planes.
 struct NewVertex3 {
@@ -78,6 +101,23 @@ Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length);
 /// Moves v to p (with its new metric) when every tet of its ball stays valid and the ball's
 /// worst quality improves. Fixed vertices never move; keeping a boundary vertex on its plane or
 /// ridge line is the caller's job (p is taken as given).
-Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric);
+///
+/// `cache`, when given, keeps v's ball and its worst quality (capped at 1) across calls on the
+/// same vertex (several candidate positions): used when cache->v == v, else filled. The caller
+/// resets it (v = kNoId) when anything but these moves of v may have changed the ball. `first`
+/// (an index in ball) is the tet whose quality is computed first: the worst one, or the one that
+/// refused the last candidate, so that a refused candidate is found out early (the outcome does
+/// not depend on the order).
+struct MoveCache {
+  Id v = kNoId;
+  std::vector<Id> ball;
+  double worst = 0.0;
+  std::size_t first = 0;
+};
+Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric,
+                    MoveCache* cache = nullptr);
+
+/// Fills c for v from c.ball, which must hold v's ball (collect_ball): worst quality and first.
+void fill_move_cache(const TetMesh& m, Id v, MoveCache& c);
 
 }  // namespace riemesh

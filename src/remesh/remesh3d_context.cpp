@@ -2,16 +2,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "mesh/adjacency.hpp"
 
 namespace riemesh {
 namespace {
 
-std::vector<double> flatten(std::span<const SymMat3> metrics) {
-  std::vector<double> out;
-  out.reserve(6 * metrics.size());
-  for (const SymMat3& m : metrics) out.insert(out.end(), m.c, m.c + 6);
+/// The input's vertices as points (its coords are freed).
+std::vector<Vec3> take_points(Mesh& input) {
+  std::vector<Vec3> out(input.num_vertices());
+  for (std::size_t v = 0; v < out.size(); ++v)
+    out[v] = Vec3{{input.coords[3 * v], input.coords[3 * v + 1], input.coords[3 * v + 2]}};
+  std::vector<double>().swap(input.coords);
+  return out;
+}
+
+/// The tets' neighbours as build_face_adjacency gives them, read off the fresh TetMesh.
+std::vector<Id> tet_neighbours(const TetMesh& m) {
+  std::vector<Id> out(m.tadj.size());
+  for (std::size_t s = 0; s < out.size(); ++s) out[s] = m.tadj[s] == kNoId ? kNoId : m.tadj[s] / 4;
   return out;
 }
 
@@ -39,7 +49,7 @@ bool edge_face_refs(const TetMesh& m, const std::vector<Id>& shell, Id a, Id b,
       const Id v = m.tv[4 * t + i], s = 4 * t + i;
       if (v == a || v == b || !m.fbdy[s]) continue;
       if (m.tadj[s] != kNoId || n == 2) return false;
-      refs[n++] = m.fref[s];
+      refs[n++] = m.face_ref(s);
     }
   return true;
 }
@@ -48,9 +58,14 @@ bool edge_face_refs(const TetMesh& m, const std::vector<Id>& shell, Id a, Id b,
 
 Remesh3dContext::Remesh3dContext(const Mesh& input, std::span<const SymMat3> metrics,
                                  const Adapt3dOptions& options)
+    : Remesh3dContext(Mesh(input), std::vector<SymMat3>(metrics.begin(), metrics.end()), options) {}
+
+Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
+                                 const Adapt3dOptions& options)
     : options_(options),
-      background_(input, flatten(metrics), options.interp),
-      mesh_(build_tet_mesh(input, metrics)) {
+      mesh_(build_tet_mesh(input, metrics)),
+      background_(take_points(input), std::move(input.tets), std::move(metrics), options.interp,
+                  tet_neighbours(mesh_)) {
   find_planes();
   std::vector<std::int32_t> curved;
   for (const auto& [ref, pl] : planes_)
@@ -88,7 +103,7 @@ void Remesh3dContext::find_planes() {
     const Vec3& b = m.xyz[m.tv[4 * t + kTetFace[i][1]]];
     const Vec3& c = m.xyz[m.tv[4 * t + kTetFace[i][2]]];
     const Vec3 n = normalize(cross(b - a, c - a));
-    auto [it, fresh] = planes_.try_emplace(m.fref[s]);
+    auto [it, fresh] = planes_.try_emplace(m.face_ref(s));
     Plane& pl = it->second;
     if (fresh) pl.n = n, pl.d = dot(n, a);
     if (m.tadj[s] != kNoId || dot(n, pl.n) < 1.0 - 1e-9) pl.planar = false;
@@ -114,13 +129,13 @@ void Remesh3dContext::classify_vertices() {
     const int i = static_cast<int>(s % 4);
     for (int k = 0; k < 3; ++k) {
       const Id v = m.tv[4 * t + kTetFace[i][k]];
-      if (m.tadj[s] != kNoId || (!plane(m.fref[s]) && !boundary_) || options_.keep_surface)
+      if (m.tadj[s] != kNoId || (!plane(m.face_ref(s)) && !boundary_) || options_.keep_surface)
         fixed[v] = true;
-      if (!plane(m.fref[s])) curved[v] = true;
+      if (!plane(m.face_ref(s))) curved[v] = true;
       int& c = count[v];
-      if (std::find(&refs[3 * v], &refs[3 * v] + std::min(c, 3), m.fref[s]) != &refs[3 * v] + std::min(c, 3))
+      if (std::find(&refs[3 * v], &refs[3 * v] + std::min(c, 3), m.face_ref(s)) != &refs[3 * v] + std::min(c, 3))
         continue;
-      if (c < 3) refs[3 * v + c] = m.fref[s];
+      if (c < 3) refs[3 * v + c] = m.face_ref(s);
       ++c;
     }
   }
@@ -192,10 +207,11 @@ void Remesh3dContext::inherit_hint(Id v) {
   hint_[v] = last_found_;
 }
 
-bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out) const {
+bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out, std::vector<Id>* ball_out) const {
   const VertexKind k = mesh_.vkind[v];
   if (k == VertexKind::kFixed) return false;
-  thread_local std::vector<Id> ball, nbrs;
+  thread_local std::vector<Id> own_ball, nbrs;
+  std::vector<Id>& ball = ball_out ? *ball_out : own_ball;
   collect_ball(mesh_, v, ball);
   nbrs.clear();
   for (const Id t : ball)

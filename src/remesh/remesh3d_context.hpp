@@ -18,6 +18,9 @@ class Remesh3dContext {
   /// Takes the (clipped, graded) input metrics; the mesh's vertex ids become TetMesh ids.
   Remesh3dContext(const Mesh& input, std::span<const SymMat3> metrics,
                   const Adapt3dOptions& options);
+  /// The same, taking over the input's tetrahedra and the metrics for the background mesh
+  /// instead of copying them (memory, issue #7); `input` is left without tetrahedra.
+  Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics, const Adapt3dOptions& options);
 
   TetMesh& mesh() { return mesh_; }
   const TetMesh& mesh() const { return mesh_; }
@@ -33,8 +36,9 @@ class Remesh3dContext {
 
   /// Where smoothing would put v: the mean of the unit-length points seen from its neighbours,
   /// projected on its plane for a planar boundary vertex, on its line for a ridge vertex.
-  /// False when v may not move.
-  bool smoothing_target(Id v, NewVertex3& out) const;
+  /// False when v may not move. `ball`, when given, receives v's ball (collect_ball) when v may
+  /// move.
+  bool smoothing_target(Id v, NewVertex3& out, std::vector<Id>* ball = nullptr) const;
 
   /// Puts p on v's plane (planar boundary vertex) or on its line (ridge vertex, the line through
   /// v's position), on the reconstructed surface or feature line (kSurface, kCurve vertex,
@@ -55,8 +59,8 @@ class Remesh3dContext {
   const Plane* plane(std::int32_t ref) const;
 
   Adapt3dOptions options_;
+  TetMesh mesh_;  // built first: the background then takes over the input's arrays
   BackgroundMesh<3> background_;
-  TetMesh mesh_;
   std::map<std::int32_t, Plane> planes_;
   std::vector<std::int32_t> edge_refs_;
   std::vector<Id> hint_;

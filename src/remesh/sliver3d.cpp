@@ -22,15 +22,15 @@ Vec3 ideal_apex(const SymMat3& mm, const Vec3& a, const Vec3& b, const Vec3& c, 
   return g + (std::sqrt(2.0 / 3.0) * mean / dn) * d;
 }
 
-/// The worst quality of the ball with v at p (v's metric unchanged).
-double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p) {
+/// The worst quality of the ball with v at p (v's metric unchanged), or some value <= floor
+/// once it is known not to exceed floor; ball[first] is tried first (the likely worst).
+double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p, double floor,
+                std::size_t first) {
   const Vec3 old = m.xyz[v];
   m.xyz[v] = p;
-  double worst = 1.0;
-  for (const Id t : ball) {
-    worst = std::min(worst, tet_quality(m, t));
-    if (!(worst > 0.0)) break;
-  }
+  double worst = std::min(1.0, tet_quality(m, ball[first]));
+  for (std::size_t k = 0; k < ball.size() && worst > 0.0 && worst > floor; ++k)
+    if (k != first) worst = std::min(worst, tet_quality(m, ball[k]));
   m.xyz[v] = old;
   return worst;
 }
@@ -40,22 +40,26 @@ double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p) {
 Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
   TetMesh& m = ctx.mesh();
   if (m.vkind[v] == VertexKind::kFixed) return Outcome::kRejectedTopology;
-  thread_local std::vector<Id> ball;
+  thread_local MoveCache cache;  // the ball, handed to move_vertex with its worst quality
+  std::vector<Id>& ball = cache.ball;
+  cache.v = kNoId;
   collect_ball(m, v, ball);
   if (ball.empty()) return Outcome::kRejectedTopology;
   const Vec3 p0 = m.xyz[v];
   Vec3 sum{}, worst_apex = p0;
   double wsum = 0.0, worst = 2.0;
-  for (const Id t : ball) {
+  std::size_t worst_index = 0;
+  for (std::size_t k = 0; k < ball.size(); ++k) {
+    const Id t = ball[k];
     const Id* tv = &m.tv[4 * t];
     const int i = tet_index(m, t, v);
     const Id a = tv[kTetFace[i][0]], b = tv[kTetFace[i][1]], c = tv[kTetFace[i][2]];
     const SymMat3 mm = 0.25 * (m.metric[a] + m.metric[b] + m.metric[c] + m.metric[v]);
     const Vec3 apex = ideal_apex(mm, m.xyz[a], m.xyz[b], m.xyz[c], p0);
-    const double q = tet_quality(m, t);
+    const double q = cached_quality(m, t);
     const double w = 1.0 / std::pow(std::max(q, 0.02), 4);
     sum = sum + w * apex, wsum += w;
-    if (q < worst) worst = q, worst_apex = apex;
+    if (q < worst) worst = q, worst_apex = apex, worst_index = k;
   }
   const Vec3 targets[2] = {(1.0 / wsum) * sum, worst_apex};
   Vec3 best_p = p0;
@@ -64,11 +68,12 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
     for (const double f : {1.0, 0.5, 0.25, 0.1}) {
       Vec3 p = p0 + f * (target - p0);
       if (!ctx.constrain(v, p)) return Outcome::kRejectedTopology;
-      const double q = worst_at(m, v, ball, p);
+      const double q = worst_at(m, v, ball, p, best, worst_index);
       if (q > best) best = q, best_p = p;
     }
   if (!(best > worst + 1e-4)) return Outcome::kRejectedQuality;
-  const Outcome o = move_vertex(m, v, best_p, ctx.metric_for(best_p, v));
+  cache.v = v, cache.worst = std::min(worst, 1.0), cache.first = worst_index;  // as move_vertex
+  const Outcome o = move_vertex(m, v, best_p, ctx.metric_for(best_p, v), &cache);
   if (o == Outcome::kApplied) ctx.inherit_hint(v);
   return o;
 }
@@ -82,7 +87,7 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
     for (std::size_t ti = 0; ti < m.tet_capacity(); ++ti) {
       const Id t = static_cast<Id>(ti);
       if (!m.tet_alive(t)) continue;
-      const double q = tet_quality(m, t);
+      const double q = cached_quality(m, t);
       if (q < limits.target) bad.emplace_back(q, t);
     }
     std::sort(bad.begin(), bad.end());
@@ -90,7 +95,7 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
     if (static_cast<double>(bad.size()) > cap) bad.resize(static_cast<std::size_t>(cap));
     long done = 0;
     for (const auto& [q0, t] : bad) {
-      if (!m.tet_alive(t) || tet_quality(m, t) >= limits.target) continue;
+      if (!m.tet_alive(t) || cached_quality(m, t) >= limits.target) continue;
       Id v[4];
       std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
       bool applied = false;
@@ -104,7 +109,7 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
       for (int i = 0; i < 4 && !applied && limits.move; ++i)
         if (optimise_vertex(ctx, v[i]) == Outcome::kApplied) {
           ++st.moves;
-          applied = !m.tet_alive(t) || tet_quality(m, t) >= limits.target;
+          applied = !m.tet_alive(t) || cached_quality(m, t) >= limits.target;
           if (!applied) ++done;  // counted, but the tet is worked on further
         }
       if (!applied && limits.collapse && m.tet_alive(t)) {

@@ -76,7 +76,7 @@ Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length, Id
   Id p[kMaxShell];
   if (!shell_ring(m, shell, a, b, p)) return Outcome::kRejectedTopology;
   double old_worst = 1.0;
-  for (const Id t : shell) old_worst = std::min(old_worst, tet_quality(m, t));
+  for (const Id t : shell) old_worst = std::min(old_worst, cached_quality(m, t));
   // Best triangulation of the ring polygon: maximise the worst tet (dynamic programming), with
   // no diagonal of the ring longer than max_length.
   bool ok[kMaxShell][kMaxShell];
@@ -117,7 +117,7 @@ Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length) {
   const Id f[3] = {m.tv[4 * t + kTetFace[i][0]], m.tv[4 * t + kTetFace[i][1]],
                    m.tv[4 * t + kTetFace[i][2]]};
   if (edge_length(m, d, e) > max_length) return Outcome::kRejectedQuality;
-  const double old_worst = std::min(tet_quality(m, t), tet_quality(m, u));
+  const double old_worst = std::min(cached_quality(m, t), cached_quality(m, u));
   NewTet tets[3];
   double worst = 1.0;
   for (int k = 0; k < 3; ++k) {

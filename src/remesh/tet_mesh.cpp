@@ -1,6 +1,7 @@
 #include "remesh/tet_mesh.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "mesh/adjacency.hpp"
@@ -34,8 +35,8 @@ bool holds(const FaceKey& k, Id v) { return k.v[0] == v || k.v[1] == v || k.v[2]
 struct CavityFace {
   FaceKey key;
   Id outer;  // slot across, or kNoId
-  std::int32_t ref;
-  std::uint8_t bdy;
+  std::int32_t ref;  // for an overflow ref code only
+  std::uint8_t bdy;  // the ref code (TetMesh::fbdy)
   int direct = 0, substituted = 0;
 };
 
@@ -66,13 +67,26 @@ Id alloc_tet(TetMesh& m) {
   const Id t = static_cast<Id>(m.tref.size());
   m.tv.insert(m.tv.end(), 4, kNoId);
   m.tadj.insert(m.tadj.end(), 4, kNoId);
-  m.fref.insert(m.fref.end(), 4, 0);
   m.fbdy.insert(m.fbdy.end(), 4, 0);
   m.tref.push_back(0);
   return t;
 }
 
 }  // namespace
+
+std::uint8_t TetMesh::ref_code(std::int32_t ref) {
+  const auto it = std::find(ref_table.begin(), ref_table.end(), ref);
+  if (it != ref_table.end()) return static_cast<std::uint8_t>(it - ref_table.begin() + 1);
+  if (ref_table.size() + 1 >= kRefOverflow) return kRefOverflow;
+  ref_table.push_back(ref);
+  return static_cast<std::uint8_t>(ref_table.size());
+}
+
+void TetMesh::set_face(std::size_t slot, std::uint8_t code, std::int32_t ref) {
+  if (fbdy[slot] == kRefOverflow && code != kRefOverflow) ref_overflow.erase(static_cast<Id>(slot));
+  fbdy[slot] = code;
+  if (code == kRefOverflow) ref_overflow[static_cast<Id>(slot)] = ref;
+}
 
 Id TetMesh::add_vertex(const Vec3& p, const SymMat3& m) {
   Id v;
@@ -168,7 +182,9 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
     for (int i = 0; i < 4; ++i) {
       const Id r = m.tadj[4 * t + i];
       if (r != kNoId && m.mark[r / 4] == s) continue;
-      cf.push_back({face_key(&m.tv[4 * t], i), r, m.fref[4 * t + i], m.fbdy[4 * t + i]});
+      const std::uint8_t code = m.fbdy[4 * t + i];
+      cf.push_back({face_key(&m.tv[4 * t], i), r,
+                    code == TetMesh::kRefOverflow ? m.face_ref(4 * t + i) : 0, code});
     }
   nf.clear();
   for (std::size_t k = 0; k < tets.size(); ++k)
@@ -243,6 +259,8 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
   for (const NewTet& nt : tets) {
     const Id t = alloc_tet(m);
     ids.push_back(t);
+    if (static_cast<std::size_t>(t) < m.quality.size())
+      m.quality[t] = std::numeric_limits<double>::quiet_NaN();
     for (int i = 0; i < 4; ++i) {
       m.tv[4 * t + i] = nt.v[i];
       m.vtet[nt.v[i]] = t;
@@ -253,11 +271,11 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
     const Id slot = 4 * ids[f.slot / 4] + f.slot % 4;
     if (f.partner >= 0) {
       m.tadj[slot] = 4 * ids[nf[f.partner].slot / 4] + nf[f.partner].slot % 4;
-      m.fbdy[slot] = 0, m.fref[slot] = 0;
+      m.set_face(slot, 0);
       continue;
     }
     const CavityFace& c = cf[f.cavity];
-    m.fbdy[slot] = c.bdy, m.fref[slot] = c.ref;
+    m.set_face(slot, c.bdy, c.ref);
     m.tadj[slot] = f.substituted ? kNoId : c.outer;
     if (!f.substituted && c.outer != kNoId) m.tadj[c.outer] = slot;
   }
@@ -285,7 +303,7 @@ std::string check_tet_mesh(const TetMesh& m) {
       if (!m.tet_alive(r / 4) || m.tadj[r] != s) return at + ": asymmetric neighbour";
       const FaceKey a = face_key(v, i), b = face_key(&m.tv[4 * (r / 4)], r % 4);
       if (!a.same(b) || a.parity == b.parity) return at + ": neighbour face mismatch";
-      if (m.fbdy[s] != m.fbdy[r] || (m.fbdy[s] && m.fref[s] != m.fref[r]))
+      if ((m.fbdy[s] != 0) != (m.fbdy[r] != 0) || (m.fbdy[s] && m.face_ref(s) != m.face_ref(r)))
         return at + ": listed face data differ between sides";
     }
   }

@@ -7,13 +7,16 @@
 // its face i is opposite vertex i, oriented outward as kTetFace[i]. A face slot is 4t + i.
 // tadj[4t + i] is the slot of the same face seen from the neighbour, or kNoId on the domain
 // boundary. fbdy[slot] != 0 marks a listed face (every domain-boundary face is listed; unlisted
-// input boundary faces get ref 0) and fref[slot] is its ref. Dead tets have tv[4t] == kNoId,
-// dead vertices vtet == kNoId.
+// input boundary faces get ref 0) and face_ref(slot) is its ref: one byte per face (memory,
+// issue #7), the index + 1 of the ref in a small table of the distinct refs, or kRefOverflow
+// for a ref beyond the table's 254 entries, kept in a map by slot. Dead tets have
+// tv[4t] == kNoId, dead vertices vtet == kNoId.
 //
 // Every change of the tets goes through replace_cavity(): a set of tets is replaced by new ones
 // that must fill exactly the same region (checked on the faces), which is how the operators
 // stay conforming.
 #include <cstdint>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -50,8 +53,12 @@ struct TetMesh {
   std::vector<Id> tv;    // 4 per tet
   std::vector<Id> tadj;  // 4 per tet: slot of the neighbour's copy of the face, or kNoId
   std::vector<std::int32_t> tref;
-  std::vector<std::int32_t> fref;  // 4 per tet: ref of a listed face
-  std::vector<std::uint8_t> fbdy;  // 4 per tet: 1 for a listed face
+  std::vector<std::uint8_t> fbdy;  // 4 per tet: 0 unlisted, else the ref code (see above)
+
+  // Refs of the listed faces: fbdy[slot] - 1 indexes ref_table; kRefOverflow: ref_overflow.
+  static constexpr std::uint8_t kRefOverflow = 255;
+  std::vector<std::int32_t> ref_table;
+  std::map<Id, std::int32_t> ref_overflow;
 
   std::vector<Id> free_tets, free_verts;
 
@@ -62,6 +69,13 @@ struct TetMesh {
   // Scratch marks for ball and shell walks (stamp per tet); not part of the mesh's state.
   mutable std::vector<std::uint32_t> mark;
   mutable std::uint32_t stamp = 0;
+  // Cache of each live tet's quality (ops3d.hpp cached_quality), NaN when unknown: cleared for
+  // the tets replace_cavity creates and by the vertex moves that are kept (move_vertex). Code
+  // that changes a vertex's position or metric any other way must clear it (quality.clear()).
+  mutable std::vector<double> quality;
+  // Scratch of the driver's edge enumeration (6 entries per tet), kept across its calls so that
+  // the pass does not allocate, fault in and zero it each time.
+  mutable std::vector<std::uint32_t> edge_scratch;
 
   std::size_t vertex_capacity() const { return xyz.size(); }
   std::size_t tet_capacity() const { return tref.size(); }
@@ -69,6 +83,17 @@ struct TetMesh {
   bool vert_alive(Id v) const { return vtet[v] != kNoId; }
   std::size_t num_live_tets() const { return tet_capacity() - free_tets.size(); }
   std::size_t num_live_vertices() const { return vertex_capacity() - free_verts.size(); }
+
+  /// The ref of the listed face at `slot` (fbdy[slot] != 0).
+  std::int32_t face_ref(std::size_t slot) const {
+    const std::uint8_t c = fbdy[slot];
+    return c == kRefOverflow ? ref_overflow.at(static_cast<Id>(slot)) : ref_table[c - 1];
+  }
+  /// The code of a listed face of ref `ref` (table entry added when new and room is left).
+  std::uint8_t ref_code(std::int32_t ref);
+  /// Sets the face at `slot`: unlisted (code 0), or listed with `code` (ref_code) and, for
+  /// kRefOverflow, the ref.
+  void set_face(std::size_t slot, std::uint8_t code, std::int32_t ref = 0);
 
   Id add_vertex(const Vec3& p, const SymMat3& m);
   void kill_vertex(Id v);

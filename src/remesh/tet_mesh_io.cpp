@@ -30,8 +30,8 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   const std::size_t rv = nv + nv / 8 + 16, rt = nt + nt / 8 + 16;
   m.xyz.reserve(rv), m.metric.reserve(rv), m.vref.reserve(rv), m.vtag.reserve(rv);
   m.vkind.reserve(rv), m.vplane.reserve(2 * rv), m.vtet.reserve(rv);
-  m.tv.reserve(4 * rt), m.tadj.reserve(4 * rt), m.fref.reserve(4 * rt), m.fbdy.reserve(4 * rt);
-  m.tref.reserve(rt), m.mark.reserve(rt);
+  m.tv.reserve(4 * rt), m.tadj.reserve(4 * rt), m.fbdy.reserve(4 * rt);
+  m.tref.reserve(rt), m.mark.reserve(rt), m.quality.reserve(rt);
   m.xyz.resize(nv);
   for (std::size_t v = 0; v < nv; ++v)
     m.xyz[v] = Vec3{{mesh.coords[3 * v], mesh.coords[3 * v + 1], mesh.coords[3 * v + 2]}};
@@ -49,9 +49,12 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   m.tref.assign(mesh.tet_ref.begin(), mesh.tet_ref.end());
   m.tref.resize(nt, 0);
   m.tadj.assign(4 * nt, kNoId);
-  m.fref.assign(4 * nt, 0);
   m.fbdy.assign(4 * nt, 0);
   std::map<std::array<Id, 3>, std::size_t> listed;
+  // Only a face whose three vertices are on listed triangles is looked up (most are interior).
+  std::vector<std::uint8_t> on_listed(nv, 0);
+  for (const Id v : mesh.triangles)
+    if (v >= 0 && static_cast<std::size_t>(v) < nv) on_listed[v] = 1;
   for (std::size_t f = 0; f < mesh.num_triangles(); ++f)
     listed.emplace(sorted3(mesh.triangles[3 * f], mesh.triangles[3 * f + 1],
                            mesh.triangles[3 * f + 2]), f);
@@ -69,12 +72,14 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
         while (j < 4 && std::find(v, v + 4, w[j]) != v + 4) ++j;  // n's vertex not in t
         m.tadj[4 * t + i] = 4 * n + j;
       }
-      const auto it = listed.find(sorted3(v[kTetFace[i][0]], v[kTetFace[i][1]], v[kTetFace[i][2]]));
+      const Id a = v[kTetFace[i][0]], b = v[kTetFace[i][1]], c = v[kTetFace[i][2]];
+      const auto it = on_listed[a] && on_listed[b] && on_listed[c] ? listed.find(sorted3(a, b, c))
+                                                                    : listed.end();
       if (it != listed.end()) {
-        m.fbdy[4 * t + i] = 1;
-        m.fref[4 * t + i] = mesh.tri_ref.empty() ? 0 : mesh.tri_ref[it->second];
+        const std::int32_t ref = mesh.tri_ref.empty() ? 0 : mesh.tri_ref[it->second];
+        m.set_face(4 * t + i, m.ref_code(ref), ref);
       } else if (n == kNoId) {
-        m.fbdy[4 * t + i] = 1;  // an unlisted boundary face: ref 0
+        m.set_face(4 * t + i, m.ref_code(0), 0);  // an unlisted boundary face: ref 0
       }
     }
   }
@@ -113,11 +118,11 @@ Mesh to_mesh(const TetMesh& m, std::span<const std::int32_t> edge_refs,
       if (r != kNoId && r < static_cast<Id>(s)) continue;  // interface: once
       const Id a = v[kTetFace[i][0]], b = v[kTetFace[i][1]], c = v[kTetFace[i][2]];
       out.triangles.insert(out.triangles.end(), {id[a], id[b], id[c]});
-      out.tri_ref.push_back(m.fref[s]);
+      out.tri_ref.push_back(m.face_ref(s));
       out.tri_tag.push_back(kTagNone);
       if (r != kNoId) continue;
       for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}})
-        edge_faces[{std::min(id[p], id[q]), std::max(id[p], id[q])}].push_back(m.fref[s]);
+        edge_faces[{std::min(id[p], id[q]), std::max(id[p], id[q])}].push_back(m.face_ref(s));
     }
   }
   for (const auto& [e, refs] : edge_faces) {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include "core/error.hpp"
@@ -139,6 +140,31 @@ TEST(Adapt3d, TakingOverTheInputGivesTheSameMesh) {
   EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
   EXPECT_EQ(a.mesh.tri_ref, b.mesh.tri_ref);
   EXPECT_EQ(a.metrics.size(), b.metrics.size());
+  // Taking over the metrics too (the CLI's call), with and without gradation (the full
+  // adjacency is only built for it), and on a mesh whose faces carry many distinct refs.
+  // (300 boundary triangles, each its own ref: more than the TetMesh's one-byte ref table.)
+  Mesh many = unit_cube(5);
+  for (std::size_t f = 0; f < many.num_triangles(); ++f) many.tri_ref[f] = 7 + static_cast<int>(f);
+  const std::vector<SymMat3> many_metrics = linear_metric(many, 0.05, 0.3);
+  for (const auto& [input, m, hgrad] : {std::tuple{&cube, &metrics, 0.0},
+                                        std::tuple{&cube, &metrics, 1.3},
+                                        std::tuple{static_cast<const Mesh*>(&many), &many_metrics, 0.0}}) {
+    o.hgrad = hgrad;
+    const Adapt3dResult c = adapt3d(*input, *m, o);
+    Mesh moved_mesh = *input;
+    std::vector<SymMat3> moved_metrics = *m;
+    const Adapt3dResult d = adapt3d(std::move(moved_mesh), std::move(moved_metrics), o);
+    EXPECT_GT(d.mesh.num_tets(), input->num_tets());
+    EXPECT_EQ(c.mesh.coords, d.mesh.coords);
+    EXPECT_EQ(c.mesh.tets, d.mesh.tets);
+    EXPECT_EQ(c.mesh.tet_ref, d.mesh.tet_ref);
+    EXPECT_EQ(c.mesh.triangles, d.mesh.triangles);
+    EXPECT_EQ(c.mesh.tri_ref, d.mesh.tri_ref);
+    EXPECT_EQ(c.mesh.edges, d.mesh.edges);
+    ASSERT_EQ(c.metrics.size(), d.metrics.size());
+    for (std::size_t v = 0; v < c.metrics.size(); ++v)
+      for (int k = 0; k < 6; ++k) EXPECT_EQ(c.metrics[v].c[k], d.metrics[v].c[k]);
+  }
 }
 
 TEST(Adapt3d, KeepSurfaceLeavesTheBoundaryAsGiven) {

@@ -224,9 +224,10 @@ TYPED_TEST(BackgroundTest, WalkIsShortAlongHilbertOrder) {
     hint = bg.locate(p, hint, &hilbert).simplex;
     bg.locate(p, kNoId, &gridded);
   }
-  // Mean steps: ~1 along the curve (about one simplex per query), ~1-2 from the grid cell.
+  // Mean steps: ~1 along the curve (about one simplex per query), ~1-2 from the grid cell in
+  // 2D, ~4 in 3D (cells of ~64 tetrahedra, memory).
   EXPECT_LT(static_cast<double>(hilbert.walk_steps) / count, 2.0);
-  EXPECT_LT(static_cast<double>(gridded.walk_steps) / count, 3.0);
+  EXPECT_LT(static_cast<double>(gridded.walk_steps) / count, D == 2 ? 3.0 : 4.5);
   EXPECT_EQ(hilbert.fallbacks + gridded.fallbacks, 0);
   // Random order hinted by the previous answer: hints beyond hint_reach() are replaced by the
   // grid start, so no walk crosses the mesh.
@@ -237,7 +238,7 @@ TYPED_TEST(BackgroundTest, WalkIsShortAlongHilbertOrder) {
     for (int a = 0; a < D; ++a) p[a] = pts[D * q + a];
     hint = bg.locate(p, hint, &scattered).simplex;
   }
-  EXPECT_LT(static_cast<double>(scattered.walk_steps) / count, 3.5);
+  EXPECT_LT(static_cast<double>(scattered.walk_steps) / count, D == 2 ? 3.5 : 4.5);
   EXPECT_EQ(scattered.fallbacks, 0);
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "mesh/fixtures.hpp"
 #include "metric/metric.hpp"
@@ -84,6 +85,14 @@ TEST(Sliver3d, SweepsRaiseTheWorstQualityAndKeepTheMeshValid) {
   EXPECT_GT(worst_quality(m), before + 0.05) << "from " << before;
   EXPECT_EQ(check_tet_mesh(m), "");
   EXPECT_NEAR(volume(m), 1.0, 1e-12);
+  // The quality cache the sweeps used is up to date after their swaps, moves and collapses.
+  std::size_t cached = 0;
+  for (std::size_t t = 0; t < m.tet_capacity() && t < m.quality.size(); ++t) {
+    if (!m.tet_alive(static_cast<Id>(t)) || std::isnan(m.quality[t])) continue;
+    ++cached;
+    EXPECT_EQ(m.quality[t], tet_quality(m, static_cast<Id>(t))) << "tet " << t;
+  }
+  EXPECT_GT(cached, m.num_live_tets() / 2);
   // Boundary vertices stayed on their planes (the cube's faces).
   for (std::size_t v = 0; v < m.vertex_capacity(); ++v) {
     if (!m.vert_alive(static_cast<Id>(v)) || m.vkind[v] == VertexKind::kInterior) continue;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 #include "mesh/check.hpp"
@@ -43,6 +44,48 @@ TEST(TetMesh, RoundTripsTheUnitCube) {
   EXPECT_EQ(in, out);
   // The 12 cube edges (faces of different refs meet) come back as ridge edges.
   EXPECT_EQ(back.num_edges(), 36u);
+}
+
+TEST(TetMesh, KeepsMoreDistinctFaceRefsThanItsOneByteTable) {
+  // 300 boundary triangles, each its own ref: 254 in the table, the rest in the overflow map.
+  Mesh cube = unit_cube(5);
+  for (std::size_t f = 0; f < cube.num_triangles(); ++f) cube.tri_ref[f] = 1000 + static_cast<int>(f);
+  TetMesh m = build_tet_mesh(cube, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()));
+  EXPECT_EQ(check_tet_mesh(m), "");
+  EXPECT_EQ(m.ref_table.size(), 254u);
+  EXPECT_EQ(m.ref_overflow.size(), 300u - 254u);
+  auto refs_of = [](const Mesh& mesh) {
+    std::map<std::array<Id, 3>, int> out;
+    for (std::size_t f = 0; f < mesh.num_triangles(); ++f) {
+      std::array<Id, 3> k{mesh.triangles[3 * f], mesh.triangles[3 * f + 1], mesh.triangles[3 * f + 2]};
+      std::sort(k.begin(), k.end());
+      out[k] = mesh.tri_ref[f];
+    }
+    return out;
+  };
+  EXPECT_EQ(refs_of(to_mesh(m, {})), refs_of(cube));
+  // Splitting every boundary edge of the mesh moves the refs (overflow ones too) to the halves.
+  std::vector<std::pair<Id, Id>> edges;
+  for (std::size_t f = 0; f < cube.num_triangles(); ++f)
+    for (int k = 0; k < 3; ++k)
+      edges.emplace_back(cube.triangles[3 * f + k], cube.triangles[3 * f + (k + 1) % 3]);
+  int splits = 0;
+  for (const auto& [a, b] : edges) {
+    if (find_edge_tet(m, a, b) == kNoId) continue;
+    NewVertex3 nv;
+    nv.p = 0.5 * (m.xyz[a] + m.xyz[b]);
+    nv.metric = SymMat3::identity();
+    Id x = kNoId;
+    splits += split_edge(m, a, b, nv, 0.0, &x) == Outcome::kApplied;
+  }
+  EXPECT_GT(splits, 300);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  const Mesh back = to_mesh(m, {});
+  EXPECT_EQ(back.num_triangles(), 4 * cube.num_triangles());
+  std::map<int, int> count;
+  for (const int r : back.tri_ref) ++count[r];
+  ASSERT_EQ(count.size(), 300u);
+  for (const auto& [r, c] : count) EXPECT_EQ(c, 4) << r;
 }
 
 TEST(TetMesh, BallsAndShells) {
