@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "mesh/distance.hpp"
 #include "metric/metric.hpp"
+#include "remesh/simplex_geometry.hpp"
 
 namespace riemesh {
 
@@ -87,19 +88,13 @@ FieldPoints3 field_points3d(const Mesh& volume, std::span<const double> sizes) {
       if (!in_box) continue;
       Vec3 x[4];
       for (int i = 0; i < 4; ++i) x[i] = vertex(volume.tets[4 * k + i]);
-      const double vol = dot(cross(x[1] - x[0], x[2] - x[0]), x[3] - x[0]);
+      const double vol = simplex::signed_volume(x);
       if (!(vol > 0.0)) continue;
       double w[4];
-      bool inside = true;
-      for (int i = 0; i < 4 && inside; ++i) {
-        Vec3 y[4] = {x[0], x[1], x[2], x[3]};
-        y[i] = p;
-        w[i] = dot(cross(y[1] - y[0], y[2] - y[0]), y[3] - y[0]) / vol;
-        inside = w[i] >= 0.0;
-      }
-      if (!inside) continue;
+      simplex::sub_volumes(x, p, w);
+      if (*std::min_element(w, w + 4) < 0.0) continue;
       double h = 0.0;
-      for (int i = 0; i < 4; ++i) h += w[i] * sizes[static_cast<std::size_t>(volume.tets[4 * k + i])];
+      for (int i = 0; i < 4; ++i) h += w[i] / vol * sizes[static_cast<std::size_t>(volume.tets[4 * k + i])];
       return h;
     }
     return 0.0;
