@@ -38,6 +38,7 @@ constexpr double kBad = 0.45;                      // tets below this are remove
 constexpr double kBadMaxLength = 1.6;               // ... creating edges no longer than this
 constexpr double kVeryShort = 0.6;                 // shorter edges go with those limits too
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
+constexpr double kLengthenFloor = 0.55;            // lengthening moves keep the ball above this
 
 struct Candidate {
   double length;
@@ -214,8 +215,58 @@ long bad_tet_sweep(TetMesh& m, PassStats& st) {
   return done;
 }
 
-/// Edges shorter than kVeryShort: collapsed with the relaxed limits of the bad tets.
-long short_edge_sweep(TetMesh& m, PassStats& st) {
+/// Moves v (an end of the short edge to `other`) toward its smoothing target, or away from
+/// `other` to unit length, at full, half or quarter step, when that lengthens its shortest edge
+/// without making its longest longer than kSwapMaxLength (or than it was) nor its ball's worst
+/// quality lower than min(before, kLengthenFloor): for short edges whose collapse would create
+/// long edges (issue #7: the shortest edge of polar2-3d, 0.45, left so by the sliver
+/// optimiser's moves).
+bool lengthen(Remesh3dContext& ctx, Id v, Id other, MoveCache& cache, std::vector<Id>& nbrs) {
+  TetMesh& m = ctx.mesh();
+  NewVertex3 target;
+  if (!ctx.smoothing_target(v, target, &cache.ball)) return false;
+  fill_move_cache(m, v, cache);
+  const double l = edge_length(m, v, other);
+  if (!(l > 0.0)) return false;
+  Vec3 away = m.xyz[other] + (1.0 / l) * (m.xyz[v] - m.xyz[other]);
+  if (!ctx.constrain(v, away)) return false;
+  nbrs.clear();
+  for (const Id t : cache.ball)
+    for (int i = 0; i < 4; ++i)
+      if (m.tv[4 * t + i] != v) nbrs.push_back(m.tv[4 * t + i]);
+  std::sort(nbrs.begin(), nbrs.end());
+  nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
+  const auto range = [&](const Vec3& p, const SymMat3& mp) {
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    for (const Id x : nbrs) {
+      const double lx = edge_length_geometric(mp, m.metric[x], m.xyz[x] - p);
+      lo = std::min(lo, lx), hi = std::max(hi, lx);
+    }
+    return std::pair{lo, hi};
+  };
+  const Vec3 from = m.xyz[v];
+  const auto [lo0, hi0] = range(from, m.metric[v]);
+  for (const Vec3& to : {target.p, away})
+    for (const double f : {1.0, 0.5, 0.25}) {
+      Vec3 p = from + f * (to - from);
+      if (f != 1.0 && !ctx.constrain(v, p)) return false;
+      const SymMat3 mp = ctx.metric_for(p, v);
+      const auto [lo, hi] = range(p, mp);
+      if (!(lo > lo0) || hi > std::max(hi0, kSwapMaxLength)) continue;
+      if (move_vertex(m, v, p, mp, &cache, kLengthenFloor) == Outcome::kApplied) {
+        ctx.inherit_hint(v);
+        return true;
+      }
+    }
+  return false;
+}
+
+/// Edges shorter than kVeryShort: collapsed with the relaxed limits of the bad tets, or else
+/// lengthened by moving an end (lengthen). Returns the collapses (moves go to st.moves).
+long short_edge_sweep(Remesh3dContext& ctx, PassStats& st) {
+  TetMesh& m = ctx.mesh();
+  MoveCache cache;
+  std::vector<Id> nbrs;
   long done = 0;
   const auto is_very_short = [](double l) { return l < kVeryShort; };
   for (const ShortEdge& c : candidates<ShortEdge>(m, is_very_short, false)) {
@@ -227,8 +278,18 @@ long short_edge_sweep(TetMesh& m, PassStats& st) {
         applied = true;
         break;
       }
-    if (applied) ++done;
-    else ++st.rejected;
+    if (applied) {
+      ++done;
+      continue;
+    }
+    for (const auto& [v, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}}) {
+      cache.v = kNoId;
+      if (lengthen(ctx, v, other, cache, nbrs)) {
+        ++st.moves, applied = true;
+        break;
+      }
+    }
+    if (!applied) ++st.rejected;
   }
   return done;
 }
@@ -345,7 +406,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
       if (options.move) st.moves += smooth_sweep(*ctx, st);
     }
     // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
-    if (options.insert) st.collapses += short_edge_sweep(m, st);
+    if (options.insert) st.collapses += short_edge_sweep(*ctx, st);
     for (int k = 0; k < 2; ++k) {
       if (options.insert) st.collapses += bad_tet_sweep(m, st);
       if (options.swap) st.swaps += swap_sweep(m, st);
@@ -354,6 +415,8 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     SliverLimits sl;
     sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
     sliver_sweeps(*ctx, sl, st);
+    // Again: the sliver optimiser's moves do not look at lengths.
+    if (options.insert) st.collapses += short_edge_sweep(*ctx, st);
     summarize(m, st);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);

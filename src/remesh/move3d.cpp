@@ -1,4 +1,4 @@
-// Vertex relocation: accepted when the ball's worst quality improves.
+// Vertex relocation: accepted when the ball's worst quality improves (or stays above a floor).
 #include <algorithm>
 #include <limits>
 
@@ -16,7 +16,8 @@ void fill_move_cache(const TetMesh& m, Id v, MoveCache& c) {
   c.v = v;
 }
 
-Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, MoveCache* cache) {
+Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, MoveCache* cache,
+                    double floor) {
   thread_local MoveCache local;
   if (m.vkind[v] == VertexKind::kFixed) return Outcome::kRejectedTopology;
   MoveCache& c = cache ? *cache : local;
@@ -29,7 +30,8 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
   const std::size_t first = c.first < c.ball.size() ? c.first : 0;
   const auto at = [first](std::size_t k) { return k == 0 ? first : (k <= first ? k - 1 : k); };
   const std::vector<Id>& ball = c.ball;
-  const double old_worst = c.worst;
+  // Accepted above this: the old worst (capped at 1), or the floor when lower.
+  const double bar = std::min(c.worst, floor);
   const Vec3 old_p = m.xyz[v];
   const SymMat3 old_m = m.metric[v];
   m.xyz[v] = p, m.metric[v] = metric;
@@ -38,10 +40,10 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
   for (; k < ball.size(); ++k) {
     const double q = tet_quality(m, ball[at(k)]);
     if (q < worst) worst = q, worst_at = at(k);
-    if (!(worst > old_worst)) break;  // refused: the rest only tells geometry from quality
+    if (!(worst > bar)) break;  // refused: the rest only tells geometry from quality
   }
   c.first = worst_at;
-  if (worst > old_worst) {
+  if (worst > bar) {
     if (on_curved_boundary(m.vkind[v])) {
       m.xyz[v] = old_p;  // the boundary checks compare the old and new positions
       const bool ok = curved_boundary_ok(m, ball, v, kNoId, p);

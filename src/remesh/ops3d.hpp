@@ -99,8 +99,9 @@ Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length, Id
 Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length);
 
 /// Moves v to p (with its new metric) when every tet of its ball stays valid and the ball's
-/// worst quality improves. Fixed vertices never move; keeping a boundary vertex on its plane or
-/// ridge line is the caller's job (p is taken as given).
+/// worst quality improves or stays at least `floor` (default: must improve). Fixed vertices
+/// never move; keeping a boundary vertex on its plane or ridge line is the caller's job (p is
+/// taken as given).
 ///
 /// `cache`, when given, keeps v's ball and its worst quality (capped at 1) across calls on the
 /// same vertex (several candidate positions): used when cache->v == v, else filled. The caller
@@ -115,7 +116,7 @@ struct MoveCache {
   std::size_t first = 0;
 };
 Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric,
-                    MoveCache* cache = nullptr);
+                    MoveCache* cache = nullptr, double floor = 2.0);
 
 /// Fills c for v from c.ball, which must hold v's ball (collect_ball): worst quality and first.
 void fill_move_cache(const TetMesh& m, Id v, MoveCache& c);

@@ -197,3 +197,20 @@ TEST(TetOps, MoveImprovesOrRefuses) {
   EXPECT_EQ(move_vertex(m, 13, Vec3{{0.5, 0.5, 0.55}}, m.metric[13]), Outcome::kRejectedTopology);
   EXPECT_EQ(check_tet_mesh(m), "");
 }
+
+TEST(TetOps, MoveWithAFloorMayLowerTheWorstQualityDownToIt) {
+  TetMesh m = cube_tet_mesh(2, 0.5);
+  m.vkind.assign(m.vertex_capacity(), VertexKind::kFixed);
+  m.vkind[13] = VertexKind::kInterior;
+  const Vec3 centre = m.xyz[13], off{{0.6, 0.5, 0.5}};
+  EXPECT_EQ(move_vertex(m, 13, off, m.metric[13]), Outcome::kRejectedQuality);  // worse
+  EXPECT_EQ(move_vertex(m, 13, off, m.metric[13], nullptr, 0.999), Outcome::kRejectedQuality);
+  EXPECT_EQ(m.xyz[13], centre);
+  EXPECT_EQ(move_vertex(m, 13, off, m.metric[13], nullptr, 0.1), Outcome::kApplied);
+  EXPECT_EQ(m.xyz[13], off);
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t) EXPECT_GT(tet_quality(m, static_cast<Id>(t)), 0.1);
+  // A floor never admits an invalid ball.
+  EXPECT_EQ(move_vertex(m, 13, Vec3{{1.5, 0.5, 0.5}}, m.metric[13], nullptr, 0.0),
+            Outcome::kRejectedGeometry);
+  EXPECT_EQ(check_tet_mesh(m), "");
+}
