@@ -242,6 +242,40 @@ void BackgroundMesh<D>::build_grid() {
     }
     for (int a = 0; a < D && ++k[a] == grid_.n[a]; ++a) k[a] = 0;
   }
+  build_face_grid();
+}
+
+template <int D>
+void BackgroundMesh<D>::build_face_grid() {
+  const std::size_t cells = grid_.start.size();
+  grid_.face_offsets.assign(cells + 1, 0);
+  auto face_box = [&](std::size_t slot, int c_lo[D], int c_hi[D]) {
+    const std::size_t s = slot / kVerts, i = slot % kVerts;
+    const Vec<D>& x0 = coords_[simplices_[kVerts * s + (i + 1) % kVerts]];
+    Vec<D> b_lo = x0, b_hi = x0;
+    for (std::size_t j = 2; j < kVerts; ++j) {
+      const Vec<D>& x = coords_[simplices_[kVerts * s + (i + j) % kVerts]];
+      for (int a = 0; a < D; ++a)
+        b_lo[a] = std::min(b_lo[a], x[a]), b_hi[a] = std::max(b_hi[a], x[a]);
+    }
+    cell_of(b_lo, c_lo);
+    cell_of(b_hi, c_hi);
+  };
+  int c_lo[D], c_hi[D];
+  for (std::size_t slot = 0; slot < elem2elem_.size(); ++slot) {
+    if (elem2elem_[slot] != kNoId) continue;
+    face_box(slot, c_lo, c_hi);
+    for_box<D>(c_lo, c_hi, grid_.n, [&](std::size_t c) { ++grid_.face_offsets[c + 1]; });
+  }
+  for (std::size_t c = 0; c < cells; ++c) grid_.face_offsets[c + 1] += grid_.face_offsets[c];
+  grid_.faces.resize(grid_.face_offsets[cells]);
+  std::vector<std::size_t> fill(grid_.face_offsets.begin(), grid_.face_offsets.end() - 1);
+  for (std::size_t slot = 0; slot < elem2elem_.size(); ++slot) {
+    if (elem2elem_[slot] != kNoId) continue;
+    face_box(slot, c_lo, c_hi);
+    for_box<D>(c_lo, c_hi, grid_.n,
+               [&](std::size_t c) { grid_.faces[fill[c]++] = static_cast<Id>(slot); });
+  }
 }
 
 template <int D>

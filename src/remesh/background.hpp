@@ -12,8 +12,8 @@
 // walk across the mesh). When the walk leaves the domain (non-convex domain, hole, point
 // outside) or reaches its step cap, a robust search takes over: the simplices overlapping p's
 // cell are tested for containment, and if none contains p, rings of cells are searched for the
-// closest simplex (exact, by the distance lower bound of each ring; the last rings cover every
-// simplex).
+// closest boundary face (exact, by the distance lower bound of each ring; the last rings cover
+// every face): the closest point of the domain to a point outside it is on its boundary.
 // Predicates are plain doubles with a relative tolerance (kBaryTolerance), which is enough here:
 // any simplex returned contains p up to that tolerance, and all choices are deterministic.
 //
@@ -122,6 +122,11 @@ class BackgroundMesh {
     std::vector<std::size_t> offsets;
     std::vector<Id> ids;
     std::vector<Id> start;  // the listed simplex with centroid nearest the cell centre, or kNoId
+    // Boundary faces (slot kVerts·s + i: face i of simplex s, no neighbour) whose bounding box
+    // overlaps the cell (CSR, increasing slots): the closest point of the domain to a point
+    // outside it lies on one of them (closest_simplex).
+    std::vector<std::size_t> face_offsets;
+    std::vector<Id> faces;
   };
 
   void build(std::span<const double> coords, std::span<const Id> simplices,
@@ -134,7 +139,11 @@ class BackgroundMesh {
   /// The walk: the simplex containing p, or kNoId when it left the domain or hit the cap.
   Id walk(const Vec<D>& p, Id start, double b[kVerts], long& steps) const;
   Location<D> robust_search(const Vec<D>& p) const;
-  Location<D> closest_simplex(const Vec<D>& p) const;
+  /// The simplex closest to p (outside every simplex listed in its cell): the closest boundary
+  /// face, or `candidate` (a simplex of p's cell, kNoId: none) when it is at least as close — a
+  /// point inside the domain that the containment tolerance missed.
+  Location<D> closest_simplex(const Vec<D>& p, Id candidate = kNoId) const;
+  void build_face_grid();
   void cell_of(const Vec<D>& p, int c[D]) const;
   std::size_t cell_index(const int c[D]) const;
 

@@ -1,5 +1,5 @@
 // Background mesh: point location (visibility walk, then grid containment scan, then the exact
-// closest simplex by rings of grid cells). See background.hpp for the strategy.
+// closest boundary face by rings of grid cells). See background.hpp for the strategy.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -143,27 +143,50 @@ Location<D> BackgroundMesh<D>::locate(const Vec<D>& p, Id hint, LocateStats* sta
 template <int D>
 Location<D> BackgroundMesh<D>::robust_search(const Vec<D>& p) const {
   // Any simplex containing p overlaps p's cell (its bounding box holds p, and cell_of is
-  // monotone); the first in id order wins.
+  // monotone); the first in id order wins. Else the one nearest to containing p (largest
+  // smallest coordinate) is the candidate handed to closest_simplex.
   int c[D];
   cell_of(p, c);
   const std::size_t cell = cell_index(c);
   double b[kVerts];
+  Id candidate = kNoId;
+  double candidate_min = -std::numeric_limits<double>::infinity();
   for (std::size_t k = grid_.offsets[cell]; k < grid_.offsets[cell + 1]; ++k) {
     const Id s = grid_.ids[k];
     barycentric(s, p, b);
-    if (b[argmin<kVerts>(b)] >= -kBaryTolerance) {
+    const double lowest = b[argmin<kVerts>(b)];
+    if (lowest >= -kBaryTolerance) {
       Location<D> loc;
       loc.simplex = s;
       loc.inside = true;
       clamp_bary<kVerts>(b, loc.bary);
       return loc;
     }
+    if (lowest > candidate_min) candidate_min = lowest, candidate = s;
   }
-  return closest_simplex(p);
+  return closest_simplex(p, candidate);
 }
 
+namespace {
+
+/// The point of facet x (D vertices: a segment in 2D, a triangle in 3D) closest to p, as weights
+/// w of its vertices, and the squared distance.
+inline double closest_on_facet(const Vec2 x[2], const Vec2& p, double w[2]) {
+  const Vec2 d = x[1] - x[0];
+  const double dd = dot(d, d);
+  const double t = dd > 0.0 ? std::clamp(dot(p - x[0], d) / dd, 0.0, 1.0) : 0.0;
+  w[0] = 1.0 - t, w[1] = t;
+  const Vec2 q = w[0] * x[0] + w[1] * x[1];
+  return dot(p - q, p - q);
+}
+inline double closest_on_facet(const Vec3 x[3], const Vec3& p, double w[3]) {
+  return simplex::closest_on_triangle<3>(p, x[0], x[1], x[2], w);
+}
+
+}  // namespace
+
 template <int D>
-Location<D> BackgroundMesh<D>::closest_simplex(const Vec<D>& p) const {
+Location<D> BackgroundMesh<D>::closest_simplex(const Vec<D>& p, Id candidate) const {
   int c0[D];
   cell_of(p, c0);
   // Cells at ring r + 1 are at least r·h from the point of the grid box closest to p, hence from
@@ -176,22 +199,33 @@ Location<D> BackgroundMesh<D>::closest_simplex(const Vec<D>& p) const {
   }
   Location<D> best;
   double best_d2 = std::numeric_limits<double>::infinity();
+  if (candidate != kNoId) {
+    double w[kVerts];
+    Vec<D> x[kVerts];
+    for (int i = 0; i < kVerts; ++i) x[i] = coords_[simplices_[kVerts * candidate + i]];
+    best_d2 = simplex::closest_in_simplex(x, p, w);
+    best.simplex = candidate;
+    clamp_bary<kVerts>(w, best.bary);
+  }
   auto visit = [&](const int q[D]) {
     const std::size_t cell = cell_index(q);
-    for (std::size_t k = grid_.offsets[cell]; k < grid_.offsets[cell + 1]; ++k) {
-      const Id s = grid_.ids[k];
-      double w[kVerts];
-      barycentric(s, p, w);
-      double d2 = 0.0;
-      if (w[argmin<kVerts>(w)] < 0.0) {
-        Vec<D> x[kVerts];
-        for (int i = 0; i < kVerts; ++i) x[i] = coords_[simplices_[kVerts * s + i]];
-        d2 = simplex::closest_in_simplex(x, p, w);
+    for (std::size_t k = grid_.face_offsets[cell]; k < grid_.face_offsets[cell + 1]; ++k) {
+      const std::size_t slot = static_cast<std::size_t>(grid_.faces[k]);
+      const std::size_t s = slot / kVerts, i = slot % kVerts;
+      Vec<D> x[D];
+      int local[D];
+      for (int j = 0; j < D; ++j) {
+        local[j] = static_cast<int>((i + 1 + j) % kVerts);
+        x[j] = coords_[simplices_[kVerts * s + local[j]]];
       }
-      if (d2 < best_d2 || (d2 == best_d2 && s < best.simplex)) {
+      double w[D];
+      const double d2 = closest_on_facet(x, p, w);
+      if (d2 < best_d2 || (d2 == best_d2 && static_cast<Id>(s) < best.simplex)) {
         best_d2 = d2;
-        best.simplex = s;
-        clamp_bary<kVerts>(w, best.bary);
+        best.simplex = static_cast<Id>(s);
+        double b[kVerts]{};
+        for (int j = 0; j < D; ++j) b[local[j]] = w[j];
+        clamp_bary<kVerts>(b, best.bary);
       }
     }
   };
