@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "core/predicates.hpp"
+#include "generate/filtered_predicates2d.hpp"
 #include "mesh/hilbert.hpp"
 
 namespace riemesh {
@@ -100,7 +100,7 @@ class Builder {
         const int e = (k + static_cast<int>(steps_++ % 3)) % 3;  // rotate the first edge tried
         if (e == from) continue;
         const Id a = t_.tri[3 * t + (e + 1) % 3], b = t_.tri[3 * t + (e + 2) % 3];
-        if (orient2d(point(a), point(b), p) < 0) {
+        if (detail::orient2d_sign(point(a), point(b), p) < 0) {
           cross = e;
           break;
         }
@@ -121,11 +121,11 @@ class Builder {
     const double* c = point(v[0]);
     for (int k = 0; k < 4; ++k) {
       const Id* w = &t_.tri[3 * last_];
-      if (orient2d(c, point(w[2]), p) >= 0) {  // p beyond edge (v, b): turn counter-clockwise
+      if (detail::orient2d_sign(c, point(w[2]), p) >= 0) {  // p beyond edge (v, b): turn ccw
         const Id h = t_.nbr[3 * last_ + 1];
         if (h == kNoId) return;
         last_ = tri_of(h);
-      } else if (orient2d(c, point(w[1]), p) < 0) {  // before edge (v, a): turn clockwise
+      } else if (detail::orient2d_sign(c, point(w[1]), p) < 0) {  // before edge (v, a): turn cw
         const Id h = t_.nbr[3 * last_ + 2];
         if (h == kNoId) return;
         last_ = tri_of(h);
@@ -137,7 +137,7 @@ class Builder {
 
   bool in_conflict(Id t, const double* p) const {
     const Id* v = &t_.tri[3 * t];
-    return incircle(point(v[0]), point(v[1]), point(v[2]), p) > 0;
+    return detail::incircle_sign(point(v[0]), point(v[1]), point(v[2]), p) > 0;
   }
 
   /// The triangles whose circumcircle contains p strictly, connected to t (which contains p), and
