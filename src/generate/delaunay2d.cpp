@@ -31,18 +31,24 @@ struct BoundaryEdge {
   Id a, b, outside;
 };
 
+/// A triangle of the cavity search: the next edge slot to look across and how many are left.
+struct Frame {
+  Id t;
+  int edge, left;
+};
+
+inline int next_slot(int e) { return e == 2 ? 0 : e + 1; }
+inline int prev_slot(int e) { return e == 0 ? 2 : e - 1; }
+
 /// Bowyer–Watson insertion into a Triangulation2d, with scratch arrays owned by the builder.
 class Builder {
  public:
   explicit Builder(Triangulation2d& t) : t_(t) {
-    const std::size_t nv = t.xy.size() / 2;
-    fan_.assign(nv, kNoId);
     // Each insertion adds two triangles to the super-triangle: the arrays are sized once for the
     // most there can be and trimmed by finish() (no per-triangle growth in the inner loop).
-    const std::size_t most = 2 * nv + 1;
+    const std::size_t most = 2 * (t.xy.size() / 2) + 1;
     t_.tri.resize(3 * most);
     t_.nbr.resize(3 * most);
-    mark_.assign(most, 0);
   }
 
   /// The super-triangle as the first triangle.
@@ -68,7 +74,7 @@ class Builder {
     // conflict with no triangle (empty circles), so it always takes the walk and is caught below.
     turn_towards(p);
     if (in_conflict(last_, p)) {
-      find_cavity(last_, p, v);
+      find_cavity(last_, p);
       fill_cavity(v);
       return true;
     }
@@ -81,7 +87,7 @@ class Builder {
         return false;
       }
     }
-    find_cavity(t, p, v);
+    find_cavity(t, p);
     fill_cavity(v);
     return true;
   }
@@ -140,71 +146,70 @@ class Builder {
     return detail::incircle_sign(point(v[0]), point(v[1]), point(v[2]), p) > 0;
   }
 
-  /// The triangles whose circumcircle contains p strictly, connected to t (which contains p), and
-  /// their boundary. Marks: 2v+1 = in the cavity, 2v+2 = tested and outside.
-  void find_cavity(Id t, const double* p, Id v) {
-    const std::uint32_t in = 2 * static_cast<std::uint32_t>(v) + 1, out = in + 1;
+  /// The triangles whose circumcircle contains p strictly, connected to t (which is one of them),
+  /// and their boundary edges in counter-clockwise order. Depth-first, each triangle's edges in
+  /// counter-clockwise order from the one it was entered by, so that a neighbour's boundary
+  /// replaces the shared edge in sequence. No marks are needed: the cavity of a point in a
+  /// Delaunay triangulation is a disk with all its vertices on its boundary (they all join the
+  /// point afterwards), so its triangles' adjacency is a tree and each is reached once. (A
+  /// triangle outside may be tested twice, from two cavity triangles; the answer is the same.)
+  void find_cavity(Id t, const double* p) {
     cavity_.clear();
     boundary_.clear();
     cavity_.push_back(t);
-    mark_[t] = in;
-    for (std::size_t k = 0; k < cavity_.size(); ++k) {
-      const Id c = cavity_[k];
-      for (int e = 0; e < 3; ++e) {
-        const Id h = t_.nbr[3 * c + e];
-        if (h != kNoId) {
-          const Id n = tri_of(h);
-          if (mark_[n] == in) continue;
-          if (mark_[n] != out) {
-            if (in_conflict(n, p)) {
-              mark_[n] = in;
-              cavity_.push_back(n);
-              continue;
-            }
-            mark_[n] = out;
-          }
-        }
-        boundary_.push_back({t_.tri[3 * c + (e + 1) % 3], t_.tri[3 * c + (e + 2) % 3], h});
+    stack_.push_back({t, 0, 3});
+    while (!stack_.empty()) {
+      Frame& f = stack_.back();
+      if (f.left == 0) {
+        stack_.pop_back();
+        continue;
       }
+      const Id c = f.t;
+      const int e = f.edge;
+      f.edge = next_slot(e);
+      --f.left;
+      const Id h = t_.nbr[3 * c + e];
+      if (h != kNoId) {
+        const Id n = tri_of(h);
+        if (in_conflict(n, p)) {
+          cavity_.push_back(n);
+          stack_.push_back({n, next_slot(slot_of(h)), 2});
+          continue;
+        }
+      }
+      boundary_.push_back({t_.tri[3 * c + next_slot(e)], t_.tri[3 * c + prev_slot(e)], h});
     }
   }
 
   /// Replaces the cavity by the fan (v, a, b) over its boundary edges a → b, reusing the cavity's
-  /// triangle ids first. The fan triangle starting at a is remembered in fan_[a] to link the fan.
+  /// triangle ids first. Consecutive boundary edges make consecutive fan triangles: across (b, v)
+  /// from the k-th is the (k + 1)-th's edge (v, a), opposite its vertex b.
   void fill_cavity(Id v) {
     const std::size_t nb = boundary_.size();
+    RIEMESH_CHECK(nb == cavity_.size() + 2);  // a disk with every vertex on its boundary
+    new_.assign(cavity_.begin(), cavity_.end());
+    for (std::size_t k = cavity_.size(); k < nb; ++k) {
+      RIEMESH_CHECK(3 * (num_triangles_ + 1) <= t_.tri.size());
+      new_.push_back(static_cast<Id>(num_triangles_++));
+    }
+    Id prev = new_[nb - 1];
     for (std::size_t k = 0; k < nb; ++k) {
-      Id t;
-      if (k < cavity_.size()) {
-        t = cavity_[k];
-      } else {
-        RIEMESH_CHECK(3 * (num_triangles_ + 1) <= t_.tri.size());
-        t = static_cast<Id>(num_triangles_++);
-      }
+      const Id t = new_[k], next = new_[k + 1 == nb ? 0 : k + 1];
       const BoundaryEdge& be = boundary_[k];
       Id* tv = &t_.tri[3 * t];
       tv[0] = v, tv[1] = be.a, tv[2] = be.b;
-      t_.nbr[3 * t] = be.outside;
+      Id* tn = &t_.nbr[3 * t];
+      tn[0] = be.outside, tn[1] = 3 * next + 2, tn[2] = 3 * prev + 1;
       if (be.outside != kNoId) t_.nbr[be.outside] = 3 * t;
-      fan_[be.a] = t;
-      new_.push_back(t);
+      prev = t;
     }
-    // (v, a, b): across (b, v) is the fan triangle starting at b, across its edge (v, b), which is
-    // opposite its third vertex.
-    for (const Id t : new_) {
-      const Id s = fan_[t_.tri[3 * t + 2]];
-      t_.nbr[3 * t + 1] = 3 * s + 2;
-      t_.nbr[3 * s + 2] = 3 * t + 1;
-    }
-    last_ = new_.back();
-    new_.clear();
+    last_ = new_[nb - 1];
   }
 
   Triangulation2d& t_;
-  std::vector<Id> fan_;             // per vertex: the fan triangle starting there (scratch)
-  std::vector<std::uint32_t> mark_;  // per triangle: cavity stamps (points < 2^31)
   std::vector<Id> cavity_, new_;
   std::vector<BoundaryEdge> boundary_;
+  std::vector<Frame> stack_;
   Id last_ = 0;
   std::size_t num_triangles_ = 0;
   std::uint64_t steps_ = 0;
