@@ -169,27 +169,30 @@ class Builder {
     cavity_.clear();
     boundary_.clear();
     cavity_.push_back(t);
-    stack_.push_back({t, 0, 3});
-    while (!stack_.empty()) {
-      Frame& f = stack_.back();
+    // The current triangle's frame stays in registers; a frame is stacked only when a triangle
+    // still has edges to look across after descending into a neighbour.
+    Frame f{t, 0, 3};
+    for (;;) {
       if (f.left == 0) {
+        if (stack_.empty()) return;
+        f = stack_.back();
         stack_.pop_back();
         continue;
       }
-      const Id c = f.t;
       const int e = f.edge;
+      const Id h = t_.nbr[3 * f.t + e];
       f.edge = next_slot(e);
       --f.left;
-      const Id h = t_.nbr[3 * c + e];
       if (h != kNoId) {
         const Id n = tri_of(h);
         if (in_conflict(n, p)) {
           cavity_.push_back(n);
-          stack_.push_back({n, next_slot(slot_of(h)), 2});
+          if (f.left > 0) stack_.push_back(f);
+          f = {n, next_slot(slot_of(h)), 2};
           continue;
         }
       }
-      boundary_.push_back({t_.tri[3 * c + next_slot(e)], t_.tri[3 * c + prev_slot(e)], h});
+      boundary_.push_back({t_.tri[3 * f.t + next_slot(e)], t_.tri[3 * f.t + prev_slot(e)], h});
     }
   }
 
