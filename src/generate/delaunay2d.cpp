@@ -187,6 +187,8 @@ class Builder {
         const Id n = tri_of(h);
         if (in_conflict(n, p)) {
           cavity_.push_back(n);
+          // Never fails with exact predicates (a tree); bounds the search if the theory is broken.
+          RIEMESH_CHECK(cavity_.size() <= num_triangles_);
           if (f.left > 0) stack_.push_back(f);
           f = {n, next_slot(slot_of(h)), 2};
           continue;
@@ -203,7 +205,8 @@ class Builder {
     const std::size_t nb = boundary_.size();
     RIEMESH_CHECK(nb == cavity_.size() + 2);  // a disk with every vertex on its boundary
     new_.assign(cavity_.begin(), cavity_.end());
-    for (std::size_t k = cavity_.size(); k < nb; ++k) new_.push_back(static_cast<Id>(num_triangles_++));
+    for (std::size_t k = cavity_.size(); k < nb; ++k)
+      new_.push_back(static_cast<Id>(num_triangles_++));
     if (3 * num_triangles_ > t_.tri.size()) grow();
     Id prev = new_[nb - 1];
     for (std::size_t k = 0; k < nb; ++k) {
@@ -222,8 +225,8 @@ class Builder {
   /// Makes room for num_triangles_ triangles (within the reserved capacity).
   void grow() {
     constexpr std::size_t kChunk = 3 * 4096;  // 48 KB per array
-    const std::size_t size = std::min(std::max(3 * num_triangles_, t_.tri.size() + kChunk),
-                                      t_.tri.capacity());
+    const std::size_t size =
+        std::min(std::max(3 * num_triangles_, t_.tri.size() + kChunk), t_.tri.capacity());
     RIEMESH_CHECK(3 * num_triangles_ <= size);
     t_.tri.resize(size);
     t_.nbr.resize(size);
@@ -305,9 +308,10 @@ Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
   if (order == InsertionOrder::kAsGiven) {
     for (Id v = 0; v < n; ++v) insert(v);
   } else {
-    const std::vector<Id> sequence = order == InsertionOrder::kBrio
-                                         ? brio_order(xy)
-                                         : hilbert_order(std::vector<double>(xy.begin(), xy.end()), 2);
+    const std::vector<Id> sequence =
+        order == InsertionOrder::kBrio
+            ? brio_order(xy)
+            : hilbert_order(std::vector<double>(xy.begin(), xy.end()), 2);
     for (const Id v : sequence) insert(v);
   }
   builder.finish();
@@ -318,7 +322,8 @@ std::vector<Id> delaunay_triangles(const Triangulation2d& t) {
   std::vector<Id> out;
   for (std::size_t k = 0; k < t.num_triangles(); ++k) {
     const Id* v = &t.tri[3 * k];
-    if (!t.is_super(v[0]) && !t.is_super(v[1]) && !t.is_super(v[2])) out.insert(out.end(), v, v + 3);
+    if (!t.is_super(v[0]) && !t.is_super(v[1]) && !t.is_super(v[2]))
+      out.insert(out.end(), v, v + 3);
   }
   return out;
 }

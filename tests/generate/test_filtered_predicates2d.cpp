@@ -23,8 +23,7 @@ int expect_agree(const double (&p)[4][2]) {
   EXPECT_EQ(detail::orient2d_sign(p[0], p[1], p[2]), o)
       << p[0][0] << " " << p[0][1] << " " << p[1][0] << " " << p[1][1] << " " << p[2][0] << " "
       << p[2][1];
-  EXPECT_EQ(detail::incircle_sign(p[0], p[1], p[2], p[3]), i)
-      << p[3][0] << " " << p[3][1];
+  EXPECT_EQ(detail::incircle_sign(p[0], p[1], p[2], p[3]), i) << p[3][0] << " " << p[3][1];
   return (o == 0) + (i == 0);
 }
 
@@ -39,7 +38,7 @@ TEST(FilteredPredicates2d, KnownSigns) {
   EXPECT_EQ(detail::orient2d_sign(a, on, out), 0);  // (0,0), (1,1), (2,2)
   EXPECT_EQ(detail::incircle_sign(a, b, c, in), 1);
   EXPECT_EQ(detail::incircle_sign(a, b, c, out), -1);
-  EXPECT_EQ(detail::incircle_sign(a, b, c, on), 0);  // (1,1) is on the circle through a, b, c
+  EXPECT_EQ(detail::incircle_sign(a, b, c, on), 0);   // (1,1) is on the circle through a, b, c
   EXPECT_EQ(detail::incircle_sign(a, c, b, in), -1);  // clockwise: the sign flips
 }
 
