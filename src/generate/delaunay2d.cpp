@@ -6,7 +6,8 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "core/predicates.hpp"
+#include "generate/filtered_predicates2d.hpp"
+#include "generate/huge_page_allocator.hpp"
 #include "mesh/hilbert.hpp"
 
 namespace riemesh {
@@ -31,26 +32,43 @@ struct BoundaryEdge {
   Id a, b, outside;
 };
 
+/// A triangle of the cavity search: the next edge slot to look across and how many are left.
+struct Frame {
+  Id t;
+  int edge, left;
+};
+
+inline int next_slot(int e) { return e == 2 ? 0 : e + 1; }
+inline int prev_slot(int e) { return e == 0 ? 2 : e - 1; }
+
+/// Reserves room for `size` elements of a fresh array in huge pages (a hint; see
+/// huge_page_allocator.hpp): the pages are first touched after the advice.
+template <class T>
+void reserve_huge(std::vector<T>& a, std::size_t size) {
+  a.reserve(size);
+  detail::advise_huge_pages(a.data(), size * sizeof(T));
+}
+
 /// Bowyer–Watson insertion into a Triangulation2d, with scratch arrays owned by the builder.
 class Builder {
  public:
   explicit Builder(Triangulation2d& t) : t_(t) {
-    const std::size_t nv = t.xy.size() / 2;
-    fan_.assign(nv, kNoId);
-    // Each insertion adds two triangles to the super-triangle: the arrays are sized once for the
-    // most there can be and trimmed by finish() (no per-triangle growth in the inner loop).
-    const std::size_t most = 2 * nv + 1;
-    t_.tri.resize(3 * most);
-    t_.nbr.resize(3 * most);
-    mark_.assign(most, 0);
+    // Each insertion adds two triangles to the super-triangle: room for the most there can be is
+    // reserved once (in huge pages: a few hundred page faults instead of tens of thousands), and
+    // the arrays grow into it by chunks small enough to stay in cache until the triangles are
+    // written (no zero-filling pass over the whole arrays, no reallocation).
+    const std::size_t most = 2 * (t.xy.size() / 2) + 1;
+    reserve_huge(t_.tri, 3 * most);
+    reserve_huge(t_.nbr, 3 * most);
   }
 
   /// The super-triangle as the first triangle.
   void start(Id s0, Id s1, Id s2) {
     const Id first[3] = {s0, s1, s2};
+    num_triangles_ = 1;
+    grow();
     std::copy(first, first + 3, t_.tri.begin());
     std::fill(t_.nbr.begin(), t_.nbr.begin() + 3, kNoId);
-    num_triangles_ = 1;
     last_ = 0;
   }
 
@@ -68,7 +86,7 @@ class Builder {
     // conflict with no triangle (empty circles), so it always takes the walk and is caught below.
     turn_towards(p);
     if (in_conflict(last_, p)) {
-      find_cavity(last_, p, v);
+      find_cavity(last_, p);
       fill_cavity(v);
       return true;
     }
@@ -81,7 +99,7 @@ class Builder {
         return false;
       }
     }
-    find_cavity(t, p, v);
+    find_cavity(t, p);
     fill_cavity(v);
     return true;
   }
@@ -100,7 +118,7 @@ class Builder {
         const int e = (k + static_cast<int>(steps_++ % 3)) % 3;  // rotate the first edge tried
         if (e == from) continue;
         const Id a = t_.tri[3 * t + (e + 1) % 3], b = t_.tri[3 * t + (e + 2) % 3];
-        if (orient2d(point(a), point(b), p) < 0) {
+        if (detail::orient2d_sign(point(a), point(b), p) < 0) {
           cross = e;
           break;
         }
@@ -121,11 +139,11 @@ class Builder {
     const double* c = point(v[0]);
     for (int k = 0; k < 4; ++k) {
       const Id* w = &t_.tri[3 * last_];
-      if (orient2d(c, point(w[2]), p) >= 0) {  // p beyond edge (v, b): turn counter-clockwise
+      if (detail::orient2d_sign(c, point(w[2]), p) >= 0) {  // p beyond edge (v, b): turn ccw
         const Id h = t_.nbr[3 * last_ + 1];
         if (h == kNoId) return;
         last_ = tri_of(h);
-      } else if (orient2d(c, point(w[1]), p) < 0) {  // before edge (v, a): turn clockwise
+      } else if (detail::orient2d_sign(c, point(w[1]), p) < 0) {  // before edge (v, a): turn cw
         const Id h = t_.nbr[3 * last_ + 2];
         if (h == kNoId) return;
         last_ = tri_of(h);
@@ -137,74 +155,87 @@ class Builder {
 
   bool in_conflict(Id t, const double* p) const {
     const Id* v = &t_.tri[3 * t];
-    return incircle(point(v[0]), point(v[1]), point(v[2]), p) > 0;
+    return detail::incircle_sign(point(v[0]), point(v[1]), point(v[2]), p) > 0;
   }
 
-  /// The triangles whose circumcircle contains p strictly, connected to t (which contains p), and
-  /// their boundary. Marks: 2v+1 = in the cavity, 2v+2 = tested and outside.
-  void find_cavity(Id t, const double* p, Id v) {
-    const std::uint32_t in = 2 * static_cast<std::uint32_t>(v) + 1, out = in + 1;
+  /// The triangles whose circumcircle contains p strictly, connected to t (which is one of them),
+  /// and their boundary edges in counter-clockwise order. Depth-first, each triangle's edges in
+  /// counter-clockwise order from the one it was entered by, so that a neighbour's boundary
+  /// replaces the shared edge in sequence. No marks are needed: the cavity of a point in a
+  /// Delaunay triangulation is a disk with all its vertices on its boundary (they all join the
+  /// point afterwards), so its triangles' adjacency is a tree and each is reached once. (A
+  /// triangle outside may be tested twice, from two cavity triangles; the answer is the same.)
+  void find_cavity(Id t, const double* p) {
     cavity_.clear();
     boundary_.clear();
     cavity_.push_back(t);
-    mark_[t] = in;
-    for (std::size_t k = 0; k < cavity_.size(); ++k) {
-      const Id c = cavity_[k];
-      for (int e = 0; e < 3; ++e) {
-        const Id h = t_.nbr[3 * c + e];
-        if (h != kNoId) {
-          const Id n = tri_of(h);
-          if (mark_[n] == in) continue;
-          if (mark_[n] != out) {
-            if (in_conflict(n, p)) {
-              mark_[n] = in;
-              cavity_.push_back(n);
-              continue;
-            }
-            mark_[n] = out;
-          }
-        }
-        boundary_.push_back({t_.tri[3 * c + (e + 1) % 3], t_.tri[3 * c + (e + 2) % 3], h});
+    // The current triangle's frame stays in registers; a frame is stacked only when a triangle
+    // still has edges to look across after descending into a neighbour.
+    Frame f{t, 0, 3};
+    for (;;) {
+      if (f.left == 0) {
+        if (stack_.empty()) return;
+        f = stack_.back();
+        stack_.pop_back();
+        continue;
       }
+      const int e = f.edge;
+      const Id h = t_.nbr[3 * f.t + e];
+      f.edge = next_slot(e);
+      --f.left;
+      if (h != kNoId) {
+        const Id n = tri_of(h);
+        if (in_conflict(n, p)) {
+          cavity_.push_back(n);
+          // Never fails with exact predicates (a tree); bounds the search if the theory is broken.
+          RIEMESH_CHECK(cavity_.size() <= num_triangles_);
+          if (f.left > 0) stack_.push_back(f);
+          f = {n, next_slot(slot_of(h)), 2};
+          continue;
+        }
+      }
+      boundary_.push_back({t_.tri[3 * f.t + next_slot(e)], t_.tri[3 * f.t + prev_slot(e)], h});
     }
   }
 
   /// Replaces the cavity by the fan (v, a, b) over its boundary edges a → b, reusing the cavity's
-  /// triangle ids first. The fan triangle starting at a is remembered in fan_[a] to link the fan.
+  /// triangle ids first. Consecutive boundary edges make consecutive fan triangles: across (b, v)
+  /// from the k-th is the (k + 1)-th's edge (v, a), opposite its vertex b.
   void fill_cavity(Id v) {
     const std::size_t nb = boundary_.size();
+    RIEMESH_CHECK(nb == cavity_.size() + 2);  // a disk with every vertex on its boundary
+    new_.assign(cavity_.begin(), cavity_.end());
+    for (std::size_t k = cavity_.size(); k < nb; ++k)
+      new_.push_back(static_cast<Id>(num_triangles_++));
+    if (3 * num_triangles_ > t_.tri.size()) grow();
+    Id prev = new_[nb - 1];
     for (std::size_t k = 0; k < nb; ++k) {
-      Id t;
-      if (k < cavity_.size()) {
-        t = cavity_[k];
-      } else {
-        RIEMESH_CHECK(3 * (num_triangles_ + 1) <= t_.tri.size());
-        t = static_cast<Id>(num_triangles_++);
-      }
+      const Id t = new_[k], next = new_[k + 1 == nb ? 0 : k + 1];
       const BoundaryEdge& be = boundary_[k];
       Id* tv = &t_.tri[3 * t];
       tv[0] = v, tv[1] = be.a, tv[2] = be.b;
-      t_.nbr[3 * t] = be.outside;
+      Id* tn = &t_.nbr[3 * t];
+      tn[0] = be.outside, tn[1] = 3 * next + 2, tn[2] = 3 * prev + 1;
       if (be.outside != kNoId) t_.nbr[be.outside] = 3 * t;
-      fan_[be.a] = t;
-      new_.push_back(t);
+      prev = t;
     }
-    // (v, a, b): across (b, v) is the fan triangle starting at b, across its edge (v, b), which is
-    // opposite its third vertex.
-    for (const Id t : new_) {
-      const Id s = fan_[t_.tri[3 * t + 2]];
-      t_.nbr[3 * t + 1] = 3 * s + 2;
-      t_.nbr[3 * s + 2] = 3 * t + 1;
-    }
-    last_ = new_.back();
-    new_.clear();
+    last_ = new_[nb - 1];
+  }
+
+  /// Makes room for num_triangles_ triangles (within the reserved capacity).
+  void grow() {
+    constexpr std::size_t kChunk = 3 * 4096;  // 48 KB per array
+    const std::size_t size =
+        std::min(std::max(3 * num_triangles_, t_.tri.size() + kChunk), t_.tri.capacity());
+    RIEMESH_CHECK(3 * num_triangles_ <= size);
+    t_.tri.resize(size);
+    t_.nbr.resize(size);
   }
 
   Triangulation2d& t_;
-  std::vector<Id> fan_;             // per vertex: the fan triangle starting there (scratch)
-  std::vector<std::uint32_t> mark_;  // per triangle: cavity stamps (points < 2^31)
   std::vector<Id> cavity_, new_;
   std::vector<BoundaryEdge> boundary_;
+  std::vector<Frame> stack_;
   Id last_ = 0;
   std::size_t num_triangles_ = 0;
   std::uint64_t steps_ = 0;
@@ -260,26 +291,28 @@ Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
       msg += " has a non-finite coordinate";
       throw InputError(msg);
     }
+  reserve_huge(t.xy, 2 * t.num_points + 6);
   t.xy.assign(xy.begin(), xy.begin() + 2 * t.num_points);
   add_super_triangle(t);
   const Id n = static_cast<Id>(t.num_points);
+  reserve_huge(t.representative, t.num_points);
   t.representative.resize(t.num_points);
   Builder builder(t);
   builder.start(n, n + 1, n + 2);
 
-  std::vector<Id> sequence;
-  if (order == InsertionOrder::kBrio) {
-    sequence = brio_order(xy);
-  } else if (order == InsertionOrder::kHilbert) {
-    sequence = hilbert_order(std::vector<double>(xy.begin(), xy.end()), 2);
-  } else {
-    sequence.resize(t.num_points);
-    for (Id v = 0; v < n; ++v) sequence[v] = v;
-  }
-  for (const Id v : sequence) {
+  const auto insert = [&](Id v) {
     Id same = v;
     builder.insert(v, &same);
     t.representative[v] = same;
+  };
+  if (order == InsertionOrder::kAsGiven) {
+    for (Id v = 0; v < n; ++v) insert(v);
+  } else {
+    const std::vector<Id> sequence =
+        order == InsertionOrder::kBrio
+            ? brio_order(xy)
+            : hilbert_order(std::vector<double>(xy.begin(), xy.end()), 2);
+    for (const Id v : sequence) insert(v);
   }
   builder.finish();
   return t;
@@ -289,7 +322,8 @@ std::vector<Id> delaunay_triangles(const Triangulation2d& t) {
   std::vector<Id> out;
   for (std::size_t k = 0; k < t.num_triangles(); ++k) {
     const Id* v = &t.tri[3 * k];
-    if (!t.is_super(v[0]) && !t.is_super(v[1]) && !t.is_super(v[2])) out.insert(out.end(), v, v + 3);
+    if (!t.is_super(v[0]) && !t.is_super(v[1]) && !t.is_super(v[2]))
+      out.insert(out.end(), v, v + 3);
   }
   return out;
 }
