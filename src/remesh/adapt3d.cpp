@@ -16,6 +16,7 @@
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
 #include "remesh/boundary3d.hpp"
+#include "remesh/edges3d.hpp"
 #include "remesh/pass_summary.hpp"
 #include "remesh/prepare_metrics.hpp"
 #include "remesh/remesh3d_context.hpp"
@@ -39,59 +40,27 @@ constexpr double kBadMaxLength = 1.6;               // ... creating edges no lon
 constexpr double kVeryShort = 0.6;                 // shorter edges go with those limits too
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
 
-struct Candidate {
-  double length;
-  Id a, b;
-  Id tet;  // a tet holding the edge when it was listed (a hint: the mesh changes)
-};
+using Candidate = LongEdge;
 
-/// A collapse candidate: no hint (collapses walk the ball), 16 bytes instead of 24 — there can
-/// be about one per tet (memory, issue #7).
-struct ShortEdge {
-  double length;
-  Id a, b;
-};
+/// Lists the edges of m longer than √2 (split) and shorter than kCollapseBelow (collapse) into
+/// lists, each edge's length also fed to sum when given (the summary that ends a pass lists the
+/// next pass's candidates: nothing changes the mesh in between).
+void list_edges(const TetMesh& m, EdgeLists& lists, PassSummary* sum) {
+  lists.long_above = kLongEdge, lists.short_below = kCollapseBelow;
+  lists.long_edges.clear(), lists.short_edges.clear();
+  for_each_edge(m, [&](Id a, Id b, Id t) {
+    const double l = edge_length(m, a, b);
+    if (sum) sum->edge(l);
+    lists.add(l, a, b, t);
+  });
+}
 
-/// Calls f(a, b, tet) for each unique live edge (a < b), in increasing (a, b), with the first
-/// (lowest id) tet holding it. Bucketed by a (counting sort of 4-byte entries 6 t + k, edge k of
-/// tet t), then each small bucket sorted by (b, tet) in a scratch array: linear in the tets. The
-/// entries are the largest transient of a pass (issue #7): 24 bytes per tet, and no edge list.
-template <class F>
-void for_each_edge(const TetMesh& m, F&& f) {
-  RIEMESH_CHECK(m.tet_capacity() < std::numeric_limits<std::uint32_t>::max() / 6);
-  const auto end = [&](std::uint32_t x, int i) { return m.tv[4 * (x / 6) + kTetEdge[x % 6][i]]; };
-  std::vector<std::uint32_t> start(m.vertex_capacity() + 1, 0);
-  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
-    if (!m.tet_alive(static_cast<Id>(t))) continue;
-    for (const auto& [i, j] : kTetEdge) ++start[std::min(m.tv[4 * t + i], m.tv[4 * t + j]) + 1];
-  }
-  for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t>& e = m.edge_scratch;  // entries [0, start.back()) are written
-  if (e.size() < start.back()) {  // grown exactly (resize alone would double the capacity)
-    std::vector<std::uint32_t>().swap(e);
-    e.reserve(start.back() + start.back() / 64);
-    e.resize(e.capacity());
-  }
-  {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
-      if (!m.tet_alive(static_cast<Id>(t))) continue;
-      for (std::uint32_t k = 0; k < 6; ++k) {
-        const std::uint32_t x = static_cast<std::uint32_t>(6 * t) + k;
-        e[fill[std::min(end(x, 0), end(x, 1))]++] = x;
-      }
-    }
-  }
-  std::vector<std::pair<Id, Id>> bucket;  // (b, tet)
-  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-    bucket.clear();
-    for (std::size_t k = start[v]; k < start[v + 1]; ++k)
-      bucket.emplace_back(std::max(end(e[k], 0), end(e[k], 1)), static_cast<Id>(e[k] / 6));
-    std::sort(bucket.begin(), bucket.end());
-    for (std::size_t k = 0; k < bucket.size(); ++k)
-      if (k == 0 || bucket[k].first != bucket[k - 1].first)
-        f(static_cast<Id>(v), bucket[k].first, bucket[k].second);
-  }
+template <class C>
+void sort_candidates(std::vector<C>& c, bool longer_first) {
+  std::sort(c.begin(), c.end(), [longer_first](const C& x, const C& y) {
+    if (x.length != y.length) return longer_first ? x.length > y.length : x.length < y.length;
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
 }
 
 template <class C = Candidate, class Select>
@@ -103,46 +72,88 @@ std::vector<C> candidates(const TetMesh& m, Select select, bool longer_first) {
     if constexpr (requires(C c) { c.tet; }) out.push_back({l, a, b, t});
     else out.push_back({l, a, b});
   });
-  std::sort(out.begin(), out.end(), [longer_first](const C& x, const C& y) {
-    if (x.length != y.length) return longer_first ? x.length > y.length : x.length < y.length;
-    return x.a != y.a ? x.a < y.a : x.b < y.b;
-  });
+  sort_candidates(out, longer_first);
   return out;
 }
 
-long split_sweeps(Remesh3dContext& ctx, PassStats& st, double min_quality) {
+/// Adds to lists the edges at the vertices `created` (live, distinct) that it selects.
+void list_edges_at(const TetMesh& m, std::span<const Id> created, EdgeLists& lists) {
+  std::vector<std::uint8_t> in(m.vertex_capacity(), 0);
+  for (const Id x : created) in[x] = 1;
+  for_each_edge_at(m, created, in, [&](Id x, Id y, Id t) {
+    const Id a = std::min(x, y), b = std::max(x, y);
+    lists.add(edge_length(m, a, b), a, b, t);
+  });
+}
+
+/// The lowest id tet holding edge (a, b) (joined), from a tet that may hold it.
+Id lowest_edge_tet(const TetMesh& m, Id a, Id b, Id hint) {
+  thread_local std::vector<Id> shell;
+  collect_shell(m, a, b, shell, hint);
+  RIEMESH_CHECK(!shell.empty());
+  return *std::min_element(shell.begin(), shell.end());
+}
+
+/// Split sweeps: the edges longer than √2, longest first, each split at split_point. The first
+/// sweep's candidates are lists.long_edges (the mesh's state); the next sweep's are the edges
+/// still longer than √2: a split keeps every edge but the one it cuts and moves no vertex, so
+/// these are the refused candidates and the long edges at the vertices just created, listed as
+/// an enumeration would (lowest id tet as the hint). On return lists.short_edges holds the edges
+/// shorter than kCollapseBelow (the old ones and those at the new vertices).
+long split_sweeps(Remesh3dContext& ctx, PassStats& st, double min_quality, EdgeLists& lists) {
   TetMesh& m = ctx.mesh();
   long total = 0;
+  std::vector<Candidate> list = std::move(lists.long_edges), refused;
+  std::vector<Id> created_all;  // the vertices created by the sweeps, in order
   for (int sweep = 0; sweep < kSplitSweeps; ++sweep) {
+    sort_candidates(list, true);
+    const std::size_t first_created = created_all.size();
+    refused.clear();
     long done = 0;
-    for (const Candidate& c : candidates(m, [](double l) { return l > kLongEdge; }, true)) {
+    for (const Candidate& c : list) {
       NewVertex3 nv;
       if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || !ctx.split_point(c.a, c.b, nv, c.tet)) {
         ++st.rejected;
+        refused.push_back(c);
         continue;
       }
       Id created = kNoId;
       if (split_edge(m, c.a, c.b, nv, min_quality, &created, c.tet) == Outcome::kApplied) {
         ctx.inherit_hint(created);
+        created_all.push_back(created);
         ++done;
       } else {
         ++st.rejected;
+        refused.push_back(c);
       }
     }
     total += done;
-    if (done == 0) break;
+    if (done == 0 || sweep + 1 == kSplitSweeps) break;
+    EdgeLists next{kLongEdge, -1.0, {}, {}};
+    for (Candidate& c : refused) {
+      c.tet = lowest_edge_tet(m, c.a, c.b, c.tet);
+      next.long_edges.push_back(c);
+    }
+    list_edges_at(m, std::span<const Id>(created_all).subspan(first_created), next);
+    list.swap(next.long_edges);
   }
+  EdgeLists at_new{std::numeric_limits<double>::infinity(), kCollapseBelow, {}, {}};
+  list_edges_at(m, created_all, at_new);
+  lists.short_edges.insert(lists.short_edges.end(), at_new.short_edges.begin(),
+                           at_new.short_edges.end());
   return total;
 }
 
-long collapse_sweep(Remesh3dContext& ctx, PassStats& st) {
+/// Collapses of the edges shorter than kCollapseBelow (`list`: all of them as the mesh stands),
+/// shortest first. A collapse moves no vertex and joins no new pair of vertices, so a listed
+/// edge keeps its length while both its ends live.
+long collapse_sweep(Remesh3dContext& ctx, PassStats& st, std::vector<ShortEdge> list) {
   TetMesh& m = ctx.mesh();
   const CollapseLimits limits{0.2, 1.45};
   long done = 0;
-  const auto is_short = [](double l) { return l < kCollapseBelow; };
-  for (const ShortEdge& c : candidates<ShortEdge>(m, is_short, false)) {
+  sort_candidates(list, false);
+  for (const ShortEdge& c : list) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
-    if (edge_length(m, c.a, c.b) >= kCollapseBelow) continue;
     bool applied = false;
     for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
       if (collapse_edge(m, from, to, limits) == Outcome::kApplied) {
@@ -264,9 +275,10 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
   return done;
 }
 
-void summarize(const TetMesh& m, PassStats& st) {
+/// The pass's statistics into st; lists receives the next pass's split and collapse candidates.
+void summarize(const TetMesh& m, PassStats& st, EdgeLists& lists) {
   PassSummary sum;
-  for_each_edge(m, [&](Id a, Id b, Id) { sum.edge(edge_length(m, a, b)); });
+  list_edges(m, lists, &sum);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
     if (m.tet_alive(static_cast<Id>(t))) sum.element(cached_quality(m, static_cast<Id>(t)));
   sum.fill(st, m.num_live_vertices(), m.num_live_tets());
@@ -332,13 +344,16 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
   double prev_in = 0.0, prev_qmin = 0.0;
+  EdgeLists lists;  // the split and collapse candidates of the mesh as it stands
+  if (options.insert) list_edges(m, lists, nullptr);
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();
     PassStats st;
     st.pass = pass;
     if (options.insert) {
-      st.splits = split_sweeps(*ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0);
-      st.collapses = collapse_sweep(*ctx, st);
+      st.splits =
+          split_sweeps(*ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0, lists);
+      st.collapses = collapse_sweep(*ctx, st, std::move(lists.short_edges));
     }
     for (int k = 0; k < 2; ++k) {
       if (options.swap) st.swaps += swap_sweep(m, st);
@@ -354,7 +369,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     SliverLimits sl;
     sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
     sliver_sweeps(*ctx, sl, st);
-    summarize(m, st);
+    summarize(m, st, lists);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);
     if (on_pass) on_pass(st);
@@ -372,6 +387,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     }
     if (ops < best_ops) best_ops = ops, best_pass = pass;
   }
+  lists = EdgeLists{};
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
   const TetMesh final_mesh = std::move(m);
   std::vector<std::uint32_t>().swap(final_mesh.edge_scratch);
