@@ -45,14 +45,19 @@ using Candidate = LongEdge;
 /// Lists the edges of m longer than √2 (split) and shorter than kCollapseBelow (collapse) into
 /// lists, each edge's length also fed to sum when given (the summary that ends a pass lists the
 /// next pass's candidates: nothing changes the mesh in between).
-void list_edges(const TetMesh& m, EdgeLists& lists, PassSummary* sum) {
+/// `nbrs`, when given, receives every vertex's neighbours.
+void list_edges(TetMesh& m, EdgeLists& lists, PassSummary* sum, NeighbourTable* nbrs) {
   lists.long_above = kLongEdge, lists.short_below = kCollapseBelow;
   lists.long_edges.clear(), lists.short_edges.clear();
+  std::vector<Id> upper;
+  std::vector<std::uint32_t> count(nbrs ? m.vertex_capacity() : 0, 0);
   for_each_edge(m, [&](Id a, Id b, Id t) {
     const double l = edge_length(m, a, b);
     if (sum) sum->edge(l);
     lists.add(l, a, b, t);
+    if (nbrs) upper.push_back(b), ++count[a];
   });
+  if (nbrs) nbrs->build(m, upper, count);
 }
 
 template <class C>
@@ -92,6 +97,14 @@ Id lowest_edge_tet(const TetMesh& m, Id a, Id b, Id hint) {
   collect_shell(m, a, b, shell, hint);
   RIEMESH_CHECK(!shell.empty());
   return *std::min_element(shell.begin(), shell.end());
+}
+
+/// collapse_edge(m, from, to, limits) == kApplied, without its ball walk when nbrs knows from's
+/// neighbours and the new edge lengths refuse the collapse (the same decision).
+bool try_collapse(TetMesh& m, Id from, Id to, const CollapseLimits& limits,
+                  const NeighbourTable& nbrs) {
+  if (nbrs.known(m, from) && collapse_too_long(m, nbrs.of(from), to, limits)) return false;
+  return collapse_edge(m, from, to, limits) == Outcome::kApplied;
 }
 
 /// Split sweeps: the edges longer than √2, longest first, each split at split_point. The first
@@ -147,7 +160,8 @@ long split_sweeps(Remesh3dContext& ctx, PassStats& st, double min_quality, EdgeL
 /// Collapses of the edges shorter than kCollapseBelow (`list`: all of them as the mesh stands),
 /// shortest first. A collapse moves no vertex and joins no new pair of vertices, so a listed
 /// edge keeps its length while both its ends live.
-long collapse_sweep(Remesh3dContext& ctx, PassStats& st, std::vector<ShortEdge> list) {
+long collapse_sweep(Remesh3dContext& ctx, PassStats& st, std::vector<ShortEdge> list,
+                    const NeighbourTable& nbrs) {
   TetMesh& m = ctx.mesh();
   const CollapseLimits limits{0.2, 1.45};
   long done = 0;
@@ -156,7 +170,7 @@ long collapse_sweep(Remesh3dContext& ctx, PassStats& st, std::vector<ShortEdge> 
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
     bool applied = false;
     for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
-      if (collapse_edge(m, from, to, limits) == Outcome::kApplied) {
+      if (try_collapse(m, from, to, limits, nbrs)) {
         applied = true;
         break;
       }
@@ -196,7 +210,7 @@ long swap_sweep(TetMesh& m, PassStats& st) {
 
 /// The tets worse than kBad: each loses its worst edge by a collapse that does not lower the
 /// worst quality of the ball (edges up to kBadMaxLength), its vertices tried in turn.
-long bad_tet_sweep(TetMesh& m, PassStats& st) {
+long bad_tet_sweep(TetMesh& m, PassStats& st, const NeighbourTable& nbrs) {
   std::vector<Id> bad;
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
     if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kBad)
@@ -215,7 +229,7 @@ long bad_tet_sweep(TetMesh& m, PassStats& st) {
     bool applied = false;
     for (int k = 0; k < 6 && !applied; ++k)
       for (const auto& [from, to] : {std::pair{edges[k].a, edges[k].b}, std::pair{edges[k].b, edges[k].a}})
-        if (collapse_edge(m, from, to, {1.0, kBadMaxLength}) == Outcome::kApplied) {
+        if (try_collapse(m, from, to, {1.0, kBadMaxLength}, nbrs)) {
           applied = true;
           break;
         }
@@ -226,7 +240,7 @@ long bad_tet_sweep(TetMesh& m, PassStats& st) {
 }
 
 /// Edges shorter than kVeryShort: collapsed with the relaxed limits of the bad tets.
-long short_edge_sweep(TetMesh& m, PassStats& st) {
+long short_edge_sweep(TetMesh& m, PassStats& st, const NeighbourTable& nbrs) {
   long done = 0;
   const auto is_very_short = [](double l) { return l < kVeryShort; };
   for (const ShortEdge& c : candidates<ShortEdge>(m, is_very_short, false)) {
@@ -234,7 +248,7 @@ long short_edge_sweep(TetMesh& m, PassStats& st) {
       continue;
     bool applied = false;
     for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
-      if (collapse_edge(m, from, to, {kBad, kBadMaxLength}) == Outcome::kApplied) {
+      if (try_collapse(m, from, to, {kBad, kBadMaxLength}, nbrs)) {
         applied = true;
         break;
       }
@@ -276,9 +290,9 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
 }
 
 /// The pass's statistics into st; lists receives the next pass's split and collapse candidates.
-void summarize(const TetMesh& m, PassStats& st, EdgeLists& lists) {
+void summarize(TetMesh& m, PassStats& st, EdgeLists& lists, NeighbourTable* nbrs) {
   PassSummary sum;
-  list_edges(m, lists, &sum);
+  list_edges(m, lists, &sum, nbrs);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
     if (m.tet_alive(static_cast<Id>(t))) sum.element(cached_quality(m, static_cast<Id>(t)));
   sum.fill(st, m.num_live_vertices(), m.num_live_tets());
@@ -345,7 +359,9 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   int best_pass = 0;
   double prev_in = 0.0, prev_qmin = 0.0;
   EdgeLists lists;  // the split and collapse candidates of the mesh as it stands
-  if (options.insert) list_edges(m, lists, nullptr);
+  NeighbourTable nbrs;  // the vertices' neighbours, for the collapses' length test
+  NeighbourTable* const nbrs_wanted = options.insert ? &nbrs : nullptr;
+  if (options.insert) list_edges(m, lists, nullptr, nbrs_wanted);
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();
     PassStats st;
@@ -353,23 +369,23 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     if (options.insert) {
       st.splits =
           split_sweeps(*ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0, lists);
-      st.collapses = collapse_sweep(*ctx, st, std::move(lists.short_edges));
+      st.collapses = collapse_sweep(*ctx, st, std::move(lists.short_edges), nbrs);
     }
     for (int k = 0; k < 2; ++k) {
       if (options.swap) st.swaps += swap_sweep(m, st);
       if (options.move) st.moves += smooth_sweep(*ctx, st);
     }
     // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
-    if (options.insert) st.collapses += short_edge_sweep(m, st);
+    if (options.insert) st.collapses += short_edge_sweep(m, st, nbrs);
     for (int k = 0; k < 2; ++k) {
-      if (options.insert) st.collapses += bad_tet_sweep(m, st);
+      if (options.insert) st.collapses += bad_tet_sweep(m, st, nbrs);
       if (options.swap) st.swaps += swap_sweep(m, st);
     }
     // Last: sliver removal around the tets still below the quality target.
     SliverLimits sl;
     sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
     sliver_sweeps(*ctx, sl, st);
-    summarize(m, st, lists);
+    summarize(m, st, lists, nbrs_wanted);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);
     if (on_pass) on_pass(st);
@@ -387,7 +403,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     }
     if (ops < best_ops) best_ops = ops, best_pass = pass;
   }
-  lists = EdgeLists{};
+  lists = EdgeLists{}, nbrs = NeighbourTable{};
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
   const TetMesh final_mesh = std::move(m);
   std::vector<std::uint32_t>().swap(final_mesh.edge_scratch);

@@ -89,6 +89,45 @@ struct EdgeLists {
   }
 };
 
+/// Every vertex's neighbours as the mesh stood when the table was taken (m.clock then `taken`):
+/// still exact for a vertex that no replaced cavity has held since (TetMesh::untouched_since),
+/// whatever moved. Lets the collapse sweeps test new edge lengths without walking balls (issue
+/// #7: most collapse candidates are refused by that test). 4 bytes per vertex and 8 per edge.
+struct NeighbourTable {
+  std::vector<std::uint32_t> start;  // neighbours of v: list[start[v], start[v + 1])
+  std::vector<Id> list;
+  std::uint32_t taken = 0;
+
+  /// Whether the neighbours of v are known (v untouched since the table was taken).
+  bool known(const TetMesh& m, Id v) const {
+    return static_cast<std::size_t>(v) + 1 < start.size() && m.untouched_since(v, taken);
+  }
+  std::span<const Id> of(Id v) const {
+    return std::span<const Id>(list).subspan(start[v], start[v + 1] - start[v]);
+  }
+
+  /// Builds the table from the edges (a < b) in increasing (a, b) order, `upper` holding the b
+  /// of each and `count[a]` how many have that a; advances m's clock.
+  void build(TetMesh& m, const std::vector<Id>& upper, std::vector<std::uint32_t>& count) {
+    const std::size_t n = m.vertex_capacity();
+    std::vector<std::uint32_t> lower(n, 0);  // edges (a, v) with a < v, then their fill
+    for (const Id b : upper) ++lower[b];
+    start.assign(n + 1, 0);
+    for (std::size_t v = 0; v < n; ++v) start[v + 1] = start[v] + lower[v] + count[v];
+    list.resize(start[n]);
+    // v's list: the lower neighbours (filled in increasing a), then its upper ones, in order.
+    std::fill(lower.begin(), lower.end(), 0);
+    std::size_t k = 0;
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::uint32_t j = 0; j < count[a]; ++j, ++k) {
+        const Id b = upper[k];
+        list[start[a + 1] - count[a] + j] = b;
+        list[start[b] + lower[b]++] = static_cast<Id>(a);
+      }
+    taken = ++m.clock;
+  }
+};
+
 /// Calls f(x, y, tet) once for each live edge (x, y) at a vertex of `verts` (distinct, live),
 /// x in verts and, for an edge between two of them, x < y; tet: the lowest id tet holding it.
 /// `in_verts[v]` must be nonzero exactly for the vertices of verts (sized to the vertices).
