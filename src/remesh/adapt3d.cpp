@@ -258,17 +258,38 @@ long short_edge_sweep(TetMesh& m, PassStats& st, const NeighbourTable& nbrs) {
   return done;
 }
 
-long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
+/// Whether v's closed ball (its tets, their vertices' positions and metrics) is as it was when
+/// m's clock read `since`; false when that is not known (v's neighbours not in nbrs).
+bool ball_unchanged(const TetMesh& m, Id v, std::uint32_t since, const NeighbourTable& nbrs) {
+  if (!m.untouched_since(v, since) || !m.unmoved_since(v, since) || !nbrs.known(m, v)) return false;
+  for (const Id x : nbrs.of(v))
+    if (!m.unmoved_since(x, since)) return false;
+  return true;
+}
+
+/// Moves the vertices of the tets below kGoodBall toward their smoothing targets. `since` > 0:
+/// the clock at the start of the previous smoothing sweep; a vertex whose closed ball has not
+/// changed since was refused then (its move depends on nothing else: the ball, the background
+/// metric, v's hint) and is counted refused again without the work (as 2D). `began` receives
+/// this sweep's clock.
+long smooth_sweep(Remesh3dContext& ctx, PassStats& st, const NeighbourTable& nbrs,
+                  std::uint32_t since, std::uint32_t& began) {
   TetMesh& m = ctx.mesh();
+  began = ++m.clock;
   std::vector<std::uint8_t> wanted(m.vertex_capacity(), 0);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
     if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kGoodBall)
       for (int i = 0; i < 4; ++i) wanted[m.tv[4 * t + i]] = 1;
   long done = 0;
   MoveCache cache;
+  cache.any_refusal = true;  // only kApplied counts here
   for (std::size_t vi = 0; vi < wanted.size(); ++vi) {
     const Id v = static_cast<Id>(vi);
     if (!wanted[vi] || !m.vert_alive(v)) continue;
+    if (since > 0 && ball_unchanged(m, v, since, nbrs)) {
+      if (m.vkind[v] != VertexKind::kFixed) ++st.rejected;  // smoothing_target refuses fixed ones
+      continue;
+    }
     NewVertex3 target;
     if (!ctx.smoothing_target(v, target, &cache.ball)) continue;
     fill_move_cache(m, v, cache);  // the ball and its worst quality, once for the candidates
@@ -371,9 +392,10 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
           split_sweeps(*ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0, lists);
       st.collapses = collapse_sweep(*ctx, st, std::move(lists.short_edges), nbrs);
     }
+    std::uint32_t smoothed = 0;  // the clock at the start of the last smoothing sweep
     for (int k = 0; k < 2; ++k) {
       if (options.swap) st.swaps += swap_sweep(m, st);
-      if (options.move) st.moves += smooth_sweep(*ctx, st);
+      if (options.move) st.moves += smooth_sweep(*ctx, st, nbrs, smoothed, smoothed);
     }
     // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
     if (options.insert) st.collapses += short_edge_sweep(m, st, nbrs);

@@ -126,12 +126,15 @@ Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length);
 /// resets it (v = kNoId) when anything but these moves of v may have changed the ball. `first`
 /// (an index in ball) is the tet whose quality is computed first: the worst one, or the one that
 /// refused the last candidate, so that a refused candidate is found out early (the outcome does
-/// not depend on the order).
+/// not depend on the order). `any_refusal`: a refusal may be reported as kRejectedQuality
+/// without checking the rest of the ball's volumes to tell kRejectedGeometry (for callers that
+/// only look for kApplied).
 struct MoveCache {
   Id v = kNoId;
   std::vector<Id> ball;
   double worst = 0.0;
   std::size_t first = 0;
+  bool any_refusal = false;
 };
 Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric,
                     MoveCache* cache = nullptr);
