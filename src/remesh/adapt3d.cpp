@@ -68,16 +68,42 @@ void sort_candidates(std::vector<C>& c, bool longer_first) {
   });
 }
 
-template <class C = Candidate, class Select>
-std::vector<C> candidates(const TetMesh& m, Select select, bool longer_first) {
-  std::vector<C> out;
-  for_each_edge(m, [&](Id a, Id b, Id t) {
-    const double l = edge_length(m, a, b);
-    if (!select(l)) return;
-    if constexpr (requires(C c) { c.tet; }) out.push_back({l, a, b, t});
-    else out.push_back({l, a, b});
-  });
-  sort_candidates(out, longer_first);
+/// v's neighbours, sorted: from nbrs when it still holds them, else from v's ball (`scratch`).
+std::span<const Id> neighbours(const TetMesh& m, Id v, const NeighbourTable& nbrs,
+                               std::vector<Id>& scratch) {
+  if (nbrs.known(m, v)) return nbrs.of(v);
+  thread_local std::vector<Id> ball;
+  collect_ball(m, v, ball);
+  scratch.clear();
+  for (const Id t : ball)
+    for (int i = 0; i < 4; ++i)
+      if (m.tv[4 * t + i] != v) scratch.push_back(m.tv[4 * t + i]);
+  std::sort(scratch.begin(), scratch.end());
+  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+  return scratch;
+}
+
+/// The edges (a < b) shorter than `below`, shortest first: each from its lower end's neighbours
+/// (a full enumeration is not needed for the few short edges left after the collapse sweep); the
+/// logarithm of the length only for the edges whose end lengths do not decide (edge_longer_than).
+std::vector<ShortEdge> edges_shorter_than(const TetMesh& m, const NeighbourTable& nbrs,
+                                          double below) {
+  std::vector<ShortEdge> out;
+  std::vector<Id> scratch;
+  for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
+    const Id a = static_cast<Id>(vi);
+    if (!m.vert_alive(a)) continue;
+    for (const Id b : neighbours(m, a, nbrs, scratch)) {
+      if (b < a) continue;
+      const Vec3 ab = m.xyz[b] - m.xyz[a];
+      // The logarithmic mean is at least the geometric one.
+      if (std::sqrt(length(m.metric[a], ab) * length(m.metric[b], ab)) > below * (1.0 + 1e-12))
+        continue;
+      const double l = edge_length(m, a, b);
+      if (l < below) out.push_back({l, a, b});
+    }
+  }
+  sort_candidates(out, false);
   return out;
 }
 
@@ -242,8 +268,7 @@ long bad_tet_sweep(TetMesh& m, PassStats& st, const NeighbourTable& nbrs) {
 /// Edges shorter than kVeryShort: collapsed with the relaxed limits of the bad tets.
 long short_edge_sweep(TetMesh& m, PassStats& st, const NeighbourTable& nbrs) {
   long done = 0;
-  const auto is_very_short = [](double l) { return l < kVeryShort; };
-  for (const ShortEdge& c : candidates<ShortEdge>(m, is_very_short, false)) {
+  for (const ShortEdge& c : edges_shorter_than(m, nbrs, kVeryShort)) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || edge_length(m, c.a, c.b) >= kVeryShort)
       continue;
     bool applied = false;
@@ -291,7 +316,8 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st, const NeighbourTable& nbr
       continue;
     }
     NewVertex3 target;
-    if (!ctx.smoothing_target(v, target, &cache.ball)) continue;
+    const std::span<const Id> known = nbrs.known(m, v) ? nbrs.of(v) : std::span<const Id>();
+    if (!ctx.smoothing_target(v, target, &cache.ball, known)) continue;
     fill_move_cache(m, v, cache);  // the ball and its worst quality, once for the candidates
     bool moved = move_vertex(m, v, target.p, target.metric, &cache) == Outcome::kApplied;
     // A refused target: try the way there at half and a quarter.
