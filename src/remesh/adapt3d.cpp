@@ -16,6 +16,7 @@
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
 #include "remesh/boundary3d.hpp"
+#include "remesh/edges3d.hpp"
 #include "remesh/pass_summary.hpp"
 #include "remesh/prepare_metrics.hpp"
 #include "remesh/remesh3d_context.hpp"
@@ -40,113 +41,163 @@ constexpr double kVeryShort = 0.6;                 // shorter edges go with thos
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
 constexpr double kLengthenFloor = 0.55;            // lengthening moves keep the ball above this
 
-struct Candidate {
-  double length;
-  Id a, b;
-  Id tet;  // a tet holding the edge when it was listed (a hint: the mesh changes)
-};
+using Candidate = LongEdge;
 
-/// A collapse candidate: no hint (collapses walk the ball), 16 bytes instead of 24 — there can
-/// be about one per tet (memory, issue #7).
-struct ShortEdge {
-  double length;
-  Id a, b;
-};
-
-/// Calls f(a, b, tet) for each unique live edge (a < b), in increasing (a, b), with the first
-/// (lowest id) tet holding it. Bucketed by a (counting sort of 4-byte entries 6 t + k, edge k of
-/// tet t), then each small bucket sorted by (b, tet) in a scratch array: linear in the tets. The
-/// entries are the largest transient of a pass (issue #7): 24 bytes per tet, and no edge list.
-template <class F>
-void for_each_edge(const TetMesh& m, F&& f) {
-  RIEMESH_CHECK(m.tet_capacity() < std::numeric_limits<std::uint32_t>::max() / 6);
-  const auto end = [&](std::uint32_t x, int i) { return m.tv[4 * (x / 6) + kTetEdge[x % 6][i]]; };
-  std::vector<std::uint32_t> start(m.vertex_capacity() + 1, 0);
-  for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
-    if (!m.tet_alive(static_cast<Id>(t))) continue;
-    for (const auto& [i, j] : kTetEdge) ++start[std::min(m.tv[4 * t + i], m.tv[4 * t + j]) + 1];
-  }
-  for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t>& e = m.edge_scratch;  // entries [0, start.back()) are written
-  if (e.size() < start.back()) {  // grown exactly (resize alone would double the capacity)
-    std::vector<std::uint32_t>().swap(e);
-    e.reserve(start.back() + start.back() / 64);
-    e.resize(e.capacity());
-  }
-  {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
-      if (!m.tet_alive(static_cast<Id>(t))) continue;
-      for (std::uint32_t k = 0; k < 6; ++k) {
-        const std::uint32_t x = static_cast<std::uint32_t>(6 * t) + k;
-        e[fill[std::min(end(x, 0), end(x, 1))]++] = x;
-      }
-    }
-  }
-  std::vector<std::pair<Id, Id>> bucket;  // (b, tet)
-  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-    bucket.clear();
-    for (std::size_t k = start[v]; k < start[v + 1]; ++k)
-      bucket.emplace_back(std::max(end(e[k], 0), end(e[k], 1)), static_cast<Id>(e[k] / 6));
-    std::sort(bucket.begin(), bucket.end());
-    for (std::size_t k = 0; k < bucket.size(); ++k)
-      if (k == 0 || bucket[k].first != bucket[k - 1].first)
-        f(static_cast<Id>(v), bucket[k].first, bucket[k].second);
-  }
-}
-
-template <class C = Candidate, class Select>
-std::vector<C> candidates(const TetMesh& m, Select select, bool longer_first) {
-  std::vector<C> out;
+/// Lists the edges of m longer than √2 (split) and shorter than kCollapseBelow (collapse) into
+/// lists, each edge's length also fed to sum when given (the summary that ends a pass lists the
+/// next pass's candidates: nothing changes the mesh in between).
+/// `nbrs`, when given, receives every vertex's neighbours.
+void list_edges(TetMesh& m, EdgeLists& lists, PassSummary* sum, NeighbourTable* nbrs) {
+  lists.long_above = kLongEdge, lists.short_below = kCollapseBelow;
+  lists.long_edges.clear(), lists.short_edges.clear();
+  std::vector<Id> upper;
+  std::vector<std::uint32_t> count(nbrs ? m.vertex_capacity() : 0, 0);
   for_each_edge(m, [&](Id a, Id b, Id t) {
     const double l = edge_length(m, a, b);
-    if (!select(l)) return;
-    if constexpr (requires(C c) { c.tet; }) out.push_back({l, a, b, t});
-    else out.push_back({l, a, b});
+    if (sum) sum->edge(l);
+    lists.add(l, a, b, t);
+    if (nbrs) upper.push_back(b), ++count[a];
   });
-  std::sort(out.begin(), out.end(), [longer_first](const C& x, const C& y) {
+  if (nbrs) nbrs->build(m, upper, count);
+}
+
+template <class C>
+void sort_candidates(std::vector<C>& c, bool longer_first) {
+  std::sort(c.begin(), c.end(), [longer_first](const C& x, const C& y) {
     if (x.length != y.length) return longer_first ? x.length > y.length : x.length < y.length;
     return x.a != y.a ? x.a < y.a : x.b < y.b;
   });
+}
+
+/// v's neighbours, sorted: from nbrs when it still holds them, else from v's ball (`scratch`).
+std::span<const Id> neighbours(const TetMesh& m, Id v, const NeighbourTable& nbrs,
+                               std::vector<Id>& scratch) {
+  if (nbrs.known(m, v)) return nbrs.of(v);
+  thread_local std::vector<Id> ball;
+  collect_ball(m, v, ball);
+  scratch.clear();
+  for (const Id t : ball)
+    for (int i = 0; i < 4; ++i)
+      if (m.tv[4 * t + i] != v) scratch.push_back(m.tv[4 * t + i]);
+  std::sort(scratch.begin(), scratch.end());
+  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+  return scratch;
+}
+
+/// The edges (a < b) shorter than `below`, shortest first: each from its lower end's neighbours
+/// (a full enumeration is not needed for the few short edges left after the collapse sweep); the
+/// logarithm of the length only for the edges whose end lengths do not decide (edge_longer_than).
+std::vector<ShortEdge> edges_shorter_than(const TetMesh& m, const NeighbourTable& nbrs,
+                                          double below) {
+  std::vector<ShortEdge> out;
+  std::vector<Id> scratch;
+  for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
+    const Id a = static_cast<Id>(vi);
+    if (!m.vert_alive(a)) continue;
+    for (const Id b : neighbours(m, a, nbrs, scratch)) {
+      if (b < a) continue;
+      const Vec3 ab = m.xyz[b] - m.xyz[a];
+      // The logarithmic mean is at least the geometric one.
+      if (std::sqrt(length(m.metric[a], ab) * length(m.metric[b], ab)) > below * (1.0 + 1e-12))
+        continue;
+      const double l = edge_length(m, a, b);
+      if (l < below) out.push_back({l, a, b});
+    }
+  }
+  sort_candidates(out, false);
   return out;
 }
 
-long split_sweeps(Remesh3dContext& ctx, PassStats& st, double min_quality) {
+/// Adds to lists the edges at the vertices `created` (live, distinct) that it selects.
+void list_edges_at(const TetMesh& m, std::span<const Id> created, EdgeLists& lists) {
+  std::vector<std::uint8_t> in(m.vertex_capacity(), 0);
+  for (const Id x : created) in[x] = 1;
+  for_each_edge_at(m, created, in, [&](Id x, Id y, Id t) {
+    const Id a = std::min(x, y), b = std::max(x, y);
+    lists.add(edge_length(m, a, b), a, b, t);
+  });
+}
+
+/// The lowest id tet holding edge (a, b) (joined), from a tet that may hold it.
+Id lowest_edge_tet(const TetMesh& m, Id a, Id b, Id hint) {
+  thread_local std::vector<Id> shell;
+  collect_shell(m, a, b, shell, hint);
+  RIEMESH_CHECK(!shell.empty());
+  return *std::min_element(shell.begin(), shell.end());
+}
+
+/// collapse_edge(m, from, to, limits) == kApplied, without its ball walk when nbrs knows from's
+/// neighbours and the new edge lengths refuse the collapse (the same decision).
+bool try_collapse(TetMesh& m, Id from, Id to, const CollapseLimits& limits,
+                  const NeighbourTable& nbrs) {
+  if (nbrs.known(m, from) && collapse_too_long(m, nbrs.of(from), to, limits)) return false;
+  return collapse_edge(m, from, to, limits) == Outcome::kApplied;
+}
+
+/// Split sweeps: the edges longer than √2, longest first, each split at split_point. The first
+/// sweep's candidates are lists.long_edges (the mesh's state); the next sweep's are the edges
+/// still longer than √2: a split keeps every edge but the one it cuts and moves no vertex, so
+/// these are the refused candidates and the long edges at the vertices just created, listed as
+/// an enumeration would (lowest id tet as the hint). On return lists.short_edges holds the edges
+/// shorter than kCollapseBelow (the old ones and those at the new vertices).
+long split_sweeps(Remesh3dContext& ctx, PassStats& st, double min_quality, EdgeLists& lists) {
   TetMesh& m = ctx.mesh();
   long total = 0;
+  std::vector<Candidate> list = std::move(lists.long_edges), refused;
+  std::vector<Id> created_all;  // the vertices created by the sweeps, in order
   for (int sweep = 0; sweep < kSplitSweeps; ++sweep) {
+    sort_candidates(list, true);
+    const std::size_t first_created = created_all.size();
+    refused.clear();
     long done = 0;
-    for (const Candidate& c : candidates(m, [](double l) { return l > kLongEdge; }, true)) {
+    for (const Candidate& c : list) {
       NewVertex3 nv;
       if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || !ctx.split_point(c.a, c.b, nv, c.tet)) {
         ++st.rejected;
+        refused.push_back(c);
         continue;
       }
       Id created = kNoId;
       if (split_edge(m, c.a, c.b, nv, min_quality, &created, c.tet) == Outcome::kApplied) {
         ctx.inherit_hint(created);
+        created_all.push_back(created);
         ++done;
       } else {
         ++st.rejected;
+        refused.push_back(c);
       }
     }
     total += done;
-    if (done == 0) break;
+    if (done == 0 || sweep + 1 == kSplitSweeps) break;
+    EdgeLists next{kLongEdge, -1.0, {}, {}};
+    for (Candidate& c : refused) {
+      c.tet = lowest_edge_tet(m, c.a, c.b, c.tet);
+      next.long_edges.push_back(c);
+    }
+    list_edges_at(m, std::span<const Id>(created_all).subspan(first_created), next);
+    list.swap(next.long_edges);
   }
+  EdgeLists at_new{std::numeric_limits<double>::infinity(), kCollapseBelow, {}, {}};
+  list_edges_at(m, created_all, at_new);
+  lists.short_edges.insert(lists.short_edges.end(), at_new.short_edges.begin(),
+                           at_new.short_edges.end());
   return total;
 }
 
-long collapse_sweep(Remesh3dContext& ctx, PassStats& st) {
+/// Collapses of the edges shorter than kCollapseBelow (`list`: all of them as the mesh stands),
+/// shortest first. A collapse moves no vertex and joins no new pair of vertices, so a listed
+/// edge keeps its length while both its ends live.
+long collapse_sweep(Remesh3dContext& ctx, PassStats& st, std::vector<ShortEdge> list,
+                    const NeighbourTable& nbrs) {
   TetMesh& m = ctx.mesh();
   const CollapseLimits limits{0.2, 1.45};
   long done = 0;
-  const auto is_short = [](double l) { return l < kCollapseBelow; };
-  for (const ShortEdge& c : candidates<ShortEdge>(m, is_short, false)) {
+  sort_candidates(list, false);
+  for (const ShortEdge& c : list) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b)) continue;
-    if (edge_length(m, c.a, c.b) >= kCollapseBelow) continue;
     bool applied = false;
     for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
-      if (collapse_edge(m, from, to, limits) == Outcome::kApplied) {
+      if (try_collapse(m, from, to, limits, nbrs)) {
         applied = true;
         break;
       }
@@ -186,7 +237,7 @@ long swap_sweep(TetMesh& m, PassStats& st) {
 
 /// The tets worse than kBad: each loses its worst edge by a collapse that does not lower the
 /// worst quality of the ball (edges up to kBadMaxLength), its vertices tried in turn.
-long bad_tet_sweep(TetMesh& m, PassStats& st) {
+long bad_tet_sweep(TetMesh& m, PassStats& st, const NeighbourTable& nbrs) {
   std::vector<Id> bad;
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
     if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kBad)
@@ -205,7 +256,7 @@ long bad_tet_sweep(TetMesh& m, PassStats& st) {
     bool applied = false;
     for (int k = 0; k < 6 && !applied; ++k)
       for (const auto& [from, to] : {std::pair{edges[k].a, edges[k].b}, std::pair{edges[k].b, edges[k].a}})
-        if (collapse_edge(m, from, to, {1.0, kBadMaxLength}) == Outcome::kApplied) {
+        if (try_collapse(m, from, to, {1.0, kBadMaxLength}, nbrs)) {
           applied = true;
           break;
         }
@@ -221,24 +272,20 @@ long bad_tet_sweep(TetMesh& m, PassStats& st) {
 /// quality lower than min(before, kLengthenFloor): for short edges whose collapse would create
 /// long edges (issue #7: the shortest edge of polar2-3d, 0.45, left so by the sliver
 /// optimiser's moves).
-bool lengthen(Remesh3dContext& ctx, Id v, Id other, MoveCache& cache, std::vector<Id>& nbrs) {
+bool lengthen(Remesh3dContext& ctx, Id v, Id other, MoveCache& cache, const NeighbourTable& nbrs,
+              std::vector<Id>& scratch) {
   TetMesh& m = ctx.mesh();
+  const std::span<const Id> around = neighbours(m, v, nbrs, scratch);
   NewVertex3 target;
-  if (!ctx.smoothing_target(v, target, &cache.ball)) return false;
+  if (!ctx.smoothing_target(v, target, &cache.ball, around)) return false;
   fill_move_cache(m, v, cache);
   const double l = edge_length(m, v, other);
   if (!(l > 0.0)) return false;
   Vec3 away = m.xyz[other] + (1.0 / l) * (m.xyz[v] - m.xyz[other]);
   if (!ctx.constrain(v, away)) return false;
-  nbrs.clear();
-  for (const Id t : cache.ball)
-    for (int i = 0; i < 4; ++i)
-      if (m.tv[4 * t + i] != v) nbrs.push_back(m.tv[4 * t + i]);
-  std::sort(nbrs.begin(), nbrs.end());
-  nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
   const auto range = [&](const Vec3& p, const SymMat3& mp) {
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-    for (const Id x : nbrs) {
+    for (const Id x : around) {
       const double lx = edge_length_geometric(mp, m.metric[x], m.xyz[x] - p);
       lo = std::min(lo, lx), hi = std::max(hi, lx);
     }
@@ -263,18 +310,17 @@ bool lengthen(Remesh3dContext& ctx, Id v, Id other, MoveCache& cache, std::vecto
 
 /// Edges shorter than kVeryShort: collapsed with the relaxed limits of the bad tets, or else
 /// lengthened by moving an end (lengthen). Returns the collapses (moves go to st.moves).
-long short_edge_sweep(Remesh3dContext& ctx, PassStats& st) {
+long short_edge_sweep(Remesh3dContext& ctx, PassStats& st, const NeighbourTable& nbrs) {
   TetMesh& m = ctx.mesh();
   MoveCache cache;
-  std::vector<Id> nbrs;
+  std::vector<Id> scratch;
   long done = 0;
-  const auto is_very_short = [](double l) { return l < kVeryShort; };
-  for (const ShortEdge& c : candidates<ShortEdge>(m, is_very_short, false)) {
+  for (const ShortEdge& c : edges_shorter_than(m, nbrs, kVeryShort)) {
     if (!m.vert_alive(c.a) || !m.vert_alive(c.b) || edge_length(m, c.a, c.b) >= kVeryShort)
       continue;
     bool applied = false;
     for (const auto& [from, to] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
-      if (collapse_edge(m, from, to, {kBad, kBadMaxLength}) == Outcome::kApplied) {
+      if (try_collapse(m, from, to, {kBad, kBadMaxLength}, nbrs)) {
         applied = true;
         break;
       }
@@ -284,7 +330,7 @@ long short_edge_sweep(Remesh3dContext& ctx, PassStats& st) {
     }
     for (const auto& [v, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}}) {
       cache.v = kNoId;
-      if (lengthen(ctx, v, other, cache, nbrs)) {
+      if (lengthen(ctx, v, other, cache, nbrs, scratch)) {
         ++st.moves, applied = true;
         break;
       }
@@ -294,19 +340,41 @@ long short_edge_sweep(Remesh3dContext& ctx, PassStats& st) {
   return done;
 }
 
-long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
+/// Whether v's closed ball (its tets, their vertices' positions and metrics) is as it was when
+/// m's clock read `since`; false when that is not known (v's neighbours not in nbrs).
+bool ball_unchanged(const TetMesh& m, Id v, std::uint32_t since, const NeighbourTable& nbrs) {
+  if (!m.untouched_since(v, since) || !m.unmoved_since(v, since) || !nbrs.known(m, v)) return false;
+  for (const Id x : nbrs.of(v))
+    if (!m.unmoved_since(x, since)) return false;
+  return true;
+}
+
+/// Moves the vertices of the tets below kGoodBall toward their smoothing targets. `since` > 0:
+/// the clock at the start of the previous smoothing sweep; a vertex whose closed ball has not
+/// changed since was refused then (its move depends on nothing else: the ball, the background
+/// metric, v's hint) and is counted refused again without the work (as 2D). `began` receives
+/// this sweep's clock.
+long smooth_sweep(Remesh3dContext& ctx, PassStats& st, const NeighbourTable& nbrs,
+                  std::uint32_t since, std::uint32_t& began) {
   TetMesh& m = ctx.mesh();
+  began = ++m.clock;
   std::vector<std::uint8_t> wanted(m.vertex_capacity(), 0);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
     if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kGoodBall)
       for (int i = 0; i < 4; ++i) wanted[m.tv[4 * t + i]] = 1;
   long done = 0;
   MoveCache cache;
+  cache.any_refusal = true;  // only kApplied counts here
   for (std::size_t vi = 0; vi < wanted.size(); ++vi) {
     const Id v = static_cast<Id>(vi);
     if (!wanted[vi] || !m.vert_alive(v)) continue;
+    if (since > 0 && ball_unchanged(m, v, since, nbrs)) {
+      if (m.vkind[v] != VertexKind::kFixed) ++st.rejected;  // smoothing_target refuses fixed ones
+      continue;
+    }
     NewVertex3 target;
-    if (!ctx.smoothing_target(v, target, &cache.ball)) continue;
+    const std::span<const Id> known = nbrs.known(m, v) ? nbrs.of(v) : std::span<const Id>();
+    if (!ctx.smoothing_target(v, target, &cache.ball, known)) continue;
     fill_move_cache(m, v, cache);  // the ball and its worst quality, once for the candidates
     bool moved = move_vertex(m, v, target.p, target.metric, &cache) == Outcome::kApplied;
     // A refused target: try the way there at half and a quarter.
@@ -325,9 +393,10 @@ long smooth_sweep(Remesh3dContext& ctx, PassStats& st) {
   return done;
 }
 
-void summarize(const TetMesh& m, PassStats& st) {
+/// The pass's statistics into st; lists receives the next pass's split and collapse candidates.
+void summarize(TetMesh& m, PassStats& st, EdgeLists& lists, NeighbourTable* nbrs) {
   PassSummary sum;
-  for_each_edge(m, [&](Id a, Id b, Id) { sum.edge(edge_length(m, a, b)); });
+  list_edges(m, lists, &sum, nbrs);
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
     if (m.tet_alive(static_cast<Id>(t))) sum.element(cached_quality(m, static_cast<Id>(t)));
   sum.fill(st, m.num_live_vertices(), m.num_live_tets());
@@ -393,22 +462,28 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
   double prev_in = 0.0, prev_qmin = 0.0;
+  EdgeLists lists;  // the split and collapse candidates of the mesh as it stands
+  NeighbourTable nbrs;  // the vertices' neighbours, for the collapses' length test
+  NeighbourTable* const nbrs_wanted = options.insert ? &nbrs : nullptr;
+  if (options.insert) list_edges(m, lists, nullptr, nbrs_wanted);
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();
     PassStats st;
     st.pass = pass;
     if (options.insert) {
-      st.splits = split_sweeps(*ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0);
-      st.collapses = collapse_sweep(*ctx, st);
+      st.splits =
+          split_sweeps(*ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0, lists);
+      st.collapses = collapse_sweep(*ctx, st, std::move(lists.short_edges), nbrs);
     }
+    std::uint32_t smoothed = 0;  // the clock at the start of the last smoothing sweep
     for (int k = 0; k < 2; ++k) {
       if (options.swap) st.swaps += swap_sweep(m, st);
-      if (options.move) st.moves += smooth_sweep(*ctx, st);
+      if (options.move) st.moves += smooth_sweep(*ctx, st, nbrs, smoothed, smoothed);
     }
     // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
-    if (options.insert) st.collapses += short_edge_sweep(*ctx, st);
+    if (options.insert) st.collapses += short_edge_sweep(*ctx, st, nbrs);
     for (int k = 0; k < 2; ++k) {
-      if (options.insert) st.collapses += bad_tet_sweep(m, st);
+      if (options.insert) st.collapses += bad_tet_sweep(m, st, nbrs);
       if (options.swap) st.swaps += swap_sweep(m, st);
     }
     // Last: sliver removal around the tets still below the quality target.
@@ -416,8 +491,8 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
     sliver_sweeps(*ctx, sl, st);
     // Again: the sliver optimiser's moves do not look at lengths.
-    if (options.insert) st.collapses += short_edge_sweep(*ctx, st);
-    summarize(m, st);
+    if (options.insert) st.collapses += short_edge_sweep(*ctx, st, nbrs);
+    summarize(m, st, lists, nbrs_wanted);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);
     if (on_pass) on_pass(st);
@@ -435,6 +510,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     }
     if (ops < best_ops) best_ops = ops, best_pass = pass;
   }
+  lists = EdgeLists{}, nbrs = NeighbourTable{};
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
   const TetMesh final_mesh = std::move(m);
   std::vector<std::uint32_t>().swap(final_mesh.edge_scratch);

@@ -45,6 +45,13 @@ double worst_on_boundary(const TetMesh& m, const Tets& tets, Verts verts) {
 
 }  // namespace
 
+bool collapse_too_long(const TetMesh& m, std::span<const Id> neighbours, Id to,
+                       const CollapseLimits& limits) {
+  for (const Id x : neighbours)
+    if (x != to && edge_longer_than(m, to, x, limits.max_length)) return true;
+  return false;
+}
+
 Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) {
   thread_local std::vector<Id> ball, shell;
   thread_local std::vector<NewTet> tets;
@@ -63,7 +70,7 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
     for (int i = 0; i < 4; ++i) {
       const Id x = m.tv[4 * t + i];
       if (x == from || x == to || std::find(seen.begin(), seen.end(), x) != seen.end()) continue;
-      if (edge_length(m, to, x) > limits.max_length) return Outcome::kRejectedQuality;
+      if (edge_longer_than(m, to, x, limits.max_length)) return Outcome::kRejectedQuality;
       seen.push_back(x);
     }
   tets.clear();

@@ -54,13 +54,15 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
       m.xyz[v] = p;
     }
     c.worst = worst;  // the ball's tets are the same, v moved
+    if (m.vmoved.size() <= static_cast<std::size_t>(v)) m.vmoved.resize(m.vertex_capacity(), 0);
+    m.vmoved[v] = m.clock;
     for (const Id t : ball)
       if (static_cast<std::size_t>(t) < m.quality.size())
         m.quality[t] = std::numeric_limits<double>::quiet_NaN();
     return Outcome::kApplied;
   }
   bool valid = worst > 0.0;
-  for (++k; k < ball.size() && valid; ++k) {
+  for (++k; k < ball.size() && valid && !c.any_refusal; ++k) {
     const Id* tv = &m.tv[4 * ball[at(k)]];
     valid = above_volume_floor(m.xyz[tv[0]], m.xyz[tv[1]], m.xyz[tv[2]], m.xyz[tv[3]]);
   }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "metric/edge_length.hpp"
 #include "remesh/ops2d.hpp"
@@ -19,6 +20,18 @@ inline constexpr double kMinRelativeVolume = 1e-9;
 
 inline double edge_length(const TetMesh& m, Id a, Id b) {
   return edge_length_geometric(m.metric[a], m.metric[b], m.xyz[b] - m.xyz[a]);
+}
+
+/// Whether edge_length(m, a, b) > limit, computing the logarithm only when needed: the closed
+/// form is the logarithmic mean of the end lengths l_a, l_b, which lies between their geometric
+/// and arithmetic means; on a converged mesh those bounds decide most comparisons (the margin of
+/// 1e-12 keeps every decision that of the exact value, computed otherwise). As in 2D.
+inline bool edge_longer_than(const TetMesh& m, Id a, Id b, double limit) {
+  const Vec3 ab = m.xyz[b] - m.xyz[a];
+  const double la = length(m.metric[a], ab), lb = length(m.metric[b], ab);
+  if (std::sqrt(la * lb) > limit * (1.0 + 1e-12)) return true;
+  if (0.5 * (la + lb) < limit * (1.0 - 1e-12)) return false;
+  return edge_length(m, a, b) > limit;
 }
 
 /// Mean-ratio quality 12 (3 |K|_M)^{2/3} / Σ l_M² of tet (p0..p3) in the metric mm (1 for the
@@ -88,6 +101,12 @@ Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_qual
 /// the result would not be a manifold (the face matching of replace_cavity).
 Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits);
 
+/// True when collapse_edge(m, from, to, limits) would be refused by its length test alone: a
+/// new edge (to, x) longer than limits.max_length, x among `neighbours` (from's neighbours, to
+/// among them). Lets a driver that knows from's neighbours skip the ball walk.
+bool collapse_too_long(const TetMesh& m, std::span<const Id> neighbours, Id to,
+                       const CollapseLimits& limits);
+
 /// Replaces the shell of the interior edge (a, b) (3 to 7 tets, no listed face on it) by the
 /// best triangulation of its ring (2n − 4 tets) when that raises the shell's worst quality by
 /// more than min_gain; no new edge longer than max_length in the metric.
@@ -108,12 +127,15 @@ Outcome swap_face(TetMesh& m, Id slot, double min_gain, double max_length);
 /// resets it (v = kNoId) when anything but these moves of v may have changed the ball. `first`
 /// (an index in ball) is the tet whose quality is computed first: the worst one, or the one that
 /// refused the last candidate, so that a refused candidate is found out early (the outcome does
-/// not depend on the order).
+/// not depend on the order). `any_refusal`: a refusal may be reported as kRejectedQuality
+/// without checking the rest of the ball's volumes to tell kRejectedGeometry (for callers that
+/// only look for kApplied).
 struct MoveCache {
   Id v = kNoId;
   std::vector<Id> ball;
   double worst = 0.0;
   std::size_t first = 0;
+  bool any_refusal = false;
 };
 Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric,
                     MoveCache* cache = nullptr, double floor = 2.0);

@@ -207,18 +207,23 @@ void Remesh3dContext::inherit_hint(Id v) {
   hint_[v] = last_found_;
 }
 
-bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out, std::vector<Id>* ball_out) const {
+bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out, std::vector<Id>* ball_out,
+                                       std::span<const Id> neighbours) const {
   const VertexKind k = mesh_.vkind[v];
   if (k == VertexKind::kFixed) return false;
-  thread_local std::vector<Id> own_ball, nbrs;
+  thread_local std::vector<Id> own_ball, own_nbrs;
   std::vector<Id>& ball = ball_out ? *ball_out : own_ball;
   collect_ball(mesh_, v, ball);
-  nbrs.clear();
-  for (const Id t : ball)
-    for (int i = 0; i < 4; ++i)
-      if (mesh_.tv[4 * t + i] != v) nbrs.push_back(mesh_.tv[4 * t + i]);
-  std::sort(nbrs.begin(), nbrs.end());
-  nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
+  std::span<const Id> nbrs = neighbours;
+  if (nbrs.empty()) {
+    own_nbrs.clear();
+    for (const Id t : ball)
+      for (int i = 0; i < 4; ++i)
+        if (mesh_.tv[4 * t + i] != v) own_nbrs.push_back(mesh_.tv[4 * t + i]);
+    std::sort(own_nbrs.begin(), own_nbrs.end());
+    own_nbrs.erase(std::unique(own_nbrs.begin(), own_nbrs.end()), own_nbrs.end());
+    nbrs = own_nbrs;
+  }
   const Vec3& p = mesh_.xyz[v];
   Vec3 sum{};
   double wsum = 0.0;

@@ -37,8 +37,9 @@ class Remesh3dContext {
   /// Where smoothing would put v: the mean of the unit-length points seen from its neighbours,
   /// projected on its plane for a planar boundary vertex, on its line for a ridge vertex.
   /// False when v may not move. `ball`, when given, receives v's ball (collect_ball) when v may
-  /// move.
-  bool smoothing_target(Id v, NewVertex3& out, std::vector<Id>* ball = nullptr) const;
+  /// move. `neighbours`: v's neighbours sorted, when the caller knows them (else from the ball).
+  bool smoothing_target(Id v, NewVertex3& out, std::vector<Id>* ball = nullptr,
+                        std::span<const Id> neighbours = {}) const;
 
   /// Puts p on v's plane (planar boundary vertex) or on its line (ridge vertex, the line through
   /// v's position), on the reconstructed surface or feature line (kSurface, kCurve vertex,

@@ -253,7 +253,8 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
     m.tv[4 * t] = kNoId;
     m.free_tets.push_back(t);
   }
-  for (const Id v : verts) m.vtet[v] = kNoId;
+  if (m.vtouch.size() < m.vertex_capacity()) m.vtouch.resize(m.vertex_capacity(), 0);
+  for (const Id v : verts) m.vtet[v] = kNoId, m.vtouch[v] = m.clock;
   thread_local std::vector<Id> ids;
   ids.clear();
   for (const NewTet& nt : tets) {
@@ -263,7 +264,7 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
       m.quality[t] = std::numeric_limits<double>::quiet_NaN();
     for (int i = 0; i < 4; ++i) {
       m.tv[4 * t + i] = nt.v[i];
-      m.vtet[nt.v[i]] = t;
+      m.vtet[nt.v[i]] = t, m.vtouch[nt.v[i]] = m.clock;
     }
     m.tref[t] = nt.ref;
   }

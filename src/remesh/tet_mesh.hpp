@@ -77,6 +77,23 @@ struct TetMesh {
   // the pass does not allocate, fault in and zero it each time.
   mutable std::vector<std::uint32_t> edge_scratch;
 
+  // Per vertex, the value of `clock` when a replaced cavity last held it, old or new (0: never):
+  // a driver that keeps data about a vertex's neighbours (adapt3d.cpp) advances the clock when it
+  // takes them and trusts them while the vertex is untouched since.
+  std::vector<std::uint32_t> vtouch;
+  // Per vertex, the value of `clock` when it last moved (move_vertex; 0: never).
+  std::vector<std::uint32_t> vmoved;
+  std::uint32_t clock = 0;
+  /// Whether vertex v was held by no cavity replaced since the clock read `since`.
+  bool untouched_since(Id v, std::uint32_t since) const {
+    return static_cast<std::size_t>(v) >= vtouch.size() || vtouch[v] < since;
+  }
+
+  /// Whether vertex v has not moved since the clock read `since`.
+  bool unmoved_since(Id v, std::uint32_t since) const {
+    return static_cast<std::size_t>(v) >= vmoved.size() || vmoved[v] < since;
+  }
+
   std::size_t vertex_capacity() const { return xyz.size(); }
   std::size_t tet_capacity() const { return tref.size(); }
   bool tet_alive(Id t) const { return tv[4 * t] != kNoId; }
