@@ -278,20 +278,7 @@ double orient2d(const double* a, const double* b, const double* c) {
 }
 
 double incircle(const double* a, const double* b, const double* c, const double* d) {
-  const double adx = a[0] - d[0], ady = a[1] - d[1];
-  const double bdx = b[0] - d[0], bdy = b[1] - d[1];
-  const double cdx = c[0] - d[0], cdy = c[1] - d[1];
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double alift = adx * adx + ady * ady;
-  const double blift = bdx * bdx + bdy * bdy;
-  const double clift = cdx * cdx + cdy * cdy;
-  const double det =
-      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-                           (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-                           (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+  const auto [det, permanent] = incircle_terms(a, b, c, d);
   if (certain(det, permanent, kIncircleBound)) return det;
   return exact::incircle(a, b, c, d);
 }

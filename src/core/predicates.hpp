@@ -27,7 +27,32 @@
 // of coordinate differences not to fall below the smallest normal double after that rescaling,
 // i.e. coordinates whose differences span less than about 10^±60 of the largest coordinate
 // (always true for meshes).
+#include <cmath>
+
 namespace riemesh {
+
+/// The in-circle determinant in plain doubles and its permanent (the same expression with
+/// absolute values), on which the filters' error bounds are stated (incircle here, and the
+/// Delaunay kernel's inline filter). Inline: the users compile with -ffp-contract=off.
+struct DeterminantTerms {
+  double det, permanent;
+};
+inline DeterminantTerms incircle_terms(const double* a, const double* b, const double* c,
+                                       const double* d) {
+  const double adx = a[0] - d[0], ady = a[1] - d[1];
+  const double bdx = b[0] - d[0], bdy = b[1] - d[1];
+  const double cdx = c[0] - d[0], cdy = c[1] - d[1];
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  return {alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady),
+          (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+              (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+              (std::fabs(adxbdy) + std::fabs(bdxady)) * clift};
+}
 
 double orient2d(const double* a, const double* b, const double* c);
 double incircle(const double* a, const double* b, const double* c, const double* d);

@@ -10,6 +10,8 @@
 // -ffp-contract=off (src/CMakeLists.txt; x86-64 without -march has no fused multiply-add anyway).
 #include <cmath>
 
+#include "core/predicates.hpp"
+
 namespace riemesh::detail {
 
 /// Exact signs behind the filters (core/predicates.hpp, same conventions), out of line.
@@ -38,20 +40,7 @@ inline int orient2d_sign(const double* a, const double* b, const double* c) {
 /// +1 when d is strictly inside the circle through the counter-clockwise a, b, c, -1 strictly
 /// outside, 0 on it (the sign of core/predicates.hpp's incircle).
 inline int incircle_sign(const double* a, const double* b, const double* c, const double* d) {
-  const double adx = a[0] - d[0], ady = a[1] - d[1];
-  const double bdx = b[0] - d[0], bdy = b[1] - d[1];
-  const double cdx = c[0] - d[0], cdy = c[1] - d[1];
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double alift = adx * adx + ady * ady;
-  const double blift = bdx * bdx + bdy * bdy;
-  const double clift = cdx * cdx + cdy * cdy;
-  const double det =
-      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-                           (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-                           (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+  const auto [det, permanent] = incircle_terms(a, b, c, d);
   // iccerrboundA = (10 + 96 ε) ε.
   const double bound = (10.0 + 96.0 * 0x1p-53) * 0x1p-53 * permanent + kUnderflowSlack2d;
   if (det > bound) return 1;
