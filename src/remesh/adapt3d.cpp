@@ -75,12 +75,7 @@ std::span<const Id> neighbours(const TetMesh& m, Id v, const NeighbourTable& nbr
   if (nbrs.known(m, v)) return nbrs.of(v);
   thread_local std::vector<Id> ball;
   collect_ball(m, v, ball);
-  scratch.clear();
-  for (const Id t : ball)
-    for (int i = 0; i < 4; ++i)
-      if (m.tv[4 * t + i] != v) scratch.push_back(m.tv[4 * t + i]);
-  std::sort(scratch.begin(), scratch.end());
-  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+  ball_neighbours(m, v, ball, scratch);
   return scratch;
 }
 

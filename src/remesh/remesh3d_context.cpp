@@ -216,12 +216,7 @@ bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out, std::vector<Id>* b
   collect_ball(mesh_, v, ball);
   std::span<const Id> nbrs = neighbours;
   if (nbrs.empty()) {
-    own_nbrs.clear();
-    for (const Id t : ball)
-      for (int i = 0; i < 4; ++i)
-        if (mesh_.tv[4 * t + i] != v) own_nbrs.push_back(mesh_.tv[4 * t + i]);
-    std::sort(own_nbrs.begin(), own_nbrs.end());
-    own_nbrs.erase(std::unique(own_nbrs.begin(), own_nbrs.end()), own_nbrs.end());
+    ball_neighbours(mesh_, v, ball, own_nbrs);
     nbrs = own_nbrs;
   }
   const Vec3& p = mesh_.xyz[v];

@@ -110,6 +110,15 @@ void TetMesh::kill_vertex(Id v) {
   free_verts.push_back(v);
 }
 
+void ball_neighbours(const TetMesh& m, Id v, std::span<const Id> ball, std::vector<Id>& out) {
+  out.clear();
+  for (const Id t : ball)
+    for (int i = 0; i < 4; ++i)
+      if (m.tv[4 * t + i] != v) out.push_back(m.tv[4 * t + i]);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
 void collect_ball(const TetMesh& m, Id v, std::vector<Id>& out) {
   out.clear();
   const Id start = m.vtet[v];

@@ -130,6 +130,8 @@ inline int tet_index(const TetMesh& m, Id t, Id v) {
 
 /// The tets around vertex v (walk through the faces that hold v), in walk order.
 void collect_ball(const TetMesh& m, Id v, std::vector<Id>& out);
+/// The vertices other than v of the tets in `ball` (v's ball), sorted, without repeats.
+void ball_neighbours(const TetMesh& m, Id v, std::span<const Id> ball, std::vector<Id>& out);
 
 /// A tet holding edge (a, b), searched in a's ball (stopping at the first), or kNoId when a
 /// and b are not joined.
