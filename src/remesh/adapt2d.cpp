@@ -3,6 +3,7 @@
 #include "remesh/adapt2d.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -77,16 +78,23 @@ struct Candidate {
 /// first length (ties by ids, so the order is deterministic). Only the selected edges have
 /// their length computed (compare_edge_length decides the others from cheap bounds).
 std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer) {
-  std::vector<Candidate> out;
+  // Sorted as pairs of integers: the bits of a positive double order as its value (flipped for
+  // the longest first), then (a, b) packed; the same order as comparing (length, a, b).
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> keys;
   const int want = longer ? 1 : -1;
+  const std::uint64_t flip = longer ? ~std::uint64_t{0} : 0;
   for_each_edge(m, [&](Id s) {
     const Id a = m.edge_from(s), b = m.edge_to(s);
-    if (compare_edge_length(m, a, b, limit) == want) out.push_back({edge_length(m, a, b), a, b});
+    if (compare_edge_length(m, a, b, limit) != want) return;
+    const double l = edge_length(m, a, b);
+    keys.push_back({std::bit_cast<std::uint64_t>(l) ^ flip,
+                    (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b)});
   });
-  std::sort(out.begin(), out.end(), [longer](const Candidate& x, const Candidate& y) {
-    if (x.length != y.length) return longer ? x.length > y.length : x.length < y.length;
-    return x.a != y.a ? x.a < y.a : x.b < y.b;
-  });
+  std::sort(keys.begin(), keys.end());
+  std::vector<Candidate> out(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    out[i] = {std::bit_cast<double>(keys[i].first ^ flip), static_cast<Id>(keys[i].second >> 32),
+              static_cast<Id>(keys[i].second & 0xffffffffu)};
   return out;
 }
 
@@ -136,12 +144,13 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
   // Candidates refused by length both ways, found in mesh order (vertex a first).
   std::vector<std::uint8_t> too_long(list.size(), 0);
   {
-    std::vector<std::size_t> order(list.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
-      return list[x].a != list[y].a ? list[x].a < list[y].a : x < y;
-    });
-    for (const std::size_t i : order) {
+    // (vertex a, index) packed in one integer: the same order as sorting the indices by a.
+    std::vector<std::uint64_t> order(list.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+      order[i] = (static_cast<std::uint64_t>(list[i].a) << 32) | i;
+    std::sort(order.begin(), order.end());
+    for (const std::uint64_t key : order) {
+      const std::size_t i = key & 0xffffffffu;
       const Candidate& c = list[i];
       const CollapseLimits& lim = c.length < 0.25 ? tiny : limits;
       too_long[i] = (m.frozen(c.a) || collapse_too_long(m, c.a, c.b, lim)) &&
@@ -167,7 +176,8 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
       collect_ball(m, from, ball);  // its vertices: those whose neighbours change if it goes
       around.clear();
       for (const Id t : ball.tris) around.insert(around.end(), &m.tv[3 * t], &m.tv[3 * t] + 3);
-      if (collapse_edge(m, s, from, to, c.length < 0.25 ? tiny : limits) == Outcome::kApplied) {
+      if (collapse_edge(m, s, from, to, c.length < 0.25 ? tiny : limits, &ball) ==
+          Outcome::kApplied) {
         for (const Id v : around) touched[v] = 1;
         applied = true;
         break;
@@ -248,8 +258,8 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
     for (const Id t : ball.tris) worst = std::min(worst, quality[t]);
     if (worst >= kGoodBall) continue;
     NewVertex target;
-    if (!ctx.smoothing_target(v, target)) continue;
-    if (move_vertex(m, v, target.p, target.metric, target.param, 0.6) == Outcome::kApplied) {
+    if (!ctx.smoothing_target(v, target, 0.0, &ball)) continue;
+    if (move_vertex(m, v, target.p, target.metric, target.param, 0.6, &ball) == Outcome::kApplied) {
       ctx.inherit_hint(v, v);
       changes.mark(v);
       for (const Id t : ball.tris) quality[t] = static_cast<float>(tri_quality(m, t));

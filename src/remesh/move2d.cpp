@@ -6,13 +6,16 @@
 namespace riemesh {
 
 Outcome move_vertex(TriMesh& m, Id v, const Vec2& p, const SymMat2& metric, double param,
-                    double floor) {
+                    double floor, const Ball* ball) {
   if (m.frozen(v)) return Outcome::kRejectedTopology;
-  thread_local Ball ball;
-  collect_ball(m, v, ball);
-  if (!ball.closed && !m.on_curve(v)) return Outcome::kRejectedTopology;
+  thread_local Ball own;
+  if (ball == nullptr) {
+    collect_ball(m, v, own);
+    ball = &own;
+  }
+  if (!ball->closed && !m.on_curve(v)) return Outcome::kRejectedTopology;
   double before = 2.0, after = 2.0;
-  for (const Id t : ball.tris) {
+  for (const Id t : ball->tris) {
     const int i = vertex_index(m, t, v);
     const Id a = m.tv[3 * t + (i + 1) % 3], b = m.tv[3 * t + (i + 2) % 3];
     const double old_area = signed_area(m.xy[v], m.xy[a], m.xy[b]);
