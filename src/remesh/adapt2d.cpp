@@ -98,9 +98,30 @@ std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer) {
   return out;
 }
 
+/// When each vertex last moved or had its ball re-cut by a split, collapse or swap (a sweep
+/// counter), so that each swap and smoothing sweep after the first of the run only revisits what
+/// changed since the previous one (of this pass or the last): an edge whose four quadrilateral
+/// vertices are unchanged since the previous swap sweep was refused then and would be refused
+/// again (the decision depends on nothing else); likewise a vertex whose ball vertices are all
+/// unchanged since the previous smoothing sweep.
+struct Changes {
+  std::vector<std::uint32_t> stamp;  // per vertex; 0: never
+  std::uint32_t now = 0;
+
+  /// Starts a sweep; returns its stamp.
+  std::uint32_t begin() { return ++now; }
+  void mark(Id v) {
+    if (stamp.size() <= static_cast<std::size_t>(v)) stamp.resize(static_cast<std::size_t>(v) + 1, 0);
+    stamp[v] = now;
+  }
+  bool since(Id v, std::uint32_t t) const {
+    return static_cast<std::size_t>(v) < stamp.size() && stamp[v] >= t;
+  }
+};
+
 /// Splits the edges longer than √2, longest first, sweep after sweep (a split's new edges wait
 /// for the next sweep, so every long edge is reached and none is halved twice in a sweep).
-long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
+long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
   TriMesh& m = ctx.mesh();
   long total = 0;
   // At most 3 sweeps a pass: refining a coarse mesh step by step, with collapses, swaps and
@@ -112,9 +133,12 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
     for (const Candidate& c : list) {
       const Id s = find_edge_slot(m, c.a, c.b);
       if (s == kNoId) continue;
+      const Id apex = m.tv[s], other_apex = m.tadj[s] == kNoId ? kNoId : m.tv[m.tadj[s]];
       Id created = kNoId;
       if (split_edge(m, s, ctx.split_point(s), 0.0, &created) == Outcome::kApplied) {
         ctx.inherit_hint(created, c.a);
+        for (const Id v : {c.a, c.b, apex, created}) changes.mark(v);
+        if (other_apex != kNoId) changes.mark(other_apex);
         ++done;
       } else {
         ++st.rejected;
@@ -133,7 +157,7 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
 /// skips the edges it refused whose ends have not been touched by a collapse since: a collapse
 /// moves no vertex and changes the neighbours of the vertices of the removed vertex's ball only
 /// (all marked), so for the others the test would give the same answer.
-long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
+long collapse_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
   TriMesh& m = ctx.mesh();
   const CollapseLimits limits{0.3, 1.45};
   // Edges far below unit length (clusters of near-duplicate vertices left where a first run
@@ -178,7 +202,7 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
       for (const Id t : ball.tris) around.insert(around.end(), &m.tv[3 * t], &m.tv[3 * t] + 3);
       if (collapse_edge(m, s, from, to, c.length < 0.25 ? tiny : limits, &ball) ==
           Outcome::kApplied) {
-        for (const Id v : around) touched[v] = 1;
+        for (const Id v : around) touched[v] = 1, changes.mark(v);
         applied = true;
         break;
       }
@@ -189,25 +213,6 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
   return done;
 }
 
-/// When each vertex last moved or had its ball re-cut by a swap (a sweep counter), so that the
-/// second swap and smoothing sweeps of a pass only revisit what the first ones changed: an edge
-/// whose four quadrilateral vertices are unchanged since the previous swap sweep was refused
-/// then and would be refused again (the decision depends on nothing else); likewise a vertex
-/// whose ball vertices are all unchanged since the previous smoothing sweep.
-struct Changes {
-  std::vector<std::uint32_t> stamp;  // per vertex; 0: never
-  std::uint32_t now = 0;
-
-  /// Starts a sweep; returns its stamp.
-  std::uint32_t begin() { return ++now; }
-  void mark(Id v) {
-    if (stamp.size() <= static_cast<std::size_t>(v)) stamp.resize(static_cast<std::size_t>(v) + 1, 0);
-    stamp[v] = now;
-  }
-  bool since(Id v, std::uint32_t t) const {
-    return static_cast<std::size_t>(v) < stamp.size() && stamp[v] >= t;
-  }
-};
 
 /// One swap sweep; `since` > 0: only the edges with a quadrilateral vertex changed at or after
 /// that stamp (the others were refused by the sweep that began then).
@@ -239,9 +244,11 @@ long swap_sweep(TriMesh& m, PassStats& st, Changes& changes, std::uint32_t since
 long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since) {
   constexpr double kGoodBall = 0.9;
   TriMesh& m = ctx.mesh();
-  std::vector<float> quality(m.triangle_capacity(), 0.0f);
+  // Exact qualities (move_vertex takes the ball's worst from here); the good-ball test compares
+  // them rounded to float, as it always has.
+  std::vector<double> quality(m.triangle_capacity(), 0.0);
   for (std::size_t t = 0; t < m.triangle_capacity(); ++t)
-    if (m.tri_alive(static_cast<Id>(t))) quality[t] = static_cast<float>(tri_quality(m, static_cast<Id>(t)));
+    if (m.tri_alive(static_cast<Id>(t))) quality[t] = tri_quality(m, static_cast<Id>(t));
   thread_local Ball ball;
   long done = 0;
   for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
@@ -255,14 +262,19 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
       if (!changed) continue;
     }
     float worst = 1.0f;
-    for (const Id t : ball.tris) worst = std::min(worst, quality[t]);
+    double worst_exact = 2.0;
+    for (const Id t : ball.tris) {
+      worst = std::min(worst, static_cast<float>(quality[t]));
+      worst_exact = std::min(worst_exact, quality[t]);
+    }
     if (worst >= kGoodBall) continue;
     NewVertex target;
     if (!ctx.smoothing_target(v, target, 0.0, &ball)) continue;
-    if (move_vertex(m, v, target.p, target.metric, target.param, 0.6, &ball) == Outcome::kApplied) {
+    if (move_vertex(m, v, target.p, target.metric, target.param, 0.6, &ball, &worst_exact) ==
+        Outcome::kApplied) {
       ctx.inherit_hint(v, v);
       changes.mark(v);
-      for (const Id t : ball.tris) quality[t] = static_cast<float>(tri_quality(m, t));
+      for (const Id t : ball.tris) quality[t] = tri_quality(m, t);
       ++done;
     } else {
       ++st.rejected;
@@ -338,15 +350,15 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
   Changes changes;
+  std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the previous swap and smoothing sweeps
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();
     PassStats st;
     st.pass = pass;
     if (options.insert) {
-      st.splits = split_sweeps(ctx, st);
-      st.collapses = collapse_sweep(ctx, st);
+      st.splits = split_sweeps(ctx, st, changes);
+      st.collapses = collapse_sweep(ctx, st, changes);
     }
-    std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the first sweeps of this pass
     for (int k = 0; k < 2; ++k) {
       const std::uint32_t swap_stamp = changes.begin();
       if (options.swap) st.swaps += swap_sweep(m, st, changes, swap_from);

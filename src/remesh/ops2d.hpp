@@ -90,8 +90,9 @@ Outcome swap_edge(TriMesh& m, Id slot, double min_gain);
 
 /// Moves vertex v to p (with its new metric and curve parameter) when every triangle of its ball
 /// stays valid and the smallest quality of the ball does not drop below min(old, floor).
-/// `ball`: v's ball (collect_ball) when the caller has it.
+/// `ball`: v's ball (collect_ball) when the caller has it; `worst`: the smallest tri_quality of
+/// its triangles when the caller has it.
 Outcome move_vertex(TriMesh& m, Id v, const Vec2& p, const SymMat2& metric, double param,
-                    double floor, const Ball* ball = nullptr);
+                    double floor, const Ball* ball = nullptr, const double* worst = nullptr);
 
 }  // namespace riemesh
