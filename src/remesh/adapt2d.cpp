@@ -3,6 +3,7 @@
 #include "remesh/adapt2d.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -77,22 +78,50 @@ struct Candidate {
 /// first length (ties by ids, so the order is deterministic). Only the selected edges have
 /// their length computed (compare_edge_length decides the others from cheap bounds).
 std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer) {
-  std::vector<Candidate> out;
+  // Sorted as pairs of integers: the bits of a positive double order as its value (flipped for
+  // the longest first), then (a, b) packed; the same order as comparing (length, a, b).
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> keys;
   const int want = longer ? 1 : -1;
+  const std::uint64_t flip = longer ? ~std::uint64_t{0} : 0;
   for_each_edge(m, [&](Id s) {
     const Id a = m.edge_from(s), b = m.edge_to(s);
-    if (compare_edge_length(m, a, b, limit) == want) out.push_back({edge_length(m, a, b), a, b});
+    if (compare_edge_length(m, a, b, limit) != want) return;
+    const double l = edge_length(m, a, b);
+    keys.push_back({std::bit_cast<std::uint64_t>(l) ^ flip,
+                    (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b)});
   });
-  std::sort(out.begin(), out.end(), [longer](const Candidate& x, const Candidate& y) {
-    if (x.length != y.length) return longer ? x.length > y.length : x.length < y.length;
-    return x.a != y.a ? x.a < y.a : x.b < y.b;
-  });
+  std::sort(keys.begin(), keys.end());
+  std::vector<Candidate> out(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    out[i] = {std::bit_cast<double>(keys[i].first ^ flip), static_cast<Id>(keys[i].second >> 32),
+              static_cast<Id>(keys[i].second & 0xffffffffu)};
   return out;
 }
 
+/// When each vertex last moved or had its ball re-cut by a split, collapse or swap (a sweep
+/// counter), so that each swap and smoothing sweep after the first of the run only revisits what
+/// changed since the previous one (of this pass or the last): an edge whose four quadrilateral
+/// vertices are unchanged since the previous swap sweep was refused then and would be refused
+/// again (the decision depends on nothing else); likewise a vertex whose ball vertices are all
+/// unchanged since the previous smoothing sweep.
+struct Changes {
+  std::vector<std::uint32_t> stamp;  // per vertex; 0: never
+  std::uint32_t now = 0;
+
+  /// Starts a sweep; returns its stamp.
+  std::uint32_t begin() { return ++now; }
+  void mark(Id v) {
+    if (stamp.size() <= static_cast<std::size_t>(v)) stamp.resize(static_cast<std::size_t>(v) + 1, 0);
+    stamp[v] = now;
+  }
+  bool since(Id v, std::uint32_t t) const {
+    return static_cast<std::size_t>(v) < stamp.size() && stamp[v] >= t;
+  }
+};
+
 /// Splits the edges longer than √2, longest first, sweep after sweep (a split's new edges wait
 /// for the next sweep, so every long edge is reached and none is halved twice in a sweep).
-long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
+long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
   TriMesh& m = ctx.mesh();
   long total = 0;
   // At most 3 sweeps a pass: refining a coarse mesh step by step, with collapses, swaps and
@@ -104,9 +133,12 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
     for (const Candidate& c : list) {
       const Id s = find_edge_slot(m, c.a, c.b);
       if (s == kNoId) continue;
+      const Id apex = m.tv[s], other_apex = m.tadj[s] == kNoId ? kNoId : m.tv[m.tadj[s]];
       Id created = kNoId;
       if (split_edge(m, s, ctx.split_point(s), 0.0, &created) == Outcome::kApplied) {
         ctx.inherit_hint(created, c.a);
+        for (const Id v : {c.a, c.b, apex, created}) changes.mark(v);
+        if (other_apex != kNoId) changes.mark(other_apex);
         ++done;
       } else {
         ++st.rejected;
@@ -125,7 +157,7 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st) {
 /// skips the edges it refused whose ends have not been touched by a collapse since: a collapse
 /// moves no vertex and changes the neighbours of the vertices of the removed vertex's ball only
 /// (all marked), so for the others the test would give the same answer.
-long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
+long collapse_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
   TriMesh& m = ctx.mesh();
   const CollapseLimits limits{0.3, 1.45};
   // Edges far below unit length (clusters of near-duplicate vertices left where a first run
@@ -136,12 +168,13 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
   // Candidates refused by length both ways, found in mesh order (vertex a first).
   std::vector<std::uint8_t> too_long(list.size(), 0);
   {
-    std::vector<std::size_t> order(list.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
-      return list[x].a != list[y].a ? list[x].a < list[y].a : x < y;
-    });
-    for (const std::size_t i : order) {
+    // (vertex a, index) packed in one integer: the same order as sorting the indices by a.
+    std::vector<std::uint64_t> order(list.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+      order[i] = (static_cast<std::uint64_t>(list[i].a) << 32) | i;
+    std::sort(order.begin(), order.end());
+    for (const std::uint64_t key : order) {
+      const std::size_t i = key & 0xffffffffu;
       const Candidate& c = list[i];
       const CollapseLimits& lim = c.length < 0.25 ? tiny : limits;
       too_long[i] = (m.frozen(c.a) || collapse_too_long(m, c.a, c.b, lim)) &&
@@ -167,8 +200,9 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
       collect_ball(m, from, ball);  // its vertices: those whose neighbours change if it goes
       around.clear();
       for (const Id t : ball.tris) around.insert(around.end(), &m.tv[3 * t], &m.tv[3 * t] + 3);
-      if (collapse_edge(m, s, from, to, c.length < 0.25 ? tiny : limits) == Outcome::kApplied) {
-        for (const Id v : around) touched[v] = 1;
+      if (collapse_edge(m, s, from, to, c.length < 0.25 ? tiny : limits, &ball) ==
+          Outcome::kApplied) {
+        for (const Id v : around) touched[v] = 1, changes.mark(v);
         applied = true;
         break;
       }
@@ -179,25 +213,6 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st) {
   return done;
 }
 
-/// When each vertex last moved or had its ball re-cut by a swap (a sweep counter), so that the
-/// second swap and smoothing sweeps of a pass only revisit what the first ones changed: an edge
-/// whose four quadrilateral vertices are unchanged since the previous swap sweep was refused
-/// then and would be refused again (the decision depends on nothing else); likewise a vertex
-/// whose ball vertices are all unchanged since the previous smoothing sweep.
-struct Changes {
-  std::vector<std::uint32_t> stamp;  // per vertex; 0: never
-  std::uint32_t now = 0;
-
-  /// Starts a sweep; returns its stamp.
-  std::uint32_t begin() { return ++now; }
-  void mark(Id v) {
-    if (stamp.size() <= static_cast<std::size_t>(v)) stamp.resize(static_cast<std::size_t>(v) + 1, 0);
-    stamp[v] = now;
-  }
-  bool since(Id v, std::uint32_t t) const {
-    return static_cast<std::size_t>(v) < stamp.size() && stamp[v] >= t;
-  }
-};
 
 /// One swap sweep; `since` > 0: only the edges with a quadrilateral vertex changed at or after
 /// that stamp (the others were refused by the sweep that began then).
@@ -229,9 +244,11 @@ long swap_sweep(TriMesh& m, PassStats& st, Changes& changes, std::uint32_t since
 long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since) {
   constexpr double kGoodBall = 0.9;
   TriMesh& m = ctx.mesh();
-  std::vector<float> quality(m.triangle_capacity(), 0.0f);
+  // Exact qualities (move_vertex takes the ball's worst from here); the good-ball test compares
+  // them rounded to float, as it always has.
+  std::vector<double> quality(m.triangle_capacity(), 0.0);
   for (std::size_t t = 0; t < m.triangle_capacity(); ++t)
-    if (m.tri_alive(static_cast<Id>(t))) quality[t] = static_cast<float>(tri_quality(m, static_cast<Id>(t)));
+    if (m.tri_alive(static_cast<Id>(t))) quality[t] = tri_quality(m, static_cast<Id>(t));
   thread_local Ball ball;
   long done = 0;
   for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
@@ -245,14 +262,19 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
       if (!changed) continue;
     }
     float worst = 1.0f;
-    for (const Id t : ball.tris) worst = std::min(worst, quality[t]);
+    double worst_exact = 2.0;
+    for (const Id t : ball.tris) {
+      worst = std::min(worst, static_cast<float>(quality[t]));
+      worst_exact = std::min(worst_exact, quality[t]);
+    }
     if (worst >= kGoodBall) continue;
     NewVertex target;
-    if (!ctx.smoothing_target(v, target)) continue;
-    if (move_vertex(m, v, target.p, target.metric, target.param, 0.6) == Outcome::kApplied) {
+    if (!ctx.smoothing_target(v, target, 0.0, &ball)) continue;
+    if (move_vertex(m, v, target.p, target.metric, target.param, 0.6, &ball, &worst_exact) ==
+        Outcome::kApplied) {
       ctx.inherit_hint(v, v);
       changes.mark(v);
-      for (const Id t : ball.tris) quality[t] = static_cast<float>(tri_quality(m, t));
+      for (const Id t : ball.tris) quality[t] = tri_quality(m, t);
       ++done;
     } else {
       ++st.rejected;
@@ -328,15 +350,15 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
   Changes changes;
+  std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the previous swap and smoothing sweeps
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();
     PassStats st;
     st.pass = pass;
     if (options.insert) {
-      st.splits = split_sweeps(ctx, st);
-      st.collapses = collapse_sweep(ctx, st);
+      st.splits = split_sweeps(ctx, st, changes);
+      st.collapses = collapse_sweep(ctx, st, changes);
     }
-    std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the first sweeps of this pass
     for (int k = 0; k < 2; ++k) {
       const std::uint32_t swap_stamp = changes.begin();
       if (options.swap) st.swaps += swap_sweep(m, st, changes, swap_from);

@@ -97,10 +97,15 @@ bool collapse_too_long(const TriMesh& m, Id from, Id to, const CollapseLimits& l
   return !lengths_ok(m, bfrom, from, to, lim);
 }
 
-Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& lim) {
-  thread_local Ball bfrom, bto;  // scratch reused across calls; never shared between threads
+Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& lim,
+                      const Ball* from_ball) {
+  thread_local Ball own, bto;  // scratch reused across calls; never shared between threads
   if (!features_ok(m, slot, from)) return Outcome::kRejectedTopology;
-  collect_ball(m, from, bfrom);
+  if (from_ball == nullptr) {
+    collect_ball(m, from, own);
+    from_ball = &own;
+  }
+  const Ball& bfrom = *from_ball;
   if (!lengths_ok(m, bfrom, from, to, lim)) return Outcome::kRejectedQuality;
   collect_ball(m, to, bto);
   if (!link_ok(m, slot, from, to, bfrom, bto)) return Outcome::kRejectedTopology;

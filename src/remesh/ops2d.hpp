@@ -75,7 +75,9 @@ struct CollapseLimits {
 
 /// Removes vertex `from` by merging it into `to` along the edge at `slot` (which joins them).
 /// Frozen vertices never go; a vertex on a feature curve only moves along its curve.
-Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& limits);
+/// `from_ball`: from's ball (collect_ball) when the caller has it.
+Outcome collapse_edge(TriMesh& m, Id slot, Id from, Id to, const CollapseLimits& limits,
+                      const Ball* from_ball = nullptr);
 
 /// True when collapse_edge(m, slot, from, to, limits) would be refused by its length test alone
 /// (a new edge (to, x) longer than limits.max_length). The test depends only on from's
@@ -88,7 +90,9 @@ Outcome swap_edge(TriMesh& m, Id slot, double min_gain);
 
 /// Moves vertex v to p (with its new metric and curve parameter) when every triangle of its ball
 /// stays valid and the smallest quality of the ball does not drop below min(old, floor).
+/// `ball`: v's ball (collect_ball) when the caller has it; `worst`: the smallest tri_quality of
+/// its triangles when the caller has it.
 Outcome move_vertex(TriMesh& m, Id v, const Vec2& p, const SymMat2& metric, double param,
-                    double floor);
+                    double floor, const Ball* ball = nullptr, const double* worst = nullptr);
 
 }  // namespace riemesh

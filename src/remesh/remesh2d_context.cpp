@@ -134,14 +134,17 @@ NewVertex Remesh2dContext::split_point(Id slot) const {
   return nv;
 }
 
-void Remesh2dContext::curve_neighbours(Id v, Id& prev, Id& next) const {
+void Remesh2dContext::curve_neighbours(Id v, Id& prev, Id& next, const Ball* ball) const {
   prev = next = kNoId;
-  thread_local Ball ball;
-  collect_ball(mesh_, v, ball);
+  thread_local Ball own;
+  if (ball == nullptr) {
+    collect_ball(mesh_, v, own);
+    ball = &own;
+  }
   const std::int32_t c = mesh_.vcurve[v];
   Id found[2] = {kNoId, kNoId};
   int n = 0;
-  for (const Id t : ball.tris) {
+  for (const Id t : ball->tris) {
     const int i = vertex_index(mesh_, t, v);
     const Id cand[2] = {mesh_.tv[3 * t + (i + 2) % 3], mesh_.tv[3 * t + (i + 1) % 3]};
     const Id slots[2] = {3 * t + (i + 1) % 3, 3 * t + (i + 2) % 3};
@@ -156,27 +159,31 @@ void Remesh2dContext::curve_neighbours(Id v, Id& prev, Id& next) const {
   next = first_before ? found[1] : found[0];
 }
 
-bool Remesh2dContext::smoothing_target(Id v, NewVertex& out, double min_move) const {
+bool Remesh2dContext::smoothing_target(Id v, NewVertex& out, double min_move,
+                                       const Ball* ball) const {
   if (mesh_.frozen(v)) return false;
   const std::int32_t c = mesh_.vcurve[v];
   if (c == kNoCurve) {
-    thread_local Ball ball;
-    collect_ball(mesh_, v, ball);
-    if (!ball.closed) return false;
+    thread_local Ball own;
+    if (ball == nullptr) {
+      collect_ball(mesh_, v, own);
+      ball = &own;
+    }
+    if (!ball->closed) return false;
     Vec2 sum = Vec2::zero();
-    for (const Id t : ball.tris) {
+    for (const Id t : ball->tris) {
       const Id x = mesh_.tv[3 * t + (vertex_index(mesh_, t, v) + 1) % 3];
       const double l = edge_length(mesh_, x, v);
       sum += mesh_.xy[x] + (mesh_.xy[v] - mesh_.xy[x]) / l;  // unit metric length from x
     }
-    out.p = sum / static_cast<double>(ball.tris.size());
+    out.p = sum / static_cast<double>(ball->tris.size());
     if (min_move > 0.0 && length(mesh_.metric[v], out.p - mesh_.xy[v]) < min_move) return false;
     out.curve = kNoCurve;
     out.metric = metric_for(out.p, kNoCurve, 0.0, v);
     return true;
   }
   Id prev, next;
-  curve_neighbours(v, prev, next);
+  curve_neighbours(v, prev, next, ball);
   if (prev == kNoId) return false;
   const BoundaryCurve& curve = curves_.curves[c];
   const double s = mesh_.vparam[v];

@@ -34,8 +34,9 @@ class Remesh2dContext {
   /// seen from its neighbours; on a curve: the curve point balancing the metric lengths to its
   /// two curve neighbours). False when v may not move, or when the move would be shorter than
   /// `min_move` in v's metric (then the background is not queried: that query is most of the
-  /// cost of smoothing a converged mesh).
-  bool smoothing_target(Id v, NewVertex& out, double min_move = 0.0) const;
+  /// cost of smoothing a converged mesh). `ball`: v's ball (collect_ball) when the caller has it.
+  bool smoothing_target(Id v, NewVertex& out, double min_move = 0.0,
+                        const Ball* ball = nullptr) const;
 
   /// For a collapse of `from` (on a curve) into `to`: true when the chord that replaces the two
   /// curve edges at `from` stays within hausd of the curve.
@@ -48,8 +49,9 @@ class Remesh2dContext {
  private:
   /// Parameter of vertex v on curve c, in the unwrapped branch nearest to `near`.
   double param_on(Id v, std::int32_t c, double near) const;
-  /// The two vertices joined to v by feature edges of v's curve (kNoId when missing).
-  void curve_neighbours(Id v, Id& prev, Id& next) const;
+  /// The two vertices joined to v by feature edges of v's curve (kNoId when missing); `ball`:
+  /// v's ball when the caller has it.
+  void curve_neighbours(Id v, Id& prev, Id& next, const Ball* ball = nullptr) const;
 
   Adapt2dOptions options_;
   BoundaryCurves curves_;

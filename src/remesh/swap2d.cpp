@@ -42,8 +42,12 @@ Outcome swap_edge(TriMesh& m, Id slot, double min_gain) {
   const double scale = std::abs(signed_area(pc, pa, pb)) + std::abs(signed_area(pd, pb, pa));
   if (!(signed_area(pc, pa, pd) > 1e-9 * scale && signed_area(pd, pb, pc) > 1e-9 * scale))
     return Outcome::kRejectedGeometry;
+  // Accepted when min(q1, q2) > before + min_gain; most edges of a settled mesh already fail
+  // on q1, so q2 is computed only when q1 passes (the same decision, NaNs included).
   const double before = std::min(tri_quality(m, c, a, b), tri_quality(m, d, b, a));
-  const double after = std::min(tri_quality(m, c, a, d), tri_quality(m, d, b, c));
+  const double q1 = tri_quality(m, c, a, d);
+  if (!(q1 > before + min_gain)) return Outcome::kRejectedQuality;
+  const double after = std::min(q1, tri_quality(m, d, b, c));
   if (!(after > before + min_gain)) return Outcome::kRejectedQuality;
 
   // Outer edges: t's b -> c and c -> a, u's a -> d and d -> b.
