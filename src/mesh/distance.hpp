@@ -52,6 +52,8 @@ class TriangleTree {
   /// tried first and, when not kNoId, receives the triangle found). Cheaper than nearest.
   bool within(const Vec3& p, double r, Id* hint = nullptr) const;
   std::size_t num_triangles() const { return tri_.size(); }
+  /// Triangle t (an index of the mesh's triangles) prepared for within() questions.
+  const TriangleProbe& probe(Id t) const { return tri_[static_cast<std::size_t>(t)]; }
   /// The triangles whose bounding boxes overlap the box [lo, hi], appended to `out`.
   void overlapping(const Vec3& lo, const Vec3& hi, std::vector<Id>& out) const;
 

@@ -135,6 +135,36 @@ void SurfaceProjection::check_points(const Vec3& lo, const Vec3& hi, std::vector
       }
 }
 
+bool SurfaceProjection::within(const Vec3& p, double r, Id* hint) const {
+  // Steps of the walk before the tree takes over: a new triangle's lattice points are a
+  // fraction of its edge apart, a few input triangles at most on a finely faceted input.
+  constexpr int kMaxSteps = 6;
+  const double r2 = r * r;
+  Id t = hint ? *hint : kNoId, prev = kNoId;
+  for (int step = 0; step < kMaxSteps && t != kNoId && static_cast<std::size_t>(t) < tri_tree_.num_triangles();
+       ++step) {
+    const TriangleProbe& tp = tri_tree_.probe(t);
+    if (tp.within(p, r, r2)) {
+      *hint = t;
+      return true;
+    }
+    if (!tp.flat) break;
+    // Across the edge whose line p is farthest outside of: edges ab, bc, ca are the faces
+    // opposite c, a, b (adjacency.hpp numbering).
+    const double s[3] = {dot(p - tp.a, tp.inward[0]), dot(p - tp.b, tp.inward[1]),
+                         dot(p - tp.c, tp.inward[2])};
+    int e = 0;
+    for (int k = 1; k < 3; ++k)
+      if (s[k] < s[e]) e = k;
+    if (s[e] >= 0.0) break;  // above the inside but too far from the plane
+    const Id next = adj_.elem2elem[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>((e + 2) % 3)];
+    if (next == prev) break;
+    prev = t;
+    t = next;
+  }
+  return tri_tree_.within(p, r, hint);
+}
+
 Vec3 SurfaceProjection::lift(const Vec3& flat, const Vec3& smooth) const {
   const Vec3 d = smooth - flat;
   const double l = norm(d);

@@ -42,8 +42,10 @@ class SurfaceProjection {
   Placed on_surface(const Vec3& p, Id hint, bool smooth = true) const;
   /// The point of the feature lines for p; `hint` is a nearby feature edge index or kNoId.
   Placed on_feature(const Vec3& p, Id hint, bool smooth = true) const;
-  /// Whether p is within r of the input polyhedron (`hint` as TriangleTree::within).
-  bool within(const Vec3& p, double r, Id* hint) const { return tri_tree_.within(p, r, hint); }
+  /// Whether p is within r of the input polyhedron (`hint` as TriangleTree::within). Walks
+  /// from the hint across the input's edges toward p first (a few steps: consecutive questions
+  /// come from nearby points), then asks the tree; the answer does not depend on the hint.
+  bool within(const Vec3& p, double r, Id* hint) const;
   /// Distance from p to the input polyhedron.
   double distance(const Vec3& p, Id hint = kNoId) const { return tri_tree_.nearest(p, hint).distance; }
 
