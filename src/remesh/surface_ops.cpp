@@ -107,7 +107,7 @@ double quality(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 Topology build_topology(const State& s) {
   Topology t;
-  t.adj = build_adjacency(s.tri, 3, s.num_vertices());
+  t.adj = build_edge_adjacency(s.tri, 3, s.num_vertices());  // the passes never cross faces
   t.edge_count.assign(t.adj.num_edges(), 0);
   t.edge_tris.assign(2 * t.adj.num_edges(), kNoId);
   for (std::size_t k = 0; k < t.adj.elem2edge.size(); ++k) {
