@@ -42,16 +42,25 @@ Mesh line_mesh(const Mesh& mesh, const std::vector<Id>& line_edges) {
 
 SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& features,
                                      std::vector<SymMat3> metric, double max_lift)
+    : SurfaceProjection(
+          input, features,
+          [&metric](const Mesh&, const Adjacency&, const SurfaceFeatures&,
+                    const std::vector<VertexCurvature>&) { return std::move(metric); },
+          max_lift) {}
+
+SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& features,
+                                     const MetricFromAnalysis& metric, double max_lift)
     : mesh_(input),
       adj_(build_adjacency(mesh_)),
       features_(detect_features(mesh_, adj_, features)),
       sectors_(surface_sectors(mesh_, adj_, features_)),
       tri_tree_(mesh_),
-      metric_(std::move(metric)),
       max_lift_(max_lift) {
+  const std::vector<VertexCurvature> fits = sector_curvatures(mesh_, adj_, features_, sectors_);
+  metric_ = metric(mesh_, adj_, features_, vertex_curvatures(mesh_.num_vertices(), sectors_, fits));
   if (metric_.size() != mesh_.num_vertices())
     throw InputError("SurfaceProjection: one metric per input vertex expected");
-  sectors_.normal = fitted_sector_normals(mesh_, adj_, features_, sectors_);
+  sectors_.normal = fitted_sector_normals(sectors_, fits);
   rec_ = std::make_unique<SurfaceReconstruction>(mesh_, adj_, features_, sectors_);
   for (std::size_t e = 0; e < adj_.num_edges(); ++e)
     if (features_.edge_feature[e])

@@ -9,6 +9,7 @@
 // most `max_lift` from the input polyhedron: on a finely faceted input the reconstruction is
 // followed; on a coarse one the output stays measurably close to the input (the distance that
 // `riemesh distance` reports, and that mmgs does not bound; PEERS.md).
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "mesh/adjacency.hpp"
 #include "mesh/distance.hpp"
 #include "mesh/mesh.hpp"
+#include "remesh/surface_curvature.hpp"
 #include "remesh/surface_features.hpp"
 #include "remesh/surface_reconstruction.hpp"
 
@@ -29,6 +31,12 @@ class SurfaceProjection {
   /// polyhedron.
   SurfaceProjection(const Mesh& input, const FeatureOptions& features,
                     std::vector<SymMat3> metric, double max_lift);
+  /// The metric computed from the analysis (mesh, adjacency, features, vertex curvatures) that
+  /// the projection makes anyway: the curvature fits are done once for both.
+  using MetricFromAnalysis = std::function<std::vector<SymMat3>(
+      const Mesh&, const Adjacency&, const SurfaceFeatures&, const std::vector<VertexCurvature>&)>;
+  SurfaceProjection(const Mesh& input, const FeatureOptions& features,
+                    const MetricFromAnalysis& metric, double max_lift);
   SurfaceProjection(const SurfaceProjection&) = delete;
   SurfaceProjection& operator=(const SurfaceProjection&) = delete;
 
