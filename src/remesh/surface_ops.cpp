@@ -23,15 +23,15 @@ constexpr double kSmoothEnough = 0.9;
 
 std::size_t us(Id i) { return static_cast<std::size_t>(i); }
 
-/// The neighbours of v (the other vertices of its ball), sorted, unique.
-std::vector<Id> neighbours(const State& s, const Adjacency& adj, Id v) {
-  std::vector<Id> n;
+/// The neighbours of v (the other vertices of its ball), sorted, unique, into n (scratch reused
+/// by the caller: the passes ask for thousands of balls).
+void neighbours(const State& s, const Adjacency& adj, Id v, std::vector<Id>& n) {
+  n.clear();
   for (Id t : ball(adj, v))
     for (int i = 0; i < 3; ++i)
       if (s.tri[3 * us(t) + i] != v) n.push_back(s.tri[3 * us(t) + i]);
   std::sort(n.begin(), n.end());
   n.erase(std::unique(n.begin(), n.end()), n.end());
-  return n;
 }
 
 bool any_dirty(std::span<const Id> tris, const std::vector<char>& dirty) {
@@ -227,7 +227,9 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const auto bv = ball(topo.adj, v), bw = ball(topo.adj, w);
   if (any_dirty(bv, dirty) || any_dirty(bw, dirty)) return false;
   // Link condition: the common neighbours of v and w are the apexes of the edge's triangles.
-  const std::vector<Id> nv = neighbours(s, topo.adj, v), nw = neighbours(s, topo.adj, w);
+  std::vector<Id> nv, nw;
+  neighbours(s, topo.adj, v, nv);
+  neighbours(s, topo.adj, w, nw);
   std::vector<Id> common;
   std::set_intersection(nv.begin(), nv.end(), nw.begin(), nw.end(), std::back_inserter(common));
   if (static_cast<int>(common.size()) != nt) return false;
@@ -364,6 +366,8 @@ std::size_t swap_pass(State& s) {
 std::size_t smooth_pass(State& s) {
   const Topology topo = build_topology(s);
   std::size_t count = 0;
+  std::vector<Id> nb;  // scratch reused from vertex to vertex
+  std::vector<Tri3> old_t, new_t;
   for (std::size_t vi = 0; vi < s.num_vertices(); ++vi) {
     const auto v = static_cast<Id>(vi);
     if (s.tag[vi] & (kTagCorner | kTagRequired)) continue;
@@ -378,7 +382,7 @@ std::size_t smooth_pass(State& s) {
       q_ball = std::min(q_ball, quality(tri_metric(s, t), c[0], c[1], c[2]));
     }
     if (q_ball >= kSmoothEnough) continue;
-    const std::vector<Id> nb = neighbours(s, topo.adj, v);
+    neighbours(s, topo.adj, v, nb);
     SurfaceProjection::Placed p;
     if (s.tag[vi] & kTagRidge) {
       Id line[2];
@@ -394,7 +398,8 @@ std::size_t smooth_pass(State& s) {
     }
     double q_old = 1.0, q_new = 1.0;
     bool ok = true;
-    std::vector<Tri3> old_t, new_t;
+    old_t.clear();
+    new_t.clear();
     for (Id t : bv) {
       Vec3 c[3], n[3];
       corners(s, t, v, s.x[vi], c);
