@@ -368,6 +368,9 @@ std::size_t smooth_pass(State& s) {
   std::size_t count = 0;
   std::vector<Id> nb;  // scratch reused from vertex to vertex
   std::vector<Tri3> old_t, new_t;
+  // Quality of each triangle, computed when first needed and forgotten when a corner moves
+  // (-1: unknown): every triangle is in three balls.
+  std::vector<double> tq(s.num_triangles(), -1.0);
   for (std::size_t vi = 0; vi < s.num_vertices(); ++vi) {
     const auto v = static_cast<Id>(vi);
     if (s.tag[vi] & (kTagCorner | kTagRequired)) continue;
@@ -377,9 +380,12 @@ std::size_t smooth_pass(State& s) {
     // projection and the Hausdorff checks).
     double q_ball = 1.0;
     for (Id t : bv) {
-      Vec3 c[3];
-      corners(s, t, v, s.x[vi], c);
-      q_ball = std::min(q_ball, quality(tri_metric(s, t), c[0], c[1], c[2]));
+      if (tq[us(t)] < 0.0) {
+        Vec3 c[3];
+        corners(s, t, v, s.x[vi], c);
+        tq[us(t)] = quality(tri_metric(s, t), c[0], c[1], c[2]);
+      }
+      q_ball = std::min(q_ball, tq[us(t)]);
     }
     if (q_ball >= kSmoothEnough) continue;
     neighbours(s, topo.adj, v, nb);
@@ -396,7 +402,8 @@ std::size_t smooth_pass(State& s) {
       for (Id x : nb) mean += s.x[us(x)];
       p = s.geo->on_surface(mean / static_cast<double>(nb.size()), s.surf_hint[vi]);
     }
-    double q_old = 1.0, q_new = 1.0;
+    const double q_old = q_ball;
+    double q_new = 1.0;
     bool ok = true;
     old_t.clear();
     new_t.clear();
@@ -406,7 +413,6 @@ std::size_t smooth_pass(State& s) {
       corners(s, t, v, p.point, n);
       old_t.push_back({c[0], c[1], c[2]});
       new_t.push_back({n[0], n[1], n[2]});
-      q_old = std::min(q_old, quality(tri_metric(s, t), c[0], c[1], c[2]));
       q_new = std::min(q_new, quality(tri_metric(s, t, v, &p.metric), n[0], n[1], n[2]));
       if (dot(tri_normal(c[0], c[1], c[2]), tri_normal(n[0], n[1], n[2])) < kCosTurn) ok = false;
       if (!ok) break;
@@ -417,6 +423,7 @@ std::size_t smooth_pass(State& s) {
       continue;
     s.x[vi] = p.point;
     s.m[vi] = p.metric;
+    for (Id t : bv) tq[us(t)] = -1.0;
     if (s.tag[vi] & kTagRidge) s.line_hint[vi] = p.hint;
     else s.surf_hint[vi] = p.hint;
     ++count;
