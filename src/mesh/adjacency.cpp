@@ -167,7 +167,7 @@ void build_edges(Adjacency& adj, const std::vector<Id>& s) {
 namespace {
 
 Adjacency build(const std::vector<Id>& simplices, int verts_per_simplex,
-                std::size_t num_vertices, bool with_edges) {
+                std::size_t num_vertices, bool with_edges, bool with_neighbours = true) {
   const int k = verts_per_simplex;
   if (k != 3 && k != 4)
     throw InputError("build_adjacency: verts_per_simplex must be 3 or 4, got " + std::to_string(k));
@@ -187,10 +187,10 @@ Adjacency build(const std::vector<Id>& simplices, int verts_per_simplex,
   adj.num_vertices = num_vertices;
   build_vert2elem(adj, simplices, k);
   if (k == 4) {
-    build_neighbours<4>(adj, simplices);
+    if (with_neighbours) build_neighbours<4>(adj, simplices);
     if (with_edges) build_edges<4>(adj, simplices);
   } else {
-    build_neighbours<3>(adj, simplices);
+    if (with_neighbours) build_neighbours<3>(adj, simplices);
     if (with_edges) build_edges<3>(adj, simplices);
   }
   return adj;
@@ -206,6 +206,11 @@ Adjacency build_adjacency(const std::vector<Id>& simplices, int verts_per_simple
 Adjacency build_face_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
                                std::size_t num_vertices) {
   return build(simplices, verts_per_simplex, num_vertices, false);
+}
+
+Adjacency build_edge_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
+                               std::size_t num_vertices) {
+  return build(simplices, verts_per_simplex, num_vertices, true, false);
 }
 
 Adjacency build_adjacency(const Mesh& mesh) {

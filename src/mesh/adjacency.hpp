@@ -61,6 +61,11 @@ Adjacency build_adjacency(const std::vector<Id>& simplices, int verts_per_simple
 Adjacency build_face_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
                                std::size_t num_vertices);
 
+/// As build_adjacency without the neighbours (elem2elem and nonmanifold_faces empty, so
+/// num_elements() is 0): the vertex balls and the edges only, for callers that rebuild their
+/// topology often and never walk across faces (the surface remesher's passes).
+Adjacency build_edge_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
+                               std::size_t num_vertices);
 /// The elements of the mesh's main simplex array (tets of a volume, triangles otherwise).
 Adjacency build_adjacency(const Mesh& mesh);
 

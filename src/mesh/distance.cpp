@@ -99,18 +99,6 @@ TriangleProbe::TriangleProbe(const Vec3& pa, const Vec3& pb, const Vec3& pc) : a
   }
 }
 
-bool TriangleProbe::within(const Vec3& p, double r, double r2) const {
-  if (flat) {
-    if (std::abs(dot(p - a, n)) > r) return false;
-    // Signed distances to the edge lines: all >= 0, the projection is inside and the distance is
-    // the plane's; one below -r, the point is farther than r.
-    const double s0 = dot(p - a, inward[0]), s1 = dot(p - b, inward[1]), s2 = dot(p - c, inward[2]);
-    if (s0 < -r || s1 < -r || s2 < -r) return false;
-    if (s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0) return true;
-  }
-  return dist2(p, closest_point_on_triangle(p, a, b, c)) <= r2;
-}
-
 TriangleTree::TriangleTree(const Mesh& mesh) {
   require_triangles_3d(mesh);
   const std::size_t nt = mesh.num_triangles();

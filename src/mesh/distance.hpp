@@ -2,6 +2,7 @@
 // Distances between triangle surfaces in 3D: exact point–triangle distance, an AABB tree for
 // nearest-triangle queries, and the sampled one-sided and two-sided Hausdorff distances used to
 // measure how far a remeshed surface strays from its input (issue #6).
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -27,8 +28,21 @@ struct TriangleProbe {
 
   TriangleProbe() = default;
   TriangleProbe(const Vec3& pa, const Vec3& pb, const Vec3& pc);
-  /// Whether dist(p, abc) <= r (r2 = r²), exact up to rounding.
-  bool within(const Vec3& p, double r, double r2) const;
+  /// Whether dist(p, abc) <= r (r2 = r²), exact up to rounding. Inline: the Hausdorff checks
+  /// of the surface remesher ask it millions of times.
+  bool within(const Vec3& p, double r, double r2) const {
+    if (flat) {
+      const Vec3 pa = p - a;
+      if (std::abs(dot(pa, n)) > r) return false;
+      // Signed distances to the edge lines: all >= 0, the projection is inside and the distance
+      // is the plane's; one below -r, the point is farther than r.
+      const double s0 = dot(pa, inward[0]), s1 = dot(p - b, inward[1]), s2 = dot(p - c, inward[2]);
+      if (s0 < -r || s1 < -r || s2 < -r) return false;
+      if (s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0) return true;
+    }
+    const Vec3 d = p - closest_point_on_triangle(p, a, b, c);
+    return dot(d, d) <= r2;
+  }
 };
 
 /// Bounding-volume hierarchy (axis-aligned boxes, median splits) over the triangles of a mesh,
@@ -52,6 +66,8 @@ class TriangleTree {
   /// tried first and, when not kNoId, receives the triangle found). Cheaper than nearest.
   bool within(const Vec3& p, double r, Id* hint = nullptr) const;
   std::size_t num_triangles() const { return tri_.size(); }
+  /// Triangle t (an index of the mesh's triangles) prepared for within() questions.
+  const TriangleProbe& probe(Id t) const { return tri_[static_cast<std::size_t>(t)]; }
   /// The triangles whose bounding boxes overlap the box [lo, hi], appended to `out`.
   void overlapping(const Vec3& lo, const Vec3& hi, std::vector<Id>& out) const;
 

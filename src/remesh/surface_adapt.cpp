@@ -26,7 +26,10 @@ constexpr double kBadQuality = 0.3;
 /// Largest number of consecutive split (or collapse) passes in one cycle.
 constexpr int kInnerPasses = 8;
 
-std::vector<SymMat3> vertex_metrics(const Mesh& input, const SurfaceAdaptOptions& o) {
+std::vector<SymMat3> vertex_metrics(const Mesh& input, const Adjacency& adj,
+                                    const SurfaceFeatures& features,
+                                    const std::vector<VertexCurvature>& curvature,
+                                    const SurfaceAdaptOptions& o) {
   SurfaceMetricOptions m;
   m.hausd = kCentroidFactor * o.hausd;
   m.hmin = o.hmin;
@@ -37,7 +40,7 @@ std::vector<SymMat3> vertex_metrics(const Mesh& input, const SurfaceAdaptOptions
   m.anisotropic = o.anisotropic;
   m.beta_fraction = o.beta_fraction;
   m.user_metric = &o.metric;
-  std::vector<SymMat3> metric = geometric_surface_metric(input, m, o.features);
+  std::vector<SymMat3> metric = geometric_surface_metric(input, adj, features, curvature, m);
   if (!o.anisotropic)  // isotropic: the smallest principal size in every direction
     for (SymMat3& x : metric) x = SymMat3::diagonal(eigen(x).values[2]);
   return metric;
@@ -119,8 +122,14 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
     throw InputError("adapt_surface: need a surface mesh (3D triangles, no tetrahedra)");
   if (!options.metric.empty() && options.metric.size() != input.num_vertices())
     throw InputError("adapt_surface: the metric needs one tensor per input vertex");
-  const SurfaceProjection geo(input, options.features, vertex_metrics(input, options),
-                              0.5 * options.hausd);
+  // The metric from the projection's own analysis (features and curvature computed once).
+  const SurfaceProjection geo(
+      input, options.features,
+      [&options](const Mesh& mesh, const Adjacency& adj, const SurfaceFeatures& f,
+                 const std::vector<VertexCurvature>& curvature) {
+        return vertex_metrics(mesh, adj, f, curvature, options);
+      },
+      0.5 * options.hausd);
   State s = initial_state(input, geo);
   s.geo = &geo;
   s.opt = &options;

@@ -142,47 +142,59 @@ void require_built(const Mesh& mesh, const Adjacency& adj, const SurfaceFeatures
 
 }  // namespace
 
-std::vector<Vec3> fitted_sector_normals(const Mesh& mesh, const Adjacency& adj,
-                                        const SurfaceFeatures& features,
-                                        const SurfaceSectors& sectors) {
+std::vector<VertexCurvature> sector_curvatures(const Mesh& mesh, const Adjacency& adj,
+                                               const SurfaceFeatures& features,
+                                               const SurfaceSectors& sectors) {
   require_built(mesh, adj, features, sectors);
-  std::vector<Vec3> n = sectors.normal;
+  std::vector<VertexCurvature> out(sectors.num_sectors());
   Gather g = make_gather(mesh);
   std::vector<Vec3> pts;
   for (std::size_t sec = 0; sec < sectors.num_sectors(); ++sec) {
     const Id v = sectors.sector2vert[sec];
     gather_points(mesh, adj, features, sectors, v, static_cast<Id>(sec), g, pts);
-    const VertexCurvature c = fit_quadric(vertex_at(mesh, v), sectors.normal[sec], pts);
-    if (c.fitted) n[sec] = normalize(c.geometry.normal);
+    out[sec] = fit_quadric(vertex_at(mesh, v), sectors.normal[sec], pts);
   }
+  return out;
+}
+
+std::vector<Vec3> fitted_sector_normals(const SurfaceSectors& sectors,
+                                        const std::vector<VertexCurvature>& fits) {
+  std::vector<Vec3> n = sectors.normal;
+  for (std::size_t sec = 0; sec < sectors.num_sectors(); ++sec)
+    if (fits[sec].fitted) n[sec] = normalize(fits[sec].geometry.normal);
   return n;
 }
 
-std::vector<VertexCurvature> vertex_curvatures(const Mesh& mesh, const Adjacency& adj,
-                                               const SurfaceFeatures& features,
-                                               const SurfaceSectors& sectors) {
-  const std::size_t nv = mesh.num_vertices();
-  require_built(mesh, adj, features, sectors);
+std::vector<Vec3> fitted_sector_normals(const Mesh& mesh, const Adjacency& adj,
+                                        const SurfaceFeatures& features,
+                                        const SurfaceSectors& sectors) {
+  return fitted_sector_normals(sectors, sector_curvatures(mesh, adj, features, sectors));
+}
+
+std::vector<VertexCurvature> vertex_curvatures(std::size_t num_vertices, const SurfaceSectors& sectors,
+                                               const std::vector<VertexCurvature>& fits) {
   // Vertices of no triangle keep a flat frame (zero curvature, not fitted).
   VertexCurvature unused;
   unused.geometry = flat_geometry(Vec3::unit(2), Vec3::unit(0), Vec3::unit(1));
-  std::vector<VertexCurvature> out(nv, unused);
-  Gather g = make_gather(mesh);
-  std::vector<Vec3> pts;
+  std::vector<VertexCurvature> out(num_vertices, unused);
   std::size_t sec = 0;
-  for (std::size_t v = 0; v < nv; ++v) {
+  for (std::size_t v = 0; v < num_vertices; ++v) {
     bool first = true;
     // Sectors of a vertex are numbered consecutively (surface_sectors).
     for (; sec < sectors.num_sectors() && sectors.sector2vert[sec] == static_cast<Id>(v); ++sec) {
-      gather_points(mesh, adj, features, sectors, static_cast<Id>(v), static_cast<Id>(sec), g,
-                    pts);
-      const VertexCurvature c = fit_quadric(vertex_at(mesh, static_cast<Id>(v)),
-                                            sectors.normal[sec], pts);
+      const VertexCurvature& c = fits[sec];
       if (first || std::abs(c.geometry.k1) > std::abs(out[v].geometry.k1)) out[v] = c;
       first = false;
     }
   }
   return out;
+}
+
+std::vector<VertexCurvature> vertex_curvatures(const Mesh& mesh, const Adjacency& adj,
+                                               const SurfaceFeatures& features,
+                                               const SurfaceSectors& sectors) {
+  return vertex_curvatures(mesh.num_vertices(), sectors,
+                           sector_curvatures(mesh, adj, features, sectors));
 }
 
 }  // namespace riemesh

@@ -56,4 +56,16 @@ std::vector<Vec3> fitted_sector_normals(const Mesh& mesh, const Adjacency& adj,
                                         const SurfaceFeatures& features,
                                         const SurfaceSectors& sectors);
 
+/// The quadric fit of every sector (frame normal: the sector's angle-weighted normal), from
+/// which vertex_curvatures and fitted_sector_normals derive: callers needing both fit once.
+std::vector<VertexCurvature> sector_curvatures(const Mesh& mesh, const Adjacency& adj,
+                                               const SurfaceFeatures& features,
+                                               const SurfaceSectors& sectors);
+/// vertex_curvatures from the fits of sector_curvatures.
+std::vector<VertexCurvature> vertex_curvatures(std::size_t num_vertices, const SurfaceSectors& sectors,
+                                               const std::vector<VertexCurvature>& fits);
+/// fitted_sector_normals from the fits of sector_curvatures.
+std::vector<Vec3> fitted_sector_normals(const SurfaceSectors& sectors,
+                                        const std::vector<VertexCurvature>& fits);
+
 }  // namespace riemesh

@@ -23,15 +23,15 @@ constexpr double kSmoothEnough = 0.9;
 
 std::size_t us(Id i) { return static_cast<std::size_t>(i); }
 
-/// The neighbours of v (the other vertices of its ball), sorted, unique.
-std::vector<Id> neighbours(const State& s, const Adjacency& adj, Id v) {
-  std::vector<Id> n;
+/// The neighbours of v (the other vertices of its ball), sorted, unique, into n (scratch reused
+/// by the caller: the passes ask for thousands of balls).
+void neighbours(const State& s, const Adjacency& adj, Id v, std::vector<Id>& n) {
+  n.clear();
   for (Id t : ball(adj, v))
     for (int i = 0; i < 3; ++i)
       if (s.tri[3 * us(t) + i] != v) n.push_back(s.tri[3 * us(t) + i]);
   std::sort(n.begin(), n.end());
   n.erase(std::unique(n.begin(), n.end()), n.end());
-  return n;
 }
 
 bool any_dirty(std::span<const Id> tris, const std::vector<char>& dirty) {
@@ -107,7 +107,7 @@ double quality(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 Topology build_topology(const State& s) {
   Topology t;
-  t.adj = build_adjacency(s.tri, 3, s.num_vertices());
+  t.adj = build_edge_adjacency(s.tri, 3, s.num_vertices());  // the passes never cross faces
   t.edge_count.assign(t.adj.num_edges(), 0);
   t.edge_tris.assign(2 * t.adj.num_edges(), kNoId);
   for (std::size_t k = 0; k < t.adj.elem2edge.size(); ++k) {
@@ -227,7 +227,9 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const auto bv = ball(topo.adj, v), bw = ball(topo.adj, w);
   if (any_dirty(bv, dirty) || any_dirty(bw, dirty)) return false;
   // Link condition: the common neighbours of v and w are the apexes of the edge's triangles.
-  const std::vector<Id> nv = neighbours(s, topo.adj, v), nw = neighbours(s, topo.adj, w);
+  std::vector<Id> nv, nw;
+  neighbours(s, topo.adj, v, nv);
+  neighbours(s, topo.adj, w, nw);
   std::vector<Id> common;
   std::set_intersection(nv.begin(), nv.end(), nw.begin(), nw.end(), std::back_inserter(common));
   if (static_cast<int>(common.size()) != nt) return false;
@@ -364,6 +366,11 @@ std::size_t swap_pass(State& s) {
 std::size_t smooth_pass(State& s) {
   const Topology topo = build_topology(s);
   std::size_t count = 0;
+  std::vector<Id> nb;  // scratch reused from vertex to vertex
+  std::vector<Tri3> old_t, new_t;
+  // Quality of each triangle, computed when first needed and forgotten when a corner moves
+  // (-1: unknown): every triangle is in three balls.
+  std::vector<double> tq(s.num_triangles(), -1.0);
   for (std::size_t vi = 0; vi < s.num_vertices(); ++vi) {
     const auto v = static_cast<Id>(vi);
     if (s.tag[vi] & (kTagCorner | kTagRequired)) continue;
@@ -373,12 +380,15 @@ std::size_t smooth_pass(State& s) {
     // projection and the Hausdorff checks).
     double q_ball = 1.0;
     for (Id t : bv) {
-      Vec3 c[3];
-      corners(s, t, v, s.x[vi], c);
-      q_ball = std::min(q_ball, quality(tri_metric(s, t), c[0], c[1], c[2]));
+      if (tq[us(t)] < 0.0) {
+        Vec3 c[3];
+        corners(s, t, v, s.x[vi], c);
+        tq[us(t)] = quality(tri_metric(s, t), c[0], c[1], c[2]);
+      }
+      q_ball = std::min(q_ball, tq[us(t)]);
     }
     if (q_ball >= kSmoothEnough) continue;
-    const std::vector<Id> nb = neighbours(s, topo.adj, v);
+    neighbours(s, topo.adj, v, nb);
     SurfaceProjection::Placed p;
     if (s.tag[vi] & kTagRidge) {
       Id line[2];
@@ -392,16 +402,17 @@ std::size_t smooth_pass(State& s) {
       for (Id x : nb) mean += s.x[us(x)];
       p = s.geo->on_surface(mean / static_cast<double>(nb.size()), s.surf_hint[vi]);
     }
-    double q_old = 1.0, q_new = 1.0;
+    const double q_old = q_ball;
+    double q_new = 1.0;
     bool ok = true;
-    std::vector<Tri3> old_t, new_t;
+    old_t.clear();
+    new_t.clear();
     for (Id t : bv) {
       Vec3 c[3], n[3];
       corners(s, t, v, s.x[vi], c);
       corners(s, t, v, p.point, n);
       old_t.push_back({c[0], c[1], c[2]});
       new_t.push_back({n[0], n[1], n[2]});
-      q_old = std::min(q_old, quality(tri_metric(s, t), c[0], c[1], c[2]));
       q_new = std::min(q_new, quality(tri_metric(s, t, v, &p.metric), n[0], n[1], n[2]));
       if (dot(tri_normal(c[0], c[1], c[2]), tri_normal(n[0], n[1], n[2])) < kCosTurn) ok = false;
       if (!ok) break;
@@ -412,6 +423,7 @@ std::size_t smooth_pass(State& s) {
       continue;
     s.x[vi] = p.point;
     s.m[vi] = p.metric;
+    for (Id t : bv) tq[us(t)] = -1.0;
     if (s.tag[vi] & kTagRidge) s.line_hint[vi] = p.hint;
     else s.surf_hint[vi] = p.hint;
     ++count;

@@ -42,16 +42,25 @@ Mesh line_mesh(const Mesh& mesh, const std::vector<Id>& line_edges) {
 
 SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& features,
                                      std::vector<SymMat3> metric, double max_lift)
+    : SurfaceProjection(
+          input, features,
+          [&metric](const Mesh&, const Adjacency&, const SurfaceFeatures&,
+                    const std::vector<VertexCurvature>&) { return std::move(metric); },
+          max_lift) {}
+
+SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& features,
+                                     const MetricFromAnalysis& metric, double max_lift)
     : mesh_(input),
       adj_(build_adjacency(mesh_)),
       features_(detect_features(mesh_, adj_, features)),
       sectors_(surface_sectors(mesh_, adj_, features_)),
       tri_tree_(mesh_),
-      metric_(std::move(metric)),
       max_lift_(max_lift) {
+  const std::vector<VertexCurvature> fits = sector_curvatures(mesh_, adj_, features_, sectors_);
+  metric_ = metric(mesh_, adj_, features_, vertex_curvatures(mesh_.num_vertices(), sectors_, fits));
   if (metric_.size() != mesh_.num_vertices())
     throw InputError("SurfaceProjection: one metric per input vertex expected");
-  sectors_.normal = fitted_sector_normals(mesh_, adj_, features_, sectors_);
+  sectors_.normal = fitted_sector_normals(sectors_, fits);
   rec_ = std::make_unique<SurfaceReconstruction>(mesh_, adj_, features_, sectors_);
   for (std::size_t e = 0; e < adj_.num_edges(); ++e)
     if (features_.edge_feature[e])
@@ -133,6 +142,36 @@ void SurfaceProjection::check_points(const Vec3& lo, const Vec3& hi, std::vector
           if (inside) out.push_back(p);
         }
       }
+}
+
+bool SurfaceProjection::within(const Vec3& p, double r, Id* hint) const {
+  // Steps of the walk before the tree takes over: a new triangle's lattice points are a
+  // fraction of its edge apart, a few input triangles at most on a finely faceted input.
+  constexpr int kMaxSteps = 6;
+  const double r2 = r * r;
+  Id t = hint ? *hint : kNoId, prev = kNoId;
+  for (int step = 0; step < kMaxSteps && t != kNoId && static_cast<std::size_t>(t) < tri_tree_.num_triangles();
+       ++step) {
+    const TriangleProbe& tp = tri_tree_.probe(t);
+    if (tp.within(p, r, r2)) {
+      *hint = t;
+      return true;
+    }
+    if (!tp.flat) break;
+    // Across the edge whose line p is farthest outside of: edges ab, bc, ca are the faces
+    // opposite c, a, b (adjacency.hpp numbering).
+    const double s[3] = {dot(p - tp.a, tp.inward[0]), dot(p - tp.b, tp.inward[1]),
+                         dot(p - tp.c, tp.inward[2])};
+    int e = 0;
+    for (int k = 1; k < 3; ++k)
+      if (s[k] < s[e]) e = k;
+    if (s[e] >= 0.0) break;  // above the inside but too far from the plane
+    const Id next = adj_.elem2elem[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>((e + 2) % 3)];
+    if (next == prev) break;
+    prev = t;
+    t = next;
+  }
+  return tri_tree_.within(p, r, hint);
 }
 
 Vec3 SurfaceProjection::lift(const Vec3& flat, const Vec3& smooth) const {

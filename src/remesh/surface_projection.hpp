@@ -9,6 +9,7 @@
 // most `max_lift` from the input polyhedron: on a finely faceted input the reconstruction is
 // followed; on a coarse one the output stays measurably close to the input (the distance that
 // `riemesh distance` reports, and that mmgs does not bound; PEERS.md).
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "mesh/adjacency.hpp"
 #include "mesh/distance.hpp"
 #include "mesh/mesh.hpp"
+#include "remesh/surface_curvature.hpp"
 #include "remesh/surface_features.hpp"
 #include "remesh/surface_reconstruction.hpp"
 
@@ -29,6 +31,12 @@ class SurfaceProjection {
   /// polyhedron.
   SurfaceProjection(const Mesh& input, const FeatureOptions& features,
                     std::vector<SymMat3> metric, double max_lift);
+  /// The metric computed from the analysis (mesh, adjacency, features, vertex curvatures) that
+  /// the projection makes anyway: the curvature fits are done once for both.
+  using MetricFromAnalysis = std::function<std::vector<SymMat3>(
+      const Mesh&, const Adjacency&, const SurfaceFeatures&, const std::vector<VertexCurvature>&)>;
+  SurfaceProjection(const Mesh& input, const FeatureOptions& features,
+                    const MetricFromAnalysis& metric, double max_lift);
   SurfaceProjection(const SurfaceProjection&) = delete;
   SurfaceProjection& operator=(const SurfaceProjection&) = delete;
 
@@ -42,8 +50,10 @@ class SurfaceProjection {
   Placed on_surface(const Vec3& p, Id hint, bool smooth = true) const;
   /// The point of the feature lines for p; `hint` is a nearby feature edge index or kNoId.
   Placed on_feature(const Vec3& p, Id hint, bool smooth = true) const;
-  /// Whether p is within r of the input polyhedron (`hint` as TriangleTree::within).
-  bool within(const Vec3& p, double r, Id* hint) const { return tri_tree_.within(p, r, hint); }
+  /// Whether p is within r of the input polyhedron (`hint` as TriangleTree::within). Walks
+  /// from the hint across the input's edges toward p first (a few steps: consecutive questions
+  /// come from nearby points), then asks the tree; the answer does not depend on the hint.
+  bool within(const Vec3& p, double r, Id* hint) const;
   /// Distance from p to the input polyhedron.
   double distance(const Vec3& p, Id hint = kNoId) const { return tri_tree_.nearest(p, hint).distance; }
 
