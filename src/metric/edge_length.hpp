@@ -72,6 +72,21 @@ inline double edge_length_geometric(const SymMat<D>& ma, const SymMat<D>& mb, co
   return std::sqrt(la * lb) * detail::sinhc(0.5 * std::log(la / lb));
 }
 
+/// The sign of edge_length_geometric(ma, mb, ab) − limit (0 only when equal), computing the
+/// logarithm only when needed: the closed form is the logarithmic mean of the end lengths l_A,
+/// l_B, which lies between their geometric and arithmetic means, and on a converged mesh those
+/// bounds already decide most comparisons (the margin of 1e-12 keeps every decision that of the
+/// exact value). The remeshers' split and collapse length tests (2D and 3D).
+template <int D>
+inline int compare_edge_length_geometric(const SymMat<D>& ma, const SymMat<D>& mb,
+                                         const Vec<D>& ab, double limit) {
+  const double la = length(ma, ab), lb = length(mb, ab);
+  if (std::sqrt(la * lb) > limit * (1.0 + 1e-12)) return 1;
+  if (0.5 * (la + lb) < limit * (1.0 - 1e-12)) return -1;
+  const double l = la == lb ? la : std::sqrt(la * lb) * detail::sinhc(0.5 * std::log(la / lb));
+  return l > limit ? 1 : (l < limit ? -1 : 0);
+}
+
 /// Edge length by `points`-point Gauss–Legendre quadrature (1..8) of the field interpolated
 /// between ma (at A) and mb (at B) with scheme s. Throws InputError for other point counts.
 template <int D>

@@ -92,11 +92,8 @@ std::vector<ShortEdge> edges_shorter_than(const TetMesh& m, const NeighbourTable
     for (const Id b : neighbours(m, a, nbrs, scratch)) {
       if (b < a) continue;
       const Vec3 ab = m.xyz[b] - m.xyz[a];
-      // The logarithmic mean is at least the geometric one.
-      if (std::sqrt(length(m.metric[a], ab) * length(m.metric[b], ab)) > below * (1.0 + 1e-12))
-        continue;
-      const double l = edge_length(m, a, b);
-      if (l < below) out.push_back({l, a, b});
+      if (compare_edge_length_geometric(m.metric[a], m.metric[b], ab, below) < 0)
+        out.push_back({edge_length(m, a, b), a, b});
     }
   }
   sort_candidates(out, false);

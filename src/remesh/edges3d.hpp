@@ -151,9 +151,4 @@ void for_each_edge_at(const TetMesh& m, std::span<const Id> verts,
   }
 }
 
-/// Metric length of edge (a, b) as the enumerations compute it: from the lower id.
-inline double listed_length(const TetMesh& m, Id a, Id b) {
-  return a < b ? edge_length(m, a, b) : edge_length(m, b, a);
-}
-
 }  // namespace riemesh

@@ -17,17 +17,10 @@ inline double edge_length(const TriMesh& m, Id a, Id b) {
   return edge_length_geometric(m.metric[a], m.metric[b], m.xy[b] - m.xy[a]);
 }
 
-/// The sign of edge_length(m, a, b) − limit (0 only when equal), computing the logarithm only
-/// when needed: the closed form is the logarithmic mean of the end lengths l_a, l_b, which lies
-/// between their geometric and arithmetic means, and on a converged mesh those bounds already
-/// decide most comparisons (the margin of 1e-12 keeps every decision that of the exact value).
+/// The sign of edge_length(m, a, b) − limit (0 only when equal), the logarithm only when needed
+/// (compare_edge_length_geometric).
 inline int compare_edge_length(const TriMesh& m, Id a, Id b, double limit) {
-  const Vec2 ab = m.xy[b] - m.xy[a];
-  const double la = length(m.metric[a], ab), lb = length(m.metric[b], ab);
-  if (std::sqrt(la * lb) > limit * (1.0 + 1e-12)) return 1;
-  if (0.5 * (la + lb) < limit * (1.0 - 1e-12)) return -1;
-  const double l = la == lb ? la : std::sqrt(la * lb) * detail::sinhc(0.5 * std::log(la / lb));
-  return l > limit ? 1 : (l < limit ? -1 : 0);
+  return compare_edge_length_geometric(m.metric[a], m.metric[b], m.xy[b] - m.xy[a], limit);
 }
 
 /// Mean-ratio quality 4√3 |K|_M / Σ l_M² of triangle (pa, pb, pc) in the metric `mm` (1 for the

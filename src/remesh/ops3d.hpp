@@ -22,16 +22,10 @@ inline double edge_length(const TetMesh& m, Id a, Id b) {
   return edge_length_geometric(m.metric[a], m.metric[b], m.xyz[b] - m.xyz[a]);
 }
 
-/// Whether edge_length(m, a, b) > limit, computing the logarithm only when needed: the closed
-/// form is the logarithmic mean of the end lengths l_a, l_b, which lies between their geometric
-/// and arithmetic means; on a converged mesh those bounds decide most comparisons (the margin of
-/// 1e-12 keeps every decision that of the exact value, computed otherwise). As in 2D.
+/// Whether edge_length(m, a, b) > limit, the logarithm only when needed
+/// (compare_edge_length_geometric, as in 2D).
 inline bool edge_longer_than(const TetMesh& m, Id a, Id b, double limit) {
-  const Vec3 ab = m.xyz[b] - m.xyz[a];
-  const double la = length(m.metric[a], ab), lb = length(m.metric[b], ab);
-  if (std::sqrt(la * lb) > limit * (1.0 + 1e-12)) return true;
-  if (0.5 * (la + lb) < limit * (1.0 - 1e-12)) return false;
-  return edge_length(m, a, b) > limit;
+  return compare_edge_length_geometric(m.metric[a], m.metric[b], m.xyz[b] - m.xyz[a], limit) > 0;
 }
 
 /// Mean-ratio quality 12 (3 |K|_M)^{2/3} / Σ l_M² of tet (p0..p3) in the metric mm (1 for the
