@@ -33,6 +33,7 @@ struct AdaptArgs {
   double hsiz = 0.0, complexity = 0.0, aniso_max = std::numeric_limits<double>::infinity();
   bool optim = false, noinsert = false, noswap = false, nomove = false, nr = false;
   bool quiet = false, aniso = false, nosurf = false;
+  double approach = Adapt3dOptions{}.approach_growth;
   int verbosity = 0;
   Adapt2dOptions opt;
 };
@@ -106,8 +107,10 @@ std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
 }
 
 void print_pass(const PassStats& s, int verbosity, const char* elements = "triangles") {
-  std::fprintf(stderr, "pass %2d: %zu vertices %zu %s, lengths in [1/√2, √2] %.1f%%, q_min %.3f (%.2f s)\n",
-               s.pass, s.vertices, s.triangles, elements, 100.0 * s.len_in, s.q_min, s.seconds);
+  char stage[48] = "";
+  if (s.stages > 1) std::snprintf(stage, sizeof stage, " (toward the metric: stage %d/%d)", s.stage, s.stages);
+  std::fprintf(stderr, "pass %2d%s: %zu vertices %zu %s, lengths in [1/√2, √2] %.1f%%, q_min %.3f (%.2f s)\n",
+               s.pass, stage, s.vertices, s.triangles, elements, 100.0 * s.len_in, s.q_min, s.seconds);
   if (verbosity > 0)
     std::fprintf(stderr,
                  "         %ld splits %ld collapses %ld swaps %ld moves %ld refused; length "
@@ -181,6 +184,9 @@ void run3d(const AdaptArgs& a, Mesh&& mesh) {
   Adapt3dOptions opt;
   static_cast<Adapt2dOptions&>(opt) = a.opt;
   opt.keep_surface = a.nosurf;
+  if (!(a.approach == 0.0 || a.approach > 1.0) || !std::isfinite(a.approach))
+    throw InputError("--approach must be 0 (the metric at once) or a size ratio > 1");
+  opt.approach_growth = a.approach;
   const auto progress = [&](const PassStats& s) {
     if (!a.quiet) print_pass(s, a.verbosity, "tetrahedra");
   };
@@ -286,6 +292,10 @@ void register_adapt(CLI::App& app) {
   cmd->add_flag("--nr", a->nr, "No corner detection by angle");
   cmd->add_flag("--aniso", a->aniso, "Surfaces: anisotropic geometric metric (BOOK.md §1)");
   cmd->add_flag("--nosurf", a->nosurf, "3D: keep the boundary surface untouched");
+  cmd->add_option("--approach", a->approach,
+                  "3D: largest size ratio asked from one stage to the next when the mesh is far "
+                  "from the metric (stages toward it from the mesh's own sizes; 0: at once)")
+      ->capture_default_str();
   cmd->add_flag("--optim", a->optim, "Improve quality at the current sizes (implied metric)");
   cmd->add_flag("--noinsert", a->noinsert, "No vertex insertion or removal");
   cmd->add_flag("--noswap", a->noswap, "No edge swaps");

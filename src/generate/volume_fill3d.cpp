@@ -185,6 +185,7 @@ Adapt3dResult fill_volume(Mesh&& volume, std::span<const double> sizes, Adapt3dO
     metrics.push_back(isotropic_metric<3>(h));
   }
   options.keep_surface = true;
+  options.approach_growth = 0.0;  // field points already put the sizes in place
   return adapt3d(std::move(volume), metrics, options, on_pass);
 }
 

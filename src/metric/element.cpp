@@ -24,8 +24,9 @@ void check_mesh_arrays(std::span<const double> coords, std::span<const int32_t> 
 }  // namespace
 
 template <int D>
-std::vector<SymMat<D>> implied_metric(std::span<const double> coords,
-                                      std::span<const int32_t> simplices) {
+std::vector<SymMat<D>> implied_log_metric(std::span<const double> coords,
+                                          std::span<const int32_t> simplices,
+                                          std::vector<bool>* in_simplex) {
   check_mesh_arrays<D>(coords, simplices);
   const std::size_t nv = coords.size() / D;
   // Scatter form of implied_vertex_metric: accumulating Σ|K| log M_K per vertex visits every
@@ -51,15 +52,33 @@ std::vector<SymMat<D>> implied_metric(std::span<const double> coords,
       weight[v] += w;
     }
   }
-  std::vector<SymMat<D>> out(nv);
+  if (in_simplex) in_simplex->assign(nv, true);
   for (std::size_t v = 0; v < nv; ++v) {
-    if (!(weight[v] > 0.0))
+    if (weight[v] > 0.0) {
+      log_sum[v] = (1.0 / weight[v]) * log_sum[v];
+    } else if (in_simplex) {
+      (*in_simplex)[v] = false;
+    } else {
       throw InputError("implied_metric: vertex " + std::to_string(v) + " is in no simplex");
-    out[v] = exp_sym((1.0 / weight[v]) * log_sum[v]);
+    }
   }
+  return log_sum;
+}
+
+template <int D>
+std::vector<SymMat<D>> implied_metric(std::span<const double> coords,
+                                      std::span<const int32_t> simplices) {
+  std::vector<SymMat<D>> out = implied_log_metric<D>(coords, simplices, nullptr);
+  for (SymMat<D>& m : out) m = exp_sym(m);
   return out;
 }
 
+template std::vector<SymMat<2>> implied_log_metric<2>(std::span<const double>,
+                                                             std::span<const int32_t>,
+                                                             std::vector<bool>*);
+template std::vector<SymMat<3>> implied_log_metric<3>(std::span<const double>,
+                                                             std::span<const int32_t>,
+                                                             std::vector<bool>*);
 template std::vector<SymMat<2>> implied_metric<2>(std::span<const double>,
                                                   std::span<const int32_t>);
 template std::vector<SymMat<3>> implied_metric<3>(std::span<const double>,

@@ -106,6 +106,20 @@ template <int D>
 std::vector<SymMat<D>> implied_metric(std::span<const double> coords,
                                       std::span<const int32_t> simplices);
 
+/// log M at each vertex of the metric implied by a mesh (implied_metric's mean before its
+/// exponential). `in_simplex`, when given, receives whether each vertex is in a simplex, and a
+/// vertex in none gets the zero matrix instead of an InputError.
+template <int D>
+std::vector<SymMat<D>> implied_log_metric(std::span<const double> coords,
+                                          std::span<const int32_t> simplices,
+                                          std::vector<bool>* in_simplex = nullptr);
+
+extern template std::vector<SymMat<2>> implied_log_metric<2>(std::span<const double>,
+                                                             std::span<const int32_t>,
+                                                             std::vector<bool>*);
+extern template std::vector<SymMat<3>> implied_log_metric<3>(std::span<const double>,
+                                                             std::span<const int32_t>,
+                                                             std::vector<bool>*);
 extern template std::vector<SymMat<2>> implied_metric<2>(std::span<const double>,
                                                          std::span<const int32_t>);
 extern template std::vector<SymMat<3>> implied_metric<3>(std::span<const double>,

@@ -40,6 +40,7 @@ struct Adapt2dOptions {
 /// What one pass did and the state of the mesh after it.
 struct PassStats {
   int pass = 0;
+  int stage = 0, stages = 0;  ///< stage k of n of a staged approach (3D; n: the target); 0, 0: none
   long splits = 0, collapses = 0, swaps = 0, moves = 0;
   long rejected = 0;  ///< operations refused by their checks (not errors)
   std::size_t vertices = 0, triangles = 0;

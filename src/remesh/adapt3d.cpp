@@ -13,6 +13,8 @@
 #include "core/error.hpp"
 #include "mesh/adjacency.hpp"
 #include "mesh/hilbert.hpp"
+#include "metric/approach.hpp"
+#include "metric/element.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
 #include "remesh/boundary3d.hpp"
@@ -40,6 +42,7 @@ constexpr double kBadMaxLength = 1.6;               // ... creating edges no lon
 constexpr double kVeryShort = 0.6;                 // shorter edges go with those limits too
 constexpr double kGoodBall = 0.8;                  // smoothing skips vertices whose ball is better
 constexpr double kLengthenFloor = 0.55;            // lengthening moves keep the ball above this
+constexpr int kStagePasses = 2;  // passes toward each intermediate field of the staged approach
 
 using Candidate = LongEdge;
 
@@ -405,6 +408,87 @@ std::string stall_reason(const TetMesh& m) {
   return stall_message<3>(worst_length, 0.5 * (m.xyz[wa] + m.xyz[wb]));
 }
 
+/// The longest metric length (edge_length_geometric) of the tets' edges in the field.
+double longest_edge(const Mesh& mesh, std::span<const SymMat3> field) {
+  double out = 0.0;
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (const auto& [i, j] : kTetEdge) {
+      const Id a = mesh.tets[4 * t + i], b = mesh.tets[4 * t + j];
+      const Vec3 ab{{mesh.coords[3 * b] - mesh.coords[3 * a],
+                     mesh.coords[3 * b + 1] - mesh.coords[3 * a + 1],
+                     mesh.coords[3 * b + 2] - mesh.coords[3 * a + 2]}};
+      out = std::max(out, edge_length_geometric(field[a], field[b], ab));
+    }
+  return out;
+}
+
+/// One pass: splits and collapses, swaps and smoothing, clean-up, sliver removal.
+void run_pass(Remesh3dContext& ctx, const Adapt3dOptions& options, EdgeLists& lists,
+              NeighbourTable& nbrs, PassStats& st) {
+  TetMesh& m = ctx.mesh();
+  if (options.insert) {
+    st.splits = split_sweeps(ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0, lists);
+    st.collapses = collapse_sweep(ctx, st, std::move(lists.short_edges), nbrs);
+  }
+  std::uint32_t smoothed = 0;  // the clock at the start of the last smoothing sweep
+  for (int k = 0; k < 2; ++k) {
+    if (options.swap) st.swaps += swap_sweep(m, st);
+    if (options.move) st.moves += smooth_sweep(ctx, st, nbrs, smoothed, smoothed);
+  }
+  // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
+  if (options.insert) st.collapses += short_edge_sweep(ctx, st, nbrs);
+  for (int k = 0; k < 2; ++k) {
+    if (options.insert) st.collapses += bad_tet_sweep(m, st, nbrs);
+    if (options.swap) st.swaps += swap_sweep(m, st);
+  }
+  // Last: sliver removal around the tets still below the quality target.
+  SliverLimits sl;
+  sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
+  sliver_sweeps(ctx, sl, st);
+  // Again: the sliver optimiser's moves do not look at lengths.
+  if (options.insert) st.collapses += short_edge_sweep(ctx, st, nbrs);
+}
+
+/// Passes toward the field the context holds, each recorded in the report and given to on_pass.
+struct PassLoop {
+  Remesh3dContext& ctx;
+  const Adapt3dOptions& options;
+  EdgeLists& lists;
+  NeighbourTable& nbrs;
+  Adapt2dReport& report;
+  const PassCallback& on_pass;
+
+  /// At most max_passes passes (at least one), stage k of n (0, 0: the target field, no
+  /// stages). True when they converged: fewer than 2% of the vertices inserted or removed (0.5%
+  /// in 2D: in 3D a few edges cycle between split and collapse), no new low of that count for 3
+  /// passes, or a pass that changed neither the fraction of edges in band (by 0.1%) nor the
+  /// worst quality (by 0.001).
+  bool run(int max_passes, int k, int n) {
+    TetMesh& m = ctx.mesh();
+    long best_ops = std::numeric_limits<long>::max();
+    int best_pass = 0;
+    double prev_in = 0.0, prev_qmin = 0.0;
+    for (int pass = 1; pass <= std::max(1, max_passes); ++pass) {
+      const auto t0 = std::chrono::steady_clock::now();
+      PassStats st;
+      st.pass = static_cast<int>(report.passes.size()) + 1;
+      st.stage = k, st.stages = n;
+      run_pass(ctx, options, lists, nbrs, st);
+      summarize(m, st, lists, options.insert ? &nbrs : nullptr);
+      st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      report.passes.push_back(st);
+      if (on_pass) on_pass(st);
+      const long ops = st.splits + st.collapses;
+      const bool still =
+          pass > 1 && std::abs(st.len_in - prev_in) < 1e-3 && st.q_min < prev_qmin + 1e-3;
+      prev_in = st.len_in, prev_qmin = st.q_min;
+      if (ops <= static_cast<long>(st.vertices / 50) || pass - best_pass >= 3 || still) return true;
+      if (ops < best_ops) best_ops = ops, best_pass = pass;
+    }
+    return false;
+  }
+};
+
 }  // namespace
 
 Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
@@ -422,6 +506,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::span<const SymMat3> metrics,
 Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
                       const Adapt3dOptions& options, const PassCallback& on_pass) {
   options.validate();
+  if (options.approach_growth != 0.0) approach_stages(1.0, options.approach_growth);  // checks
   if (input.dim != 3 || input.num_tets() == 0)
     throw InputError("3D remeshing needs a tetrahedral mesh");
   Adapt3dResult result;
@@ -429,6 +514,8 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   // are only needed to build the context; they go before the passes, as the context (background
   // mesh) goes before the output mesh is built.
   std::optional<Remesh3dContext> ctx;
+  std::optional<MetricApproach<3>> approach;
+  int stages = 0;  // of the staged approach (0: none)
   {
     const std::size_t input_vertices = input.num_vertices();
     Mesh ordered = std::move(input);
@@ -448,60 +535,35 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
       prepared = prepare_metrics<3>(ordered, adjacency, std::span<const SymMat3>(permuted),
                                     options, result.report);
     }
+    if (options.insert && options.approach_growth > 0.0) {
+      const int n = approach_stages(longest_edge(ordered, prepared), options.approach_growth);
+      if (n > 1) {
+        std::vector<bool> in_tet;
+        std::vector<SymMat3> implied = implied_log_metric<3>(ordered.coords, ordered.tets, &in_tet);
+        approach.emplace(std::move(implied), in_tet, prepared);
+        stages = n;
+      }
+    }
     ctx.emplace(std::move(ordered), std::move(prepared), options);
   }
   TetMesh& m = ctx->mesh();
-  long best_ops = std::numeric_limits<long>::max();
-  int best_pass = 0;
-  double prev_in = 0.0, prev_qmin = 0.0;
   EdgeLists lists;  // the split and collapse candidates of the mesh as it stands
   NeighbourTable nbrs;  // the vertices' neighbours, for the collapses' length test
   NeighbourTable* const nbrs_wanted = options.insert ? &nbrs : nullptr;
-  if (options.insert) list_edges(m, lists, nullptr, nbrs_wanted);
-  for (int pass = 1; pass <= options.max_passes; ++pass) {
-    const auto t0 = std::chrono::steady_clock::now();
-    PassStats st;
-    st.pass = pass;
-    if (options.insert) {
-      st.splits =
-          split_sweeps(*ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0, lists);
-      st.collapses = collapse_sweep(*ctx, st, std::move(lists.short_edges), nbrs);
+  PassLoop loop{*ctx, options, lists, nbrs, result.report, on_pass};
+  const int n = stages;
+  if (approach) {  // the staged approach: a few passes toward each intermediate field
+    for (int k = 1; k < n; ++k) {
+      ctx->set_field(approach->field(static_cast<double>(k) / n));
+      if (options.insert) list_edges(m, lists, nullptr, nbrs_wanted);
+      loop.run(kStagePasses, k, n);
     }
-    std::uint32_t smoothed = 0;  // the clock at the start of the last smoothing sweep
-    for (int k = 0; k < 2; ++k) {
-      if (options.swap) st.swaps += swap_sweep(m, st);
-      if (options.move) st.moves += smooth_sweep(*ctx, st, nbrs, smoothed, smoothed);
-    }
-    // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
-    if (options.insert) st.collapses += short_edge_sweep(*ctx, st, nbrs);
-    for (int k = 0; k < 2; ++k) {
-      if (options.insert) st.collapses += bad_tet_sweep(m, st, nbrs);
-      if (options.swap) st.swaps += swap_sweep(m, st);
-    }
-    // Last: sliver removal around the tets still below the quality target.
-    SliverLimits sl;
-    sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
-    sliver_sweeps(*ctx, sl, st);
-    // Again: the sliver optimiser's moves do not look at lengths.
-    if (options.insert) st.collapses += short_edge_sweep(*ctx, st, nbrs);
-    summarize(m, st, lists, nbrs_wanted);
-    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    result.report.passes.push_back(st);
-    if (on_pass) on_pass(st);
-    // Converged when fewer than 2% of the vertices were inserted or removed (0.5% in 2D: in 3D
-    // a few edges cycle between split and collapse), when that count has not reached a new low
-    // for 3 passes, or when a pass changed neither the fraction of edges in band (by 0.1%) nor
-    // the worst quality (by 0.001).
-    const long ops = st.splits + st.collapses;
-    const bool still =
-        pass > 1 && std::abs(st.len_in - prev_in) < 1e-3 && st.q_min < prev_qmin + 1e-3;
-    prev_in = st.len_in, prev_qmin = st.q_min;
-    if (ops <= static_cast<long>(st.vertices / 50) || pass - best_pass >= 3 || still) {
-      result.report.converged = true;
-      break;
-    }
-    if (ops < best_ops) best_ops = ops, best_pass = pass;
+    ctx->set_field(approach->field(1.0));
+    approach.reset();
   }
+  if (options.insert) list_edges(m, lists, nullptr, nbrs_wanted);
+  result.report.converged =
+      loop.run(options.max_passes, n, n);
   lists = EdgeLists{}, nbrs = NeighbourTable{};
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
   const TetMesh final_mesh = std::move(m);

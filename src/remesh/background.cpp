@@ -138,6 +138,20 @@ void BackgroundMesh<D>::build(std::span<const double> coords, std::span<const Id
 }
 
 template <int D>
+void BackgroundMesh<D>::set_metrics(std::vector<SymMat<D>>&& metrics) {
+  if (metrics.size() != coords_.size())
+    throw InputError(prefix() + std::to_string(metrics.size()) + " metrics for " +
+                     std::to_string(coords_.size()) + " vertices");
+  for (std::size_t v = 0; v < metrics.size(); ++v)
+    if (!is_spd(metrics[v]))
+      throw InputError(prefix() + "the metric of vertex " + std::to_string(v + 1) +
+                       " is not symmetric positive definite");
+  metrics_ = std::move(metrics);
+  if (scheme_ == InterpScheme::kLogEuclidean)
+    for (std::size_t v = 0; v < metrics_.size(); ++v) logs_[v] = log_spd(metrics_[v]);
+}
+
+template <int D>
 void BackgroundMesh<D>::finish(std::vector<Id>&& elem2elem) {
   const std::size_t nv = coords_.size(), ns = simplices_.size() / kVerts;
   for (std::size_t v = 0; v < nv; ++v)

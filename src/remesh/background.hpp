@@ -17,7 +17,8 @@
 // Predicates are plain doubles with a relative tolerance (kBaryTolerance), which is enough here:
 // any simplex returned contains p up to that tolerance, and all choices are deterministic.
 //
-// The object is immutable after construction: queries are const and may run concurrently.
+// Queries are const and may run concurrently; only set_metrics (between remeshing stages) changes
+// the object.
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -77,6 +78,14 @@ class BackgroundMesh {
   BackgroundMesh(const Mesh& mesh, std::span<const double> metrics,
                  InterpScheme scheme = InterpScheme::kLogEuclidean,
                  const Adjacency* adjacency = nullptr);
+
+  /// Replaces the vertex metrics (one per vertex, SPD), keeping the mesh and its search
+  /// structures: the staged approach of a remesher to its target field (adapt3d.cpp). Throws
+  /// InputError for a size mismatch or a metric that is not SPD, leaving the field unchanged.
+  void set_metrics(std::vector<SymMat<D>>&& metrics);
+
+  /// The vertex metrics.
+  std::span<const SymMat<D>> metrics() const { return metrics_; }
 
   /// Locates p by walking from `hint` (a simplex id; kNoId, or a hint whose first vertex is
   /// farther than hint_reach() from p: from p's grid cell).

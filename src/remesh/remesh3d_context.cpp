@@ -202,6 +202,21 @@ SymMat3 Remesh3dContext::metric_for(const Vec3& p, Id hint_vertex) const {
   return background_.metric_at(p, hint, &last_found_);
 }
 
+void Remesh3dContext::set_field(std::vector<SymMat3>&& metrics) {
+  background_.set_metrics(std::move(metrics));
+  TetMesh& m = mesh_;
+  const std::uint32_t now = ++m.clock;
+  if (m.vmoved.size() < m.vertex_capacity()) m.vmoved.resize(m.vertex_capacity(), 0);
+  for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
+    const Id v = static_cast<Id>(vi);
+    if (!m.vert_alive(v)) continue;
+    m.metric[vi] = metric_for(m.xyz[vi], v);
+    inherit_hint(v);
+    m.vmoved[vi] = now;
+  }
+  m.quality.clear();
+}
+
 void Remesh3dContext::inherit_hint(Id v) {
   if (static_cast<std::size_t>(v) >= hint_.size()) hint_.resize(v + 1, kNoId);
   hint_[v] = last_found_;

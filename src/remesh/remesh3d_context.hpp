@@ -46,6 +46,14 @@ class Remesh3dContext {
   /// boundary3d.hpp); false when v may not move (fixed).
   bool constrain(Id v, Vec3& p) const;
 
+  /// Replaces the background field (one metric per input vertex, SPD) and gives every live
+  /// vertex the metric of the new field at its position; the tet quality cache is cleared and
+  /// every vertex counts as moved (m.clock advanced). For the staged approach to the target.
+  void set_field(std::vector<SymMat3>&& metrics);
+
+  /// The background field (one metric per input vertex).
+  std::span<const SymMat3> field() const { return background_.metrics(); }
+
   /// Records, for vertex v just created or moved, the background tet of the last metric_for.
   void inherit_hint(Id v);
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # riemesh adapt on a volume with a curved boundary (issue #7): a cylinder of 24 flat facets
 # refined 10x in its normal direction (size 0.3 -> 0.03) stays a cylinder (side vertices within 1e-3 of the
-# radius), the output is valid with its 3 refs; --nosurf keeps the side vertices; bad inputs
-# (--hausd <= 0) exit 2 with one line and no output.
+# radius), the output is valid with its 3 refs, reached through an intermediate field (staged
+# approach; --approach 0: at once); --nosurf keeps the side vertices; bad inputs (--hausd <= 0,
+# --approach in (0, 1]) exit 2 with one line and no output.
 set -u
 source "$(dirname "$0")/cli_lib.sh"
 
@@ -80,7 +81,12 @@ tri_refs() {
     'import json,sys; j=json.load(sys.stdin); print(sorted(int(k) for k in j["refs"]["triangles"]))' 2>/dev/null
 }
 
-"$R" adapt "$TMP/cyl.mesh" --metric "$TMP/cyl.sol" -o "$TMP/out.mesh" -q && ok adapt3d-curved || ko adapt3d-curved
+"$R" adapt "$TMP/cyl.mesh" --metric "$TMP/cyl.sol" -o "$TMP/out.mesh" 2>"$TMP/passes" && ok adapt3d-curved || ko adapt3d-curved
+# The input's edges are ~10 long in the metric: one intermediate field first (--approach 4).
+grep -q "^pass  1 (toward the metric: stage 1/2)" "$TMP/passes" && grep -q "stage 2/2" "$TMP/passes" &&
+  ok curved-staged || ko "curved-staged: $(head -2 "$TMP/passes")"
+"$R" adapt "$TMP/cyl.mesh" --metric "$TMP/cyl.sol" -o "$TMP/direct.mesh" --approach 0 --passes 2 2>"$TMP/passes" &&
+  ! grep -q stage "$TMP/passes" && "$R" check "$TMP/direct.mesh" >/dev/null && ok curved-direct || ko curved-direct
 "$R" check "$TMP/out.mesh" >/dev/null && ok curved-valid || ko curved-valid
 [ "$(tri_refs "$TMP/out.mesh")" = "[1, 2, 3]" ] && ok curved-refs || ko "curved-refs: $(tri_refs "$TMP/out.mesh")"
 read -r n err <<<"$(side "$TMP/out.mesh")"
@@ -93,5 +99,7 @@ read -r n err <<<"$(side "$TMP/out.mesh")"
 
 expect_error curved-hausd-zero adapt "$TMP/cyl.mesh" --metric "$TMP/cyl.sol" --hausd 0 -o "$TMP/bad.mesh"
 expect_no_file curved-hausd-zero-no-output "$TMP/bad.mesh"
+expect_error curved-approach-below-one adapt "$TMP/cyl.mesh" --metric "$TMP/cyl.sol" --approach 0.5 -o "$TMP/bad.mesh"
+expect_no_file curved-approach-no-output "$TMP/bad.mesh"
 expect_error curved-hausd-negative adapt "$TMP/cyl.mesh" --hsiz 0.2 --hausd -1 -o "$TMP/bad.mesh"
 exit $fail

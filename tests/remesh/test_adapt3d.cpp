@@ -127,6 +127,41 @@ TEST(Adapt3d, Deterministic) {
   EXPECT_EQ(a.mesh.tri_ref, b.mesh.tri_ref);
 }
 
+TEST(Adapt3d, StagedApproachFromACoarseCube) {
+  // The 4x4x4 cube has edges of 0.25; the metric asks 0.005 at z = 0.5: with the default
+  // growth of 4 per stage the passes go through an intermediate field first (issue #7:
+  // the splits of a mesh far coarser than its target cascade in every direction), and the
+  // result meets the same bounds as the target at once.
+  const Mesh cube = unit_cube(4);
+  Adapt3dOptions o;
+  o.hgrad = 0.0;
+  const Adapt3dResult staged = adapt3d(cube, linear_metric(cube, 0.005, 0.3), o);
+  expect_valid_cube(staged);
+  const std::vector<PassStats>& p = staged.report.passes;
+  ASSERT_GE(p.size(), 3u);
+  EXPECT_EQ(p.front().stage, 1);
+  // The longest input edge in the target, 0.25 along z from z = 0.5 (size 0.005) to 0.25 (size
+  // 0.1525): (50 − 1.64) / ln(50 / 1.64) = 14.1; ceil(ln 14.1 / ln 4) = 2 stages.
+  EXPECT_EQ(p.front().stages, 2);
+  EXPECT_EQ(p.back().stage, p.back().stages);
+  for (std::size_t k = 1; k < p.size(); ++k) EXPECT_GE(p[k].stage, p[k - 1].stage);
+  EXPECT_LT(p.front().vertices * 2, p.back().vertices) << "the first stage is far coarser";
+  o.approach_growth = 0.0;
+  const Adapt3dResult direct = adapt3d(cube, linear_metric(cube, 0.005, 0.3), o);
+  expect_valid_cube(direct);
+  EXPECT_EQ(direct.report.passes.front().stages, 0);
+  for (const Adapt3dResult* r : {&staged, &direct}) {
+    const PassStats& s = r->report.passes.back();
+    EXPECT_GT(s.len_in, 0.93);
+    EXPECT_GT(s.len_min, 0.45);
+    EXPECT_LT(s.len_max, 1.7);
+    EXPECT_GT(s.q_min, 0.45);
+  }
+  // Near its target already: one stage, no intermediate field.
+  const Adapt3dResult again = adapt3d(staged.mesh, staged.metrics, {});
+  EXPECT_EQ(again.report.passes.front().stages, 0);
+}
+
 TEST(Adapt3d, TakingOverTheInputGivesTheSameMesh) {
   const Mesh cube = unit_cube(3);
   const std::vector<SymMat3> metrics = linear_metric(cube, 0.05, 0.3);
@@ -219,4 +254,10 @@ TEST(Adapt3d, BadInputIsRefused) {
   o.hgrad = 0.5;
   EXPECT_THROW(adapt3d(cube, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()), o),
                InputError);
+  o.hgrad = 1.3;
+  for (const double g : {0.5, 1.0, -1.0, std::nan("")}) {
+    o.approach_growth = g;
+    EXPECT_THROW(adapt3d(cube, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()), o),
+                 InputError);
+  }
 }

@@ -537,3 +537,24 @@ TYPED_TEST(BackgroundTest, BadInput) {
   EXPECT_THROW(bg.locate(p, static_cast<Id>(bg.num_simplices())), InputError);
   EXPECT_THROW(bg.locate(p, -2), InputError);
 }
+
+TEST(BackgroundMetrics, SetMetricsReplacesTheField) {
+  // The staged approach (adapt3d) swaps the field: queries then interpolate the new one; a
+  // wrong size or a non-SPD metric is refused and leaves the field as it was.
+  const Mesh m = unit_cube(2);
+  const std::size_t nv = m.num_vertices();
+  BackgroundMesh<3> bg(m, metric_field<3>(m, field_metric<3>));
+  const Vec3 p{{0.3, 0.6, 0.2}};
+  const SymMat3 before = bg.metric_at(p, kNoId);
+  bg.set_metrics(std::vector<SymMat3>(nv, SymMat3::diagonal(4.0)));
+  EXPECT_LT(rel_err(bg.metric_at(p, kNoId), SymMat3::diagonal(4.0)), 1e-14);
+  EXPECT_THROW(bg.set_metrics(std::vector<SymMat3>(nv - 1, SymMat3::identity())), InputError);
+  std::vector<SymMat3> bad(nv, SymMat3::identity());
+  bad[3].at(1, 1) = -1.0;
+  EXPECT_THROW(bg.set_metrics(std::move(bad)), InputError);
+  EXPECT_LT(rel_err(bg.metric_at(p, kNoId), SymMat3::diagonal(4.0)), 1e-14);
+  std::vector<SymMat3> field;
+  for (std::size_t v = 0; v < nv; ++v) field.push_back(field_metric<3>(vertex_of<3>(m, static_cast<Id>(v))));
+  bg.set_metrics(std::move(field));
+  EXPECT_LT(rel_err(bg.metric_at(p, kNoId), before), 1e-14);
+}
