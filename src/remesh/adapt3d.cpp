@@ -481,6 +481,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     // Last: sliver removal around the tets still below the quality target.
     SliverLimits sl;
     sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
+    sl.split_fixed = options.keep_surface && options.insert && options.move;
     sliver_sweeps(*ctx, sl, st);
     // Again: the sliver optimiser's moves do not look at lengths.
     if (options.insert) st.collapses += short_edge_sweep(*ctx, st, nbrs);

@@ -12,6 +12,8 @@ struct SliverLimits {
   int sweeps = 4;            ///< at most this many sweeps over the bad tets
   double budget = 0.02;      ///< each sweep works on the worst tets only, this fraction of all
   bool swap = true, move = true, collapse = true;  ///< the operators allowed
+  /// Splits of the slivers none of whose vertices may move (split_sliver): with a kept surface.
+  bool split_fixed = false;
 };
 
 /// Moves v (in its plane or on its line when on the boundary) to raise the worst quality of its
@@ -20,6 +22,21 @@ struct SliverLimits {
 /// the ideal apex of the worst tet, and those moves at half and a quarter. kApplied when the
 /// ball's worst quality went up.
 Outcome optimise_vertex(Remesh3dContext& ctx, Id v);
+
+/// Cuts tet t by a new interior vertex off one of its interior edges (no listed face on it):
+/// every tet of that edge's shell is cut in two, as split_edge, at the point found for each
+/// interior edge of t (from the middle, moves toward the ideal apexes of the new tets) that
+/// gives the best worst new tet; kApplied when that is above t's quality + min_gain. For the
+/// slivers whose four vertices are on a kept surface, which no other operator removes. The
+/// surface is unchanged.
+Outcome split_sliver(Remesh3dContext& ctx, Id t, double min_gain, Id* created);
+
+/// Replaces tet t and the tets around it by the star of a new interior vertex: its position
+/// above one of t's faces (the ideal apex, or 0.6, 0.35, 0.2 of the way there from the face's
+/// centroid), the cavity grown from t across the unlisted faces that the vertex does not see
+/// with a tet above `floor`. The candidate giving the best worst tet (above floor) wins. For the
+/// flat tets that cover a kept surface (four surface vertices), which no other operator removes.
+Outcome star_sliver(Remesh3dContext& ctx, Id t, double floor, Id* created);
 
 /// For each tet below limits.target, worst first (at most max(100, budget × tets) of them:
 /// far from adapted, most tets are bad and the sweeps of the pass deal with them): edge swaps of its 6 edges, face swaps of its
