@@ -126,39 +126,12 @@ double best_split_point(Remesh3dContext& ctx, std::span<const Id> shell, Id a, I
   return best;
 }
 
-}  // namespace
-
-Outcome split_sliver(Remesh3dContext& ctx, Id t, double min_gain, Id* created) {
-  TetMesh& m = ctx.mesh();
-  const double q0 = cached_quality(m, t);
-  thread_local std::vector<Id> shell;
-  Id v[4];
-  std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
-  double best = q0 + min_gain;
-  Id ba = kNoId, bb = kNoId;
-  NewVertex3 nv;
-  for (const auto& [i, j] : kTetEdge) {
-    collect_shell(m, v[i], v[j], shell, t);
-    if (shell.empty() || !interior_edge(m, shell, v[i], v[j])) continue;
-    Vec3 p;
-    SymMat3 metric;
-    const double q = best_split_point(ctx, shell, v[i], v[j], p, metric);
-    if (q > best) best = q, ba = v[i], bb = v[j], nv.p = p, nv.metric = metric;
-  }
-  if (ba == kNoId) return Outcome::kRejectedQuality;
-  nv.kind = VertexKind::kInterior;
-  const Outcome o = split_edge(m, ba, bb, nv, q0 + min_gain, created, t);
-  if (o == Outcome::kApplied) ctx.inherit_hint(*created);
-  return o;
-}
+constexpr std::size_t kMaxCavity = 64;  // star_cavity's limit
 
 /// The star of x (at p) over a cavity grown from tet t: a face of the cavity's boundary whose
 /// tet with x is below `floor` takes the tet behind it into the cavity (not across a listed or
 /// domain-boundary face; at most kMaxCavity tets). On success `cavity` and `tets` hold the
 /// cavity and its star (x at p, every tet above floor), every cavity vertex on its boundary.
-namespace {
-
-constexpr std::size_t kMaxCavity = 64;
 bool star_cavity(TetMesh& m, Id t, Id x, double floor, std::vector<Id>& cavity,
                  std::vector<NewTet>& tets) {
   cavity.assign(1, t);
@@ -195,6 +168,30 @@ bool star_cavity(TetMesh& m, Id t, Id x, double floor, std::vector<Id>& cavity,
 
 }  // namespace
 
+Outcome split_sliver(Remesh3dContext& ctx, Id t, double min_gain, Id* created) {
+  TetMesh& m = ctx.mesh();
+  const double q0 = cached_quality(m, t);
+  thread_local std::vector<Id> shell;
+  Id v[4];
+  std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
+  double best = q0 + min_gain;
+  Id ba = kNoId, bb = kNoId;
+  NewVertex3 nv;
+  for (const auto& [i, j] : kTetEdge) {
+    collect_shell(m, v[i], v[j], shell, t);
+    if (shell.empty() || !interior_edge(m, shell, v[i], v[j])) continue;
+    Vec3 p;
+    SymMat3 metric;
+    const double q = best_split_point(ctx, shell, v[i], v[j], p, metric);
+    if (q > best) best = q, ba = v[i], bb = v[j], nv.p = p, nv.metric = metric;
+  }
+  if (ba == kNoId) return Outcome::kRejectedQuality;
+  nv.kind = VertexKind::kInterior;
+  const Outcome o = split_edge(m, ba, bb, nv, q0 + min_gain, created, t);
+  if (o == Outcome::kApplied) ctx.inherit_hint(*created);
+  return o;
+}
+
 Outcome star_sliver(Remesh3dContext& ctx, Id t, double floor, Id* created) {
   TetMesh& m = ctx.mesh();
   thread_local std::vector<Id> cavity, best_cavity;
@@ -208,18 +205,22 @@ Outcome star_sliver(Remesh3dContext& ctx, Id t, double floor, Id* created) {
   Vec3 best_p{};
   bool found = false;
   for (int i = 0; i < 4; ++i) {
-    // Above face i, on t's side: the ideal apex, and the way there.
+    // Above face i, on either side: the ideal apex, and the way there.
     const Vec3 &pa = m.xyz[v[kTetFace[i][0]]], &pb = m.xyz[v[kTetFace[i][1]]],
                &pc = m.xyz[v[kTetFace[i][2]]];
     const Vec3 n = cross(pb - pa, pc - pa);
     const Vec3 fg = (1.0 / 3.0) * (pa + pb + pc);
-    for (const double side : {-1.0, 1.0})
-    for (const double f : {1.0, 0.5, 0.25, 0.12, 0.06, 0.03}) {
-      m.xyz[x] = fg + f * (ideal_apex(mm, pa, pb, pc, pa + side * n) - fg);
-      if (!star_cavity(m, t, x, best, cavity, tets)) continue;
-      double worst = std::numeric_limits<double>::infinity();
-      for (const NewTet& nt : tets) worst = std::min(worst, tet_quality(m, nt.v));
-      if (worst > best) best = worst, best_p = m.xyz[x], best_cavity = cavity, best_tets = tets, found = true;
+    for (const double side : {-1.0, 1.0}) {
+      const Vec3 apex = ideal_apex(mm, pa, pb, pc, pa + side * n);
+      for (const double f : {1.0, 0.5, 0.25, 0.12, 0.06, 0.03}) {
+        m.xyz[x] = fg + f * (apex - fg);
+        if (!star_cavity(m, t, x, best, cavity, tets)) continue;
+        double worst = std::numeric_limits<double>::infinity();
+        for (const NewTet& nt : tets) worst = std::min(worst, tet_quality(m, nt.v));
+        if (!(worst > best)) continue;
+        best = worst, best_p = m.xyz[x], found = true;
+        best_cavity = cavity, best_tets = tets;
+      }
     }
   }
   if (!found) {
@@ -337,12 +338,11 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
       if (!applied && limits.split_fixed && m.tet_alive(t) && cached_quality(m, t) < kSplitBelow &&
           std::all_of(v, v + 4, [&](Id x) { return m.vkind[x] == VertexKind::kFixed; })) {
         Id created = kNoId;
-        if (star_sliver(ctx, t, cached_quality(m, t) + 1e-3, &created) == Outcome::kApplied) {
+        if (star_sliver(ctx, t, cached_quality(m, t) + 1e-3, &created) == Outcome::kApplied ||
+            split_sliver(ctx, t, 1e-3, &created) == Outcome::kApplied) {
           applied = true, ++st.splits;
-          for (int k = 0; k < 3 && optimise_vertex(ctx, created) == Outcome::kApplied; ++k) ++st.moves;
-        } else if (split_sliver(ctx, t, 1e-3, &created) == Outcome::kApplied) {
-          applied = true, ++st.splits;
-          for (int k = 0; k < 3 && optimise_vertex(ctx, created) == Outcome::kApplied; ++k) ++st.moves;
+          for (int k = 0; k < 3 && optimise_vertex(ctx, created) == Outcome::kApplied; ++k)
+            ++st.moves;
         }
       }
       if (applied) ++done;

@@ -32,16 +32,20 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v);
 Outcome split_sliver(Remesh3dContext& ctx, Id t, double min_gain, Id* created);
 
 /// Replaces tet t and the tets around it by the star of a new interior vertex: its position
-/// above one of t's faces (the ideal apex, or 0.6, 0.35, 0.2 of the way there from the face's
-/// centroid), the cavity grown from t across the unlisted faces that the vertex does not see
-/// with a tet above `floor`. The candidate giving the best worst tet (above floor) wins. For the
-/// flat tets that cover a kept surface (four surface vertices), which no other operator removes.
+/// on either side of one of t's faces (the ideal apex, or 1/2, 1/4, 0.12, 0.06, 0.03 of the way
+/// there from the face's centroid), the cavity grown from t across the unlisted faces that the
+/// vertex does not see with a tet above `floor` (at most 64 tets, every cavity vertex left on
+/// its boundary). The candidate giving the best worst tet (above floor) wins. For the flat tets
+/// that cover a kept surface (four surface vertices), which no other operator removes; the
+/// surface is unchanged.
 Outcome star_sliver(Remesh3dContext& ctx, Id t, double floor, Id* created);
 
 /// For each tet below limits.target, worst first (at most max(100, budget × tets) of them:
 /// far from adapted, most tets are bad and the sweeps of the pass deal with them): edge swaps of its 6 edges, face swaps of its
 /// 4 faces, optimisation of its 4 vertices, collapses of its edges (shortest first) that do not
-/// lower the ball's worst quality. Repeated while something changed, at most limits.sweeps
+/// lower the ball's worst quality; with limits.split_fixed, for a tet below quality 0.1 none of
+/// whose vertices may move, star_sliver or else split_sliver (the new vertex then optimised,
+/// counted in st.splits). Repeated while something changed, at most limits.sweeps
 /// times. Returns the number of operations applied (swaps, moves and collapses added to st).
 long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& st);
 

@@ -230,7 +230,7 @@ TEST(VolumeFill3d, KeptSurfaceSliversGetAnInteriorVertex) {
   // A 1 × 1 × 0.05 slab whose top is a slight dome (0.002 higher in the middle): tetrahedra
   // under the dome have their four vertices on the kept surface, flat, and no swap, move or
   // collapse removes them (min dihedral 0.016 degrees before star_sliver and split_sliver gave
-  // them a new interior vertex, 0.62 after; the rotor's case).
+  // them a new interior vertex, 0.68 after; the rotor's case).
   const Mesh surface = dome_slab(10, 0.05, 0.002);
   const FilledVolume f = mesh_volume(surface, 0.0, Adapt3dOptions{});
   EXPECT_TRUE(check_mesh(f.adapted.mesh).valid());
