@@ -444,6 +444,7 @@ void run_pass(Remesh3dContext& ctx, const Adapt3dOptions& options, EdgeLists& li
   // Last: sliver removal around the tets still below the quality target.
   SliverLimits sl;
   sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
+  sl.split_fixed = options.keep_surface && options.insert && options.move;
   sliver_sweeps(ctx, sl, st);
   // Again: the sliver optimiser's moves do not look at lengths.
   if (options.insert) st.collapses += short_edge_sweep(ctx, st, nbrs);
@@ -562,8 +563,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     approach.reset();
   }
   if (options.insert) list_edges(m, lists, nullptr, nbrs_wanted);
-  result.report.converged =
-      loop.run(options.max_passes, n, n);
+  result.report.converged = loop.run(options.max_passes, n, n);
   lists = EdgeLists{}, nbrs = NeighbourTable{};
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
   const TetMesh final_mesh = std::move(m);

@@ -2,12 +2,19 @@
 #include "remesh/sliver3d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <span>
 
 #include "mesh/adjacency.hpp"
 
 namespace riemesh {
 namespace {
+
+// Tets on fixed vertices only get a new interior vertex (star_sliver, split_sliver) below this
+// quality: the kept surface's slivers (rotor), not the ordinary bad tets of the surface layer.
+constexpr double kSplitBelow = 0.1;
 
 /// The point that makes (p, a, b, c) a regular tet in the metric mm, on v's side of face
 /// (a, b, c) (`side`: v's current position).
@@ -35,7 +42,207 @@ double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p, do
   return worst;
 }
 
+/// Whether the edge (a, b) of the closed shell `shell` lies in no listed face.
+bool interior_edge(const TetMesh& m, std::span<const Id> shell, Id a, Id b) {
+  for (const Id t : shell)
+    for (int i = 0; i < 4; ++i) {
+      const Id v = m.tv[4 * t + i];
+      if (v != a && v != b && (m.fbdy[4 * t + i] || m.tadj[4 * t + i] == kNoId)) return false;
+    }
+  return true;
+}
+
+/// The tets that cutting the shell of (a, b) at a new vertex x creates (as split_edge: a, then
+/// b replaced by x), and x's index in each.
+void split_tets(const TetMesh& m, std::span<const Id> shell, Id a, Id b, Id x,
+                std::vector<std::array<Id, 4>>& out, std::vector<int>& at) {
+  out.clear(), at.clear();
+  for (const Id t : shell)
+    for (const Id gone : {b, a}) {
+      std::array<Id, 4> v{};
+      for (int i = 0; i < 4; ++i) {
+        v[i] = m.tv[4 * t + i] == gone ? x : m.tv[4 * t + i];
+        if (v[i] == x) at.push_back(i);
+      }
+      out.push_back(v);
+    }
+}
+
+/// The worst quality of `tets` with x at p, and the index of the worst in *worst_index.
+double worst_with(TetMesh& m, Id x, const Vec3& p, const std::vector<std::array<Id, 4>>& tets,
+                  std::size_t* worst_index) {
+  m.xyz[x] = p;
+  double worst = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < tets.size(); ++k) {
+    const double q = tet_quality(m, tets[k].data());
+    if (q < worst) worst = q, *worst_index = k;
+  }
+  return worst;
+}
+
+/// Off-edge split of the interior edge (a, b): the position of a new interior vertex x cutting
+/// every tet of the shell in two that maximises the worst new tet (from the edge's middle, moves
+/// toward the ideal apexes as optimise_vertex), its metric in *metric; returns that worst.
+double best_split_point(Remesh3dContext& ctx, std::span<const Id> shell, Id a, Id b, Vec3& best_p,
+                        SymMat3& metric) {
+  TetMesh& m = ctx.mesh();
+  thread_local std::vector<std::array<Id, 4>> tets;
+  thread_local std::vector<int> at;
+  best_p = 0.5 * (m.xyz[a] + m.xyz[b]);
+  metric = ctx.metric_for(best_p, a);
+  const Id x = m.add_vertex(best_p, metric);
+  split_tets(m, shell, a, b, x, tets, at);
+  std::size_t wi = 0;
+  double best = worst_with(m, x, best_p, tets, &wi);
+  for (int iter = 0; iter < 20; ++iter) {
+    Vec3 sum{}, worst_apex{};
+    double wsum = 0.0;
+    for (std::size_t k = 0; k < tets.size(); ++k) {
+      const std::array<Id, 4>& v = tets[k];
+      const int i = at[k];
+      const Vec3 &pa = m.xyz[v[kTetFace[i][0]]], &pb = m.xyz[v[kTetFace[i][1]]],
+                 &pc = m.xyz[v[kTetFace[i][2]]];
+      const Vec3 inward = pa - cross(pb - pa, pc - pa);  // x's side of the outward face
+      const SymMat3 mm = 0.25 * (m.metric[v[0]] + m.metric[v[1]] + m.metric[v[2]] + m.metric[v[3]]);
+      const Vec3 apex = ideal_apex(mm, pa, pb, pc, inward);
+      const double q = tet_quality(m, v.data());
+      const double w = 1.0 / std::pow(std::max(q, 0.02), 4);
+      sum = sum + w * apex, wsum += w;
+      if (k == wi) worst_apex = apex;
+    }
+    const Vec3 p0 = best_p;
+    bool improved = false;
+    for (const Vec3& target : {(1.0 / wsum) * sum, worst_apex})
+      for (const double f : {1.0, 0.5, 0.25, 0.1, 0.03}) {
+        const Vec3 p = p0 + f * (target - p0);
+        std::size_t k = 0;
+        const double q = worst_with(m, x, p, tets, &k);
+        if (q > best + 1e-6) best = q, best_p = p, wi = k, improved = true;
+      }
+    if (!improved) break;
+  }
+  m.kill_vertex(x);
+  metric = ctx.metric_for(best_p, a);
+  return best;
+}
+
+constexpr std::size_t kMaxCavity = 64;  // star_cavity's limit
+
+/// The star of x (at p) over a cavity grown from tet t: a face of the cavity's boundary whose
+/// tet with x is below `floor` takes the tet behind it into the cavity (not across a listed or
+/// domain-boundary face; at most kMaxCavity tets). On success `cavity` and `tets` hold the
+/// cavity and its star (x at p, every tet above floor), every cavity vertex on its boundary.
+bool star_cavity(TetMesh& m, Id t, Id x, double floor, std::vector<Id>& cavity,
+                 std::vector<NewTet>& tets) {
+  cavity.assign(1, t);
+  for (bool grown = true; grown;) {
+    grown = false;
+    tets.clear();
+    for (std::size_t k = 0; k < cavity.size() && !grown; ++k) {
+      const Id c = cavity[k];
+      for (int i = 0; i < 4 && !grown; ++i) {
+        const Id r = m.tadj[4 * c + i];
+        if (r != kNoId && std::find(cavity.begin(), cavity.end(), r / 4) != cavity.end()) continue;
+        NewTet nt{};
+        std::copy(&m.tv[4 * c], &m.tv[4 * c] + 4, nt.v);
+        nt.v[i] = x, nt.ref = m.tref[c];
+        if (tet_quality(m, nt.v) >= floor) {
+          tets.push_back(nt);
+          continue;
+        }
+        if (r == kNoId || m.fbdy[4 * c + i] || cavity.size() >= kMaxCavity) return false;
+        cavity.push_back(r / 4), grown = true;
+      }
+    }
+  }
+  // Every vertex of the cavity must stay (on a face of its boundary).
+  for (const Id c : cavity)
+    for (int i = 0; i < 4; ++i) {
+      const Id v = m.tv[4 * c + i];
+      bool kept = false;
+      for (const NewTet& nt : tets) kept = kept || std::find(nt.v, nt.v + 4, v) != nt.v + 4;
+      if (!kept) return false;
+    }
+  return true;
+}
+
 }  // namespace
+
+Outcome split_sliver(Remesh3dContext& ctx, Id t, double min_gain, Id* created) {
+  TetMesh& m = ctx.mesh();
+  const double q0 = cached_quality(m, t);
+  thread_local std::vector<Id> shell;
+  Id v[4];
+  std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
+  double best = q0 + min_gain;
+  Id ba = kNoId, bb = kNoId;
+  NewVertex3 nv;
+  for (const auto& [i, j] : kTetEdge) {
+    collect_shell(m, v[i], v[j], shell, t);
+    if (shell.empty() || !interior_edge(m, shell, v[i], v[j])) continue;
+    Vec3 p;
+    SymMat3 metric;
+    const double q = best_split_point(ctx, shell, v[i], v[j], p, metric);
+    if (q > best) best = q, ba = v[i], bb = v[j], nv.p = p, nv.metric = metric;
+  }
+  if (ba == kNoId) return Outcome::kRejectedQuality;
+  nv.kind = VertexKind::kInterior;
+  const Outcome o = split_edge(m, ba, bb, nv, q0 + min_gain, created, t);
+  if (o == Outcome::kApplied) ctx.inherit_hint(*created);
+  return o;
+}
+
+Outcome star_sliver(Remesh3dContext& ctx, Id t, double floor, Id* created) {
+  TetMesh& m = ctx.mesh();
+  thread_local std::vector<Id> cavity, best_cavity;
+  thread_local std::vector<NewTet> tets, best_tets;
+  Id v[4];
+  std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
+  const Vec3 g = 0.25 * (m.xyz[v[0]] + m.xyz[v[1]] + m.xyz[v[2]] + m.xyz[v[3]]);
+  const SymMat3 mm = 0.25 * (m.metric[v[0]] + m.metric[v[1]] + m.metric[v[2]] + m.metric[v[3]]);
+  const Id x = m.add_vertex(g, mm);
+  double best = floor;
+  Vec3 best_p{};
+  bool found = false;
+  for (int i = 0; i < 4; ++i) {
+    // Above face i, on either side: the ideal apex, and the way there.
+    const Vec3 &pa = m.xyz[v[kTetFace[i][0]]], &pb = m.xyz[v[kTetFace[i][1]]],
+               &pc = m.xyz[v[kTetFace[i][2]]];
+    const Vec3 n = cross(pb - pa, pc - pa);
+    const Vec3 fg = (1.0 / 3.0) * (pa + pb + pc);
+    for (const double side : {-1.0, 1.0}) {
+      const Vec3 apex = ideal_apex(mm, pa, pb, pc, pa + side * n);
+      for (const double f : {1.0, 0.5, 0.25, 0.12, 0.06, 0.03}) {
+        m.xyz[x] = fg + f * (apex - fg);
+        if (!star_cavity(m, t, x, best, cavity, tets)) continue;
+        double worst = std::numeric_limits<double>::infinity();
+        for (const NewTet& nt : tets) worst = std::min(worst, tet_quality(m, nt.v));
+        if (!(worst > best)) continue;
+        best = worst, best_p = m.xyz[x], found = true;
+        best_cavity = cavity, best_tets = tets;
+      }
+    }
+  }
+  if (!found) {
+    m.kill_vertex(x);
+    return Outcome::kRejectedQuality;
+  }
+  m.xyz[x] = best_p;
+  m.metric[x] = ctx.metric_for(best_p, v[0]);
+  for (const NewTet& nt : best_tets)
+    if (!(tet_quality(m, nt.v) > floor)) {
+      m.kill_vertex(x);
+      return Outcome::kRejectedQuality;
+    }
+  if (!replace_cavity(m, best_cavity, best_tets, {})) {
+    m.kill_vertex(x);
+    return Outcome::kRejectedTopology;
+  }
+  m.vkind[x] = VertexKind::kInterior;
+  ctx.inherit_hint(x);
+  *created = x;
+  return Outcome::kApplied;
+}
 
 Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
   TetMesh& m = ctx.mesh();
@@ -124,6 +331,18 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
               applied = true, ++st.collapses;
               break;
             }
+        }
+      }
+      // Last, a tet none of whose vertices may move (a kept surface): a new interior vertex,
+      // the star of a cavity around it or else off one of its interior edges.
+      if (!applied && limits.split_fixed && m.tet_alive(t) && cached_quality(m, t) < kSplitBelow &&
+          std::all_of(v, v + 4, [&](Id x) { return m.vkind[x] == VertexKind::kFixed; })) {
+        Id created = kNoId;
+        if (star_sliver(ctx, t, cached_quality(m, t) + 1e-3, &created) == Outcome::kApplied ||
+            split_sliver(ctx, t, 1e-3, &created) == Outcome::kApplied) {
+          applied = true, ++st.splits;
+          for (int k = 0; k < 3 && optimise_vertex(ctx, created) == Outcome::kApplied; ++k)
+            ++st.moves;
         }
       }
       if (applied) ++done;
