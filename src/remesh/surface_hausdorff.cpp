@@ -80,9 +80,12 @@ bool keeps_input_close(const SurfaceProjection& geo, double hausd, const std::ve
 
 bool new_triangles_close(const SurfaceProjection& geo, double hausd, const std::vector<Tri3>& new_t,
                          Id hint) {
+  // Row by row, alternately forward and backward: each point next to the previous one, so that
+  // the walk of SurfaceProjection::within from the last answer has few steps to make.
   for (const Tri3& t : new_t)
     for (int i = 0; i <= kProbeOrder; ++i)
-      for (int j = 0; i + j <= kProbeOrder; ++j) {
+      for (int jj = 0; i + jj <= kProbeOrder; ++jj) {
+        const int j = i % 2 == 0 ? jj : kProbeOrder - i - jj;
         if ((i == 0 && j == 0) || i == kProbeOrder || j == kProbeOrder) continue;  // corners
         const Vec3 q = t[0] + (static_cast<double>(i) / kProbeOrder) * (t[1] - t[0]) +
                        (static_cast<double>(j) / kProbeOrder) * (t[2] - t[0]);
