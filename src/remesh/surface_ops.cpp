@@ -30,7 +30,16 @@ void neighbours(const State& s, const Adjacency& adj, Id v, std::vector<Id>& n) 
   for (Id t : ball(adj, v))
     for (int i = 0; i < 3; ++i)
       if (s.tri[3 * us(t) + i] != v) n.push_back(s.tri[3 * us(t) + i]);
-  std::sort(n.begin(), n.end());
+  if (n.size() > 32) {
+    std::sort(n.begin(), n.end());
+  } else {  // a ball's dozen ids: insertion sort
+    for (std::size_t i = 1; i < n.size(); ++i) {
+      const Id x = n[i];
+      std::size_t j = i;
+      for (; j > 0 && x < n[j - 1]; --j) n[j] = n[j - 1];
+      n[j] = x;
+    }
+  }
   n.erase(std::unique(n.begin(), n.end()), n.end());
 }
 
@@ -217,8 +226,15 @@ std::size_t split_pass(State& s, double bad_quality) {
 
 namespace {
 
+/// Scratch vectors of try_collapse, reused from edge to edge (thousands of tries per pass).
+struct CollapseScratch {
+  std::vector<Id> nv, nw, common;
+  std::vector<Tri3> old_t, new_t;
+};
+
 /// Tries to collapse v into w (see surface_adapt.hpp); applies it and returns true when allowed.
-bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<char>& dirty) {
+bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<char>& dirty,
+                  CollapseScratch& scratch) {
   if (s.tag[us(v)] & (kTagCorner | kTagRequired)) return false;
   const bool feat = s.is_feature(v, w);
   if ((s.tag[us(v)] & kTagRidge) && !feat) return false;
@@ -227,10 +243,10 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const auto bv = ball(topo.adj, v), bw = ball(topo.adj, w);
   if (any_dirty(bv, dirty) || any_dirty(bw, dirty)) return false;
   // Link condition: the common neighbours of v and w are the apexes of the edge's triangles.
-  std::vector<Id> nv, nw;
+  std::vector<Id>&nv = scratch.nv, &nw = scratch.nw, &common = scratch.common;
   neighbours(s, topo.adj, v, nv);
   neighbours(s, topo.adj, w, nw);
-  std::vector<Id> common;
+  common.clear();
   std::set_intersection(nv.begin(), nv.end(), nw.begin(), nw.end(), std::back_inserter(common));
   if (static_cast<int>(common.size()) != nt) return false;
   // New edges not too long.
@@ -245,7 +261,9 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const double qfloor = std::min(0.3, qmin_old);
   const double hausd = kCheckMargin * s.opt->hausd;
   double gap = std::numeric_limits<double>::infinity();
-  std::vector<Tri3> old_t, new_t;
+  std::vector<Tri3>&old_t = scratch.old_t, &new_t = scratch.new_t;
+  old_t.clear();
+  new_t.clear();
   for (Id t : bv) {
     bool has_w = false;
     for (int i = 0; i < 3; ++i) has_w |= s.tri[3 * us(t) + i] == w;
@@ -301,9 +319,11 @@ std::size_t collapse_pass(State& s) {
   std::sort(cand.begin(), cand.end());
   std::vector<char> dirty(s.num_triangles(), 0);
   std::size_t count = 0;
+  CollapseScratch scratch;
   for (const auto& [l, e] : cand) {
     const Id a = topo.adj.edges[2 * us(e)], b = topo.adj.edges[2 * us(e) + 1];
-    if (try_collapse(s, topo, e, a, b, dirty) || try_collapse(s, topo, e, b, a, dirty)) ++count;
+    if (try_collapse(s, topo, e, a, b, dirty, scratch) || try_collapse(s, topo, e, b, a, dirty, scratch))
+      ++count;
   }
   s.compact();
   return count;
