@@ -127,8 +127,16 @@ Topology build_topology(const State& s) {
   return t;
 }
 
+const Topology& topology(State& s) {
+  if (!s.topo_valid) {
+    s.topo = build_topology(s);
+    s.topo_valid = true;
+  }
+  return s.topo;
+}
+
 std::size_t split_pass(State& s, double bad_quality) {
-  const Topology topo = build_topology(s);
+  const Topology& topo = topology(s);
   const std::size_t ne = topo.adj.num_edges();
   std::vector<std::pair<double, Id>> cand;
   if (bad_quality > 0.0) {
@@ -221,6 +229,7 @@ std::size_t split_pass(State& s, double bad_quality) {
     }
     ++count;
   }
+  if (count > 0) s.topo_valid = false;
   return count;
 }
 
@@ -310,7 +319,7 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
 }  // namespace
 
 std::size_t collapse_pass(State& s) {
-  const Topology topo = build_topology(s);
+  const Topology& topo = topology(s);
   std::vector<std::pair<double, Id>> cand;
   for (std::size_t e = 0; e < topo.adj.num_edges(); ++e) {
     const double l = s.size_length(topo.adj.edges[2 * e], topo.adj.edges[2 * e + 1]);
@@ -325,12 +334,13 @@ std::size_t collapse_pass(State& s) {
     if (try_collapse(s, topo, e, a, b, dirty, scratch) || try_collapse(s, topo, e, b, a, dirty, scratch))
       ++count;
   }
-  s.compact();
+  s.compact();  // renumbers nothing when nothing was collapsed: the topology stays valid
+  if (count > 0) s.topo_valid = false;
   return count;
 }
 
 std::size_t swap_pass(State& s) {
-  const Topology topo = build_topology(s);
+  const Topology& topo = topology(s);
   std::vector<char> dirty(s.num_triangles(), 0);
   std::size_t count = 0;
   const double hausd = kCheckMargin * s.opt->hausd;
@@ -380,11 +390,12 @@ std::size_t swap_pass(State& s) {
     dirty[us(t1)] = dirty[us(t2)] = 1;
     ++count;
   }
+  if (count > 0) s.topo_valid = false;
   return count;
 }
 
 std::size_t smooth_pass(State& s) {
-  const Topology topo = build_topology(s);
+  const Topology& topo = topology(s);  // moves change no triangle: stays valid
   std::size_t count = 0;
   std::vector<Id> nb;  // scratch reused from vertex to vertex
   std::vector<Tri3> old_t, new_t;
