@@ -238,7 +238,7 @@ namespace {
 /// Scratch vectors of try_collapse, reused from edge to edge (thousands of tries per pass).
 struct CollapseScratch {
   std::vector<Id> nv, nw, common;
-  std::vector<Tri3> old_t, new_t;
+  std::vector<Tri3> old_t, new_t, gone_t;
 };
 
 /// Tries to collapse v into w (see surface_adapt.hpp); applies it and returns true when allowed.
@@ -270,16 +270,20 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const double qfloor = std::min(0.3, qmin_old);
   const double hausd = kCheckMargin * s.opt->hausd;
   double gap = std::numeric_limits<double>::infinity();
-  std::vector<Tri3>&old_t = scratch.old_t, &new_t = scratch.new_t;
+  std::vector<Tri3>&old_t = scratch.old_t, &new_t = scratch.new_t, &gone_t = scratch.gone_t;
   old_t.clear();
   new_t.clear();
+  gone_t.clear();
   for (Id t : bv) {
     bool has_w = false;
     for (int i = 0; i < 3; ++i) has_w |= s.tri[3 * us(t) + i] == w;
     Vec3 c[3], n[3];
     corners(s, t, v, s.x[us(v)], c);
+    if (has_w) {
+      gone_t.push_back({c[0], c[1], c[2]});
+      continue;
+    }
     old_t.push_back({c[0], c[1], c[2]});
-    if (has_w) continue;
     corners(s, t, v, s.x[us(w)], n);
     new_t.push_back({n[0], n[1], n[2]});
     const Vec3 n_old = tri_normal(c[0], c[1], c[2]), n_new = tri_normal(n[0], n[1], n[2]);
@@ -287,6 +291,9 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
       return false;
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
+  // The removed triangles last: old_t[i] and new_t[i] are then the same triangle before and
+  // after (keeps_input_close pairs them).
+  old_t.insert(old_t.end(), gone_t.begin(), gone_t.end());
   if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)]) ||
       !keeps_input_close(s, old_t, new_t))
     return false;
