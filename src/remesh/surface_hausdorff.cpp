@@ -107,17 +107,31 @@ bool keeps_input_close(const SurfaceProjection& geo, double hausd, const std::ve
 
 bool new_triangles_close(const SurfaceProjection& geo, double hausd, const std::vector<Tri3>& new_t,
                          Id hint) {
-  // Row by row, alternately forward and backward: each point next to the previous one, so that
-  // the walk of SurfaceProjection::within from the last answer has few steps to make.
-  for (const Tri3& t : new_t)
+  auto has_corner = [](const Tri3& t, const Vec3& p) { return t[0] == p || t[1] == p || t[2] == p; };
+  for (std::size_t k = 0; k < new_t.size(); ++k) {
+    const Tri3& t = new_t[k];
+    // The points of an edge shared with an earlier new triangle were checked with it (the same
+    // points up to rounding): edges t0 t1 (j = 0), t0 t2 (i = 0), t1 t2 (i + j = order).
+    bool done[3] = {false, false, false};
+    for (std::size_t m = 0; m < k; ++m) {
+      const bool h0 = has_corner(new_t[m], t[0]), h1 = has_corner(new_t[m], t[1]),
+                 h2 = has_corner(new_t[m], t[2]);
+      done[0] = done[0] || (h0 && h1);
+      done[1] = done[1] || (h0 && h2);
+      done[2] = done[2] || (h1 && h2);
+    }
+    // Row by row, alternately forward and backward: each point next to the previous one, so
+    // that the walk of SurfaceProjection::within from the last answer has few steps to make.
     for (int i = 0; i <= kProbeOrder; ++i)
       for (int jj = 0; i + jj <= kProbeOrder; ++jj) {
         const int j = i % 2 == 0 ? jj : kProbeOrder - i - jj;
         if ((i == 0 && j == 0) || i == kProbeOrder || j == kProbeOrder) continue;  // corners
+        if ((j == 0 && done[0]) || (i == 0 && done[1]) || (i + j == kProbeOrder && done[2])) continue;
         const Vec3 q = t[0] + (static_cast<double>(i) / kProbeOrder) * (t[1] - t[0]) +
                        (static_cast<double>(j) / kProbeOrder) * (t[2] - t[0]);
         if (!geo.within(q, hausd, &hint)) return false;
       }
+  }
   return true;
 }
 
