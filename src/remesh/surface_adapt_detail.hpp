@@ -18,6 +18,14 @@ inline std::uint64_t edge_key(Id a, Id b) {
   return (hi << 32) | lo;
 }
 
+/// Triangles around each edge of the current mesh (built at the start of a pass
+/// unless the previous one left it valid).
+struct Topology {
+  Adjacency adj;
+  std::vector<int> edge_count;  // triangles per edge
+  std::vector<Id> edge_tris;    // 2 per edge (first two triangles)
+};
+
 /// The mesh being remeshed: vertices with their size, tags and projection hints; triangles
 /// (dead ones have tri[3t] == kNoId until the pass compacts them); feature edges by key.
 struct State {
@@ -29,6 +37,11 @@ struct State {
   std::vector<std::int32_t> tref;
   std::unordered_map<std::uint64_t, std::int32_t> feature;  // edge key -> ref
   std::unordered_map<std::uint64_t, std::uint8_t> feature_tag;  // edge key -> kTagRidge if by angle
+
+  /// The topology of `tri` as a pass built it, while still valid: a pass that changes no
+  /// triangle (smoothing; a pass that applied nothing) leaves it to the next one.
+  Topology topo;
+  bool topo_valid = false;
 
   const SurfaceProjection* geo = nullptr;
   const SurfaceAdaptOptions* opt = nullptr;
@@ -54,13 +67,9 @@ struct State {
   void compact();
 };
 
-/// Triangles around each edge of the current mesh (built at the start of each pass).
-struct Topology {
-  Adjacency adj;
-  std::vector<int> edge_count;  // triangles per edge
-  std::vector<Id> edge_tris;    // 2 per edge (first two triangles)
-};
 Topology build_topology(const State& s);
+/// s.topo, rebuilt first unless valid.
+const Topology& topology(State& s);
 
 /// Splits edges longer than √2 in the size field; with bad_quality > 0, instead the longest edge
 /// of every triangle of quality below it.

@@ -17,6 +17,7 @@ using Tri3 = std::array<Vec3, 3>;
 /// hausd of the old triangles stay within hausd of the new ones (the new triangles cover the
 /// same footprint, so a point the old ones covered is the new ones' business). Without it,
 /// errors accumulate: each operation would be checked against the current mesh only.
+/// Faster when old_t[i] and new_t[i] are the same triangle before and after (they share a box).
 bool keeps_input_close(const SurfaceProjection& geo, double hausd, const std::vector<Tri3>& old_t,
                        const std::vector<Tri3>& new_t);
 

@@ -30,7 +30,16 @@ void neighbours(const State& s, const Adjacency& adj, Id v, std::vector<Id>& n) 
   for (Id t : ball(adj, v))
     for (int i = 0; i < 3; ++i)
       if (s.tri[3 * us(t) + i] != v) n.push_back(s.tri[3 * us(t) + i]);
-  std::sort(n.begin(), n.end());
+  if (n.size() > 32) {
+    std::sort(n.begin(), n.end());
+  } else {  // a ball's dozen ids: insertion sort
+    for (std::size_t i = 1; i < n.size(); ++i) {
+      const Id x = n[i];
+      std::size_t j = i;
+      for (; j > 0 && x < n[j - 1]; --j) n[j] = n[j - 1];
+      n[j] = x;
+    }
+  }
   n.erase(std::unique(n.begin(), n.end()), n.end());
 }
 
@@ -118,8 +127,16 @@ Topology build_topology(const State& s) {
   return t;
 }
 
+const Topology& topology(State& s) {
+  if (!s.topo_valid) {
+    s.topo = build_topology(s);
+    s.topo_valid = true;
+  }
+  return s.topo;
+}
+
 std::size_t split_pass(State& s, double bad_quality) {
-  const Topology topo = build_topology(s);
+  const Topology& topo = topology(s);
   const std::size_t ne = topo.adj.num_edges();
   std::vector<std::pair<double, Id>> cand;
   if (bad_quality > 0.0) {
@@ -212,13 +229,21 @@ std::size_t split_pass(State& s, double bad_quality) {
     }
     ++count;
   }
+  if (count > 0) s.topo_valid = false;
   return count;
 }
 
 namespace {
 
+/// Scratch vectors of try_collapse, reused from edge to edge (thousands of tries per pass).
+struct CollapseScratch {
+  std::vector<Id> nv, nw, common;
+  std::vector<Tri3> old_t, new_t, gone_t;
+};
+
 /// Tries to collapse v into w (see surface_adapt.hpp); applies it and returns true when allowed.
-bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<char>& dirty) {
+bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<char>& dirty,
+                  CollapseScratch& scratch) {
   if (s.tag[us(v)] & (kTagCorner | kTagRequired)) return false;
   const bool feat = s.is_feature(v, w);
   if ((s.tag[us(v)] & kTagRidge) && !feat) return false;
@@ -227,10 +252,10 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const auto bv = ball(topo.adj, v), bw = ball(topo.adj, w);
   if (any_dirty(bv, dirty) || any_dirty(bw, dirty)) return false;
   // Link condition: the common neighbours of v and w are the apexes of the edge's triangles.
-  std::vector<Id> nv, nw;
+  std::vector<Id>&nv = scratch.nv, &nw = scratch.nw, &common = scratch.common;
   neighbours(s, topo.adj, v, nv);
   neighbours(s, topo.adj, w, nw);
-  std::vector<Id> common;
+  common.clear();
   std::set_intersection(nv.begin(), nv.end(), nw.begin(), nw.end(), std::back_inserter(common));
   if (static_cast<int>(common.size()) != nt) return false;
   // New edges not too long.
@@ -245,14 +270,20 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const double qfloor = std::min(0.3, qmin_old);
   const double hausd = kCheckMargin * s.opt->hausd;
   double gap = std::numeric_limits<double>::infinity();
-  std::vector<Tri3> old_t, new_t;
+  std::vector<Tri3>&old_t = scratch.old_t, &new_t = scratch.new_t, &gone_t = scratch.gone_t;
+  old_t.clear();
+  new_t.clear();
+  gone_t.clear();
   for (Id t : bv) {
     bool has_w = false;
     for (int i = 0; i < 3; ++i) has_w |= s.tri[3 * us(t) + i] == w;
     Vec3 c[3], n[3];
     corners(s, t, v, s.x[us(v)], c);
+    if (has_w) {
+      gone_t.push_back({c[0], c[1], c[2]});
+      continue;
+    }
     old_t.push_back({c[0], c[1], c[2]});
-    if (has_w) continue;
     corners(s, t, v, s.x[us(w)], n);
     new_t.push_back({n[0], n[1], n[2]});
     const Vec3 n_old = tri_normal(c[0], c[1], c[2]), n_new = tri_normal(n[0], n[1], n[2]);
@@ -260,6 +291,9 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
       return false;
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
+  // The removed triangles last: old_t[i] and new_t[i] are then the same triangle before and
+  // after (keeps_input_close pairs them).
+  old_t.insert(old_t.end(), gone_t.begin(), gone_t.end());
   if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)]) ||
       !keeps_input_close(s, old_t, new_t))
     return false;
@@ -292,7 +326,7 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
 }  // namespace
 
 std::size_t collapse_pass(State& s) {
-  const Topology topo = build_topology(s);
+  const Topology& topo = topology(s);
   std::vector<std::pair<double, Id>> cand;
   for (std::size_t e = 0; e < topo.adj.num_edges(); ++e) {
     const double l = s.size_length(topo.adj.edges[2 * e], topo.adj.edges[2 * e + 1]);
@@ -301,16 +335,19 @@ std::size_t collapse_pass(State& s) {
   std::sort(cand.begin(), cand.end());
   std::vector<char> dirty(s.num_triangles(), 0);
   std::size_t count = 0;
+  CollapseScratch scratch;
   for (const auto& [l, e] : cand) {
     const Id a = topo.adj.edges[2 * us(e)], b = topo.adj.edges[2 * us(e) + 1];
-    if (try_collapse(s, topo, e, a, b, dirty) || try_collapse(s, topo, e, b, a, dirty)) ++count;
+    if (try_collapse(s, topo, e, a, b, dirty, scratch) || try_collapse(s, topo, e, b, a, dirty, scratch))
+      ++count;
   }
-  s.compact();
+  s.compact();  // renumbers nothing when nothing was collapsed: the topology stays valid
+  if (count > 0) s.topo_valid = false;
   return count;
 }
 
 std::size_t swap_pass(State& s) {
-  const Topology topo = build_topology(s);
+  const Topology& topo = topology(s);
   std::vector<char> dirty(s.num_triangles(), 0);
   std::size_t count = 0;
   const double hausd = kCheckMargin * s.opt->hausd;
@@ -360,11 +397,12 @@ std::size_t swap_pass(State& s) {
     dirty[us(t1)] = dirty[us(t2)] = 1;
     ++count;
   }
+  if (count > 0) s.topo_valid = false;
   return count;
 }
 
 std::size_t smooth_pass(State& s) {
-  const Topology topo = build_topology(s);
+  const Topology& topo = topology(s);  // moves change no triangle: stays valid
   std::size_t count = 0;
   std::vector<Id> nb;  // scratch reused from vertex to vertex
   std::vector<Tri3> old_t, new_t;

@@ -131,17 +131,19 @@ void SurfaceProjection::check_points(const Vec3& lo, const Vec3& hi, std::vector
     b[c] = std::clamp(static_cast<int>(std::floor((hi[c] - grid_lo_[c]) / cell_)), 0, n[c] - 1);
     if (hi[c] < grid_lo_[c] || lo[c] > grid_lo_[c] + n[c] * cell_) return;
   }
+  // The cells i = a[0] .. b[0] of a row (j, k) hold consecutive points: one range per row (most
+  // cells of a box around a piece of surface are empty).
   for (int k = a[2]; k <= b[2]; ++k)
-    for (int j = a[1]; j <= b[1]; ++j)
-      for (int i = a[0]; i <= b[0]; ++i) {
-        const std::size_t c = (static_cast<std::size_t>(k) * ny_ + j) * nx_ + i;
-        for (Id q = grid_offsets_[c]; q < grid_offsets_[c + 1]; ++q) {
-          const Vec3& p = grid_points_[static_cast<std::size_t>(q)];
-          bool inside = true;
-          for (int d = 0; d < 3; ++d) inside = inside && p[d] >= lo[d] && p[d] <= hi[d];
-          if (inside) out.push_back(p);
-        }
+    for (int j = a[1]; j <= b[1]; ++j) {
+      const std::size_t row = (static_cast<std::size_t>(k) * ny_ + j) * nx_;
+      const Id end = grid_offsets_[row + b[0] + 1];
+      for (Id q = grid_offsets_[row + a[0]]; q < end; ++q) {
+        const Vec3& p = grid_points_[static_cast<std::size_t>(q)];
+        if (p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] &&
+            p[2] <= hi[2])
+          out.push_back(p);
       }
+    }
 }
 
 bool SurfaceProjection::within(const Vec3& p, double r, Id* hint) const {
