@@ -342,7 +342,9 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   const Mesh& work = renumber ? ordered : input;
   const std::span<const SymMat2> work_metrics =
       renumber ? std::span<const SymMat2>(permuted) : metrics;
-  const Adjacency adjacency = build_adjacency(work.triangles, 3, work.num_vertices());
+  // The edge numbering only for the gradation (the rest reads the neighbours and vertex balls).
+  Adjacency adjacency = build_face_adjacency(work.triangles, 3, work.num_vertices());
+  if (options.hgrad > 0.0) add_edges(adjacency, work.triangles);
   const std::vector<SymMat2> prepared =
       prepare_metrics<2>(work, adjacency, work_metrics, options, result.report);
   Remesh2dContext ctx(work, prepared, options, adjacency);
