@@ -62,19 +62,18 @@ void add_triangles(TriMesh& m, const Mesh& mesh, const Adjacency& adj) {
     }
     m.tref[t] = mesh.tri_ref.empty() ? 0 : mesh.tri_ref[t];
   }
+  constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};  // edge i runs next -> prev
   for (std::size_t t = 0; t < nt; ++t)
     for (int i = 0; i < 3; ++i) {
       const Id n = adj.elem2elem[3 * t + i];
       if (n == kNoId) continue;
-      const Id s = 3 * static_cast<Id>(t) + i;
-      const Id a = m.edge_from(s), b = m.edge_to(s);
-      const Id* w = &m.tv[3 * n];
+      const Id a = m.tv[3 * t + kNext[i]], b = m.tv[3 * t + kPrev[i]];
+      const Id* w = &m.tv[3 * static_cast<std::size_t>(n)];
       int j = 0;
       while (j < 3 && (w[j] == a || w[j] == b)) ++j;
-      const Id r = 3 * n + j;
-      const bool same = j < 3 && ((m.edge_from(r) == a && m.edge_to(r) == b) ||
-                                  (m.edge_from(r) == b && m.edge_to(r) == a));
-      m.tadj[s] = same ? r : find_slot(m, n, a, b);
+      const bool same = j < 3 && ((w[kNext[j]] == b && w[kPrev[j]] == a) ||
+                                  (w[kNext[j]] == a && w[kPrev[j]] == b));
+      m.tadj[3 * t + i] = same ? 3 * n + j : find_slot(m, n, a, b);
     }
 }
 
