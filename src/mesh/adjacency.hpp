@@ -66,6 +66,10 @@ Adjacency build_face_adjacency(const std::vector<Id>& simplices, int verts_per_s
 /// topology often and never walk across faces (the surface remesher's passes).
 Adjacency build_edge_adjacency(const std::vector<Id>& simplices, int verts_per_simplex,
                                std::size_t num_vertices);
+/// Adds the edges (edges and elem2edge, as build_adjacency gives them) to an adjacency built
+/// without them (build_face_adjacency) of the same simplices.
+void add_edges(Adjacency& adj, const std::vector<Id>& simplices);
+
 /// The elements of the mesh's main simplex array (tets of a volume, triangles otherwise).
 Adjacency build_adjacency(const Mesh& mesh);
 

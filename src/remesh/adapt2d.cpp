@@ -68,36 +68,6 @@ void for_each_edge(const TriMesh& m, F f) {
   }
 }
 
-/// An edge to split or collapse, by its end vertices (slots move as the mesh changes).
-struct Candidate {
-  double length;
-  Id a, b;
-};
-
-/// The edges of metric length above `limit` (longer = true) or below it, sorted by `longer`
-/// first length (ties by ids, so the order is deterministic). Only the selected edges have
-/// their length computed (compare_edge_length decides the others from cheap bounds).
-std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer) {
-  // Sorted as pairs of integers: the bits of a positive double order as its value (flipped for
-  // the longest first), then (a, b) packed; the same order as comparing (length, a, b).
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> keys;
-  const int want = longer ? 1 : -1;
-  const std::uint64_t flip = longer ? ~std::uint64_t{0} : 0;
-  for_each_edge(m, [&](Id s) {
-    const Id a = m.edge_from(s), b = m.edge_to(s);
-    if (compare_edge_length(m, a, b, limit) != want) return;
-    const double l = edge_length(m, a, b);
-    keys.push_back({std::bit_cast<std::uint64_t>(l) ^ flip,
-                    (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b)});
-  });
-  std::sort(keys.begin(), keys.end());
-  std::vector<Candidate> out(keys.size());
-  for (std::size_t i = 0; i < keys.size(); ++i)
-    out[i] = {std::bit_cast<double>(keys[i].first ^ flip), static_cast<Id>(keys[i].second >> 32),
-              static_cast<Id>(keys[i].second & 0xffffffffu)};
-  return out;
-}
-
 /// When each vertex last moved or had its ball re-cut by a split, collapse or swap (a sweep
 /// counter), so that each swap and smoothing sweep after the first of the run only revisits what
 /// changed since the previous one (of this pass or the last): an edge whose four quadrilateral
@@ -119,6 +89,43 @@ struct Changes {
   }
 };
 
+/// An edge to split or collapse, by its end vertices (slots move as the mesh changes).
+struct Candidate {
+  double length;
+  Id a, b;
+};
+
+/// The edges of metric length above `limit` (longer = true) or below it, sorted by `longer`
+/// first length (ties by ids, so the order is deterministic). Only the selected edges have
+/// their length computed (compare_edge_length decides the others from cheap bounds).
+/// `since` > 0: only the edges with a vertex of their two triangles changed at or after that
+/// stamp.
+std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer,
+                                  const Changes& changes, std::uint32_t since = 0) {
+  // Sorted as pairs of integers: the bits of a positive double order as its value (flipped for
+  // the longest first), then (a, b) packed; the same order as comparing (length, a, b).
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> keys;
+  const int want = longer ? 1 : -1;
+  const std::uint64_t flip = longer ? ~std::uint64_t{0} : 0;
+  for_each_edge(m, [&](Id s) {
+    const Id a = m.edge_from(s), b = m.edge_to(s);
+    if (since > 0 && !changes.since(a, since) && !changes.since(b, since) &&
+        !changes.since(m.tv[s], since) &&
+        (m.tadj[s] == kNoId || !changes.since(m.tv[m.tadj[s]], since)))
+      return;
+    if (compare_edge_length(m, a, b, limit) != want) return;
+    const double l = edge_length(m, a, b);
+    keys.push_back({std::bit_cast<std::uint64_t>(l) ^ flip,
+                    (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b)});
+  });
+  std::sort(keys.begin(), keys.end());
+  std::vector<Candidate> out(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    out[i] = {std::bit_cast<double>(keys[i].first ^ flip), static_cast<Id>(keys[i].second >> 32),
+              static_cast<Id>(keys[i].second & 0xffffffffu)};
+  return out;
+}
+
 /// Splits the edges longer than √2, longest first, sweep after sweep (a split's new edges wait
 /// for the next sweep, so every long edge is reached and none is halved twice in a sweep).
 long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
@@ -127,8 +134,14 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
   // At most 3 sweeps a pass: refining a coarse mesh step by step, with collapses, swaps and
   // smoothing in between, places vertices better and is 3x faster than splitting to the end at
   // once (which overshoots the vertex count threefold on the PEERS.md cases).
+  // After the first sweep, only the edges whose two triangles changed in the previous one: the
+  // others were there with the same length, and their split refused (the decision depends on
+  // nothing else: the four vertices, their metrics and the hints of the ends).
+  std::uint32_t previous = 0;
   for (int sweep = 0; sweep < 3; ++sweep) {
-    const std::vector<Candidate> list = candidates(m, kLongEdge, true);
+    const std::uint32_t stamp = changes.begin();
+    const std::vector<Candidate> list = candidates(m, kLongEdge, true, changes, previous);
+    previous = stamp;
     long done = 0;
     for (const Candidate& c : list) {
       const Id s = find_edge_slot(m, c.a, c.b);
@@ -164,7 +177,7 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
   // from a coarse mesh overshot) may be removed even if a triangle gets up to 2x worse.
   CollapseLimits tiny = limits;
   tiny.relative_floor = 0.5;
-  std::vector<Candidate> list = candidates(m, kCollapseBelow, false);
+  std::vector<Candidate> list = candidates(m, kCollapseBelow, false, changes);
   // Candidates refused by length both ways, found in mesh order (vertex a first).
   std::vector<std::uint8_t> too_long(list.size(), 0);
   {
@@ -245,10 +258,14 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
   constexpr double kGoodBall = 0.9;
   TriMesh& m = ctx.mesh();
   // Exact qualities (move_vertex takes the ball's worst from here); the good-ball test compares
-  // them rounded to float, as it always has.
+  // them rounded to float, as it always has. Computed at the first look (a sweep with `since`
+  // visits few balls) and after each move: the same values as computing them all up front.
   std::vector<double> quality(m.triangle_capacity(), 0.0);
-  for (std::size_t t = 0; t < m.triangle_capacity(); ++t)
-    if (m.tri_alive(static_cast<Id>(t))) quality[t] = tri_quality(m, static_cast<Id>(t));
+  std::vector<std::uint8_t> known(m.triangle_capacity(), 0);
+  auto quality_of = [&](Id t) {
+    if (!known[t]) quality[t] = tri_quality(m, t), known[t] = 1;
+    return quality[t];
+  };
   thread_local Ball ball;
   long done = 0;
   for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
@@ -264,8 +281,9 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
     float worst = 1.0f;
     double worst_exact = 2.0;
     for (const Id t : ball.tris) {
-      worst = std::min(worst, static_cast<float>(quality[t]));
-      worst_exact = std::min(worst_exact, quality[t]);
+      const double q = quality_of(t);
+      worst = std::min(worst, static_cast<float>(q));
+      worst_exact = std::min(worst_exact, q);
     }
     if (worst >= kGoodBall) continue;
     NewVertex target;
@@ -274,7 +292,7 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
         Outcome::kApplied) {
       ctx.inherit_hint(v, v);
       changes.mark(v);
-      for (const Id t : ball.tris) quality[t] = tri_quality(m, t);
+      for (const Id t : ball.tris) quality[t] = tri_quality(m, t), known[t] = 1;
       ++done;
     } else {
       ++st.rejected;
@@ -342,7 +360,9 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   const Mesh& work = renumber ? ordered : input;
   const std::span<const SymMat2> work_metrics =
       renumber ? std::span<const SymMat2>(permuted) : metrics;
-  const Adjacency adjacency = build_adjacency(work.triangles, 3, work.num_vertices());
+  // The edge numbering only for the gradation (the rest reads the neighbours and vertex balls).
+  Adjacency adjacency = build_face_adjacency(work.triangles, 3, work.num_vertices());
+  if (options.hgrad > 0.0) add_edges(adjacency, work.triangles);
   const std::vector<SymMat2> prepared =
       prepare_metrics<2>(work, adjacency, work_metrics, options, result.report);
   Remesh2dContext ctx(work, prepared, options, adjacency);

@@ -212,6 +212,12 @@ void BackgroundMesh<D>::build_grid() {
     grid_.inv_cell[a] = grid_.n[a] / (hi[a] - lo[a]);
     cells *= static_cast<std::size_t>(grid_.n[a]);
   }
+  grid_.cells = cells;
+}
+
+template <int D>
+void BackgroundMesh<D>::build_grid_lists() const {
+  const std::size_t cells = grid_.cells;
   // Two passes over the simplices' bounding boxes: count, then fill (ids increase per cell).
   grid_.offsets.assign(cells + 1, 0);
   auto simplex_box = [&](std::size_t s, int c_lo[D], int c_hi[D]) {
@@ -260,7 +266,7 @@ void BackgroundMesh<D>::build_grid() {
 }
 
 template <int D>
-void BackgroundMesh<D>::build_face_grid() {
+void BackgroundMesh<D>::build_face_grid() const {
   const std::size_t cells = grid_.start.size();
   grid_.face_offsets.assign(cells + 1, 0);
   auto face_box = [&](std::size_t slot, int c_lo[D], int c_hi[D]) {

@@ -20,6 +20,8 @@
 // Queries are const and may run concurrently; only set_metrics (between remeshing stages) changes
 // the object.
 #include <cstddef>
+#include <memory>
+#include <mutex>
 #include <span>
 #include <vector>
 
@@ -128,6 +130,9 @@ class BackgroundMesh {
     Vec<D> cell{};      // cell sides
     Vec<D> inv_cell{};  // 1 / cell sides
     int n[D]{};         // cells per axis
+    std::size_t cells = 0;
+    // The lists below are built at the first query that needs them (build_grid_lists): the
+    // remesher's queries walk from nearby hints and often never do.
     std::vector<std::size_t> offsets;
     std::vector<Id> ids;
     std::vector<Id> start;  // the listed simplex with centroid nearest the cell centre, or kNoId
@@ -142,7 +147,13 @@ class BackgroundMesh {
              std::span<const double> metrics, const Adjacency* adjacency = nullptr);
   /// The checks, volumes, logs, neighbours (unless given) and grid of the arrays in place.
   void finish(std::vector<Id>&& elem2elem);
+  /// The grid's shape (the cell lists wait for ensure_grid_lists).
   void build_grid();
+  void build_grid_lists() const;
+  /// Builds the cell lists once (thread-safe: queries may run concurrently).
+  void ensure_grid_lists() const {
+    std::call_once(*grid_once_, [this] { build_grid_lists(); });
+  }
   /// Signed sub-volumes Vᵢ(p) (p replacing vertex i) divided by the simplex's volume.
   void barycentric(Id s, const Vec<D>& p, double b[kVerts]) const;
   /// The walk: the simplex containing p, or kNoId when it left the domain or hit the cap.
@@ -152,7 +163,7 @@ class BackgroundMesh {
   /// face, or `candidate` (a simplex of p's cell, kNoId: none) when it is at least as close — a
   /// point inside the domain that the containment tolerance missed.
   Location<D> closest_simplex(const Vec<D>& p, Id candidate = kNoId) const;
-  void build_face_grid();
+  void build_face_grid() const;
   void cell_of(const Vec<D>& p, int c[D]) const;
   std::size_t cell_index(const int c[D]) const;
 
@@ -162,7 +173,8 @@ class BackgroundMesh {
   std::vector<Id> elem2elem_;
   std::vector<SymMat<D>> metrics_;
   std::vector<SymMat<D>> logs_;  // log M per vertex, for kLogEuclidean only
-  Grid grid_;
+  mutable Grid grid_;  // the cell lists are filled by ensure_grid_lists
+  std::unique_ptr<std::once_flag> grid_once_ = std::make_unique<std::once_flag>();
   int max_walk_steps_ = 0;
   double hint_reach_ = 0.0;
 };

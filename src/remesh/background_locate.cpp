@@ -118,6 +118,7 @@ Location<D> BackgroundMesh<D>::locate(const Vec<D>& p, Id hint, LocateStats* sta
   if (start == kNoId) {
     int c[D];
     cell_of(p, c);
+    ensure_grid_lists();
     start = grid_.start[cell_index(c)];
   }
   long steps = 0;
@@ -145,6 +146,7 @@ Location<D> BackgroundMesh<D>::robust_search(const Vec<D>& p) const {
   // Any simplex containing p overlaps p's cell (its bounding box holds p, and cell_of is
   // monotone); the first in id order wins. Else the one nearest to containing p (largest
   // smallest coordinate) is the candidate handed to closest_simplex.
+  ensure_grid_lists();
   int c[D];
   cell_of(p, c);
   const std::size_t cell = cell_index(c);
@@ -187,6 +189,7 @@ inline double closest_on_facet(const Vec3 x[3], const Vec3& p, double w[3]) {
 
 template <int D>
 Location<D> BackgroundMesh<D>::closest_simplex(const Vec<D>& p, Id candidate) const {
+  ensure_grid_lists();
   int c0[D];
   cell_of(p, c0);
   // Cells at ring r + 1 are at least r·h from the point of the grid box closest to p, hence from

@@ -57,29 +57,24 @@ struct Sides {
   std::vector<Id> left, right;
 };
 
-/// Unique feature edges sorted by (v0, v1), refs from mesh.edges, and the map listed -> feature.
+/// Unique feature edges sorted by (v0, v1), refs from mesh.edges, and the map listed -> feature:
+/// the boundary and interface sides of the triangles (by their neighbours, no edge numbering)
+/// and every listed edge, as (smaller, larger) vertex pairs.
 std::vector<FeatureEdge> collect_feature_edges(const Mesh& mesh, const Adjacency& adj,
-                                               std::vector<Id>& input2feature,
-                                               std::vector<Id>& adj2feature) {
-  std::vector<std::uint8_t> mark(adj.num_edges(), 0);
+                                               std::vector<Id>& input2feature) {
+  std::vector<FeatureEdge> out;
   for (std::size_t t = 0; t < adj.num_elements(); ++t)
     for (int i = 0; i < 3; ++i) {
       const Id n = adj.elem2elem[3 * t + i];
-      if (n == kNoId || tri_ref(mesh, n) != tri_ref(mesh, static_cast<Id>(t)))
-        mark[adj.elem2edge[3 * t + i]] = 1;
-    }
-  std::vector<FeatureEdge> out;
-  for (std::size_t e = 0; e < mesh.num_edges(); ++e) {
-    const Id a = mesh.edges[2 * e], b = mesh.edges[2 * e + 1];
-    const Id ae = find_edge(adj, a, b);
-    if (ae != kNoId) {
-      mark[ae] = 1;
-    } else {  // an edge of no triangle
+      if (n != kNoId && tri_ref(mesh, n) == tri_ref(mesh, static_cast<Id>(t))) continue;
+      if (n != kNoId && n < static_cast<Id>(t)) continue;  // listed from the other side
+      const Id a = mesh.triangles[3 * t + kTriEdge[i][0]], b = mesh.triangles[3 * t + kTriEdge[i][1]];
       out.push_back({std::min(a, b), std::max(a, b)});
     }
+  for (std::size_t e = 0; e < mesh.num_edges(); ++e) {
+    const Id a = mesh.edges[2 * e], b = mesh.edges[2 * e + 1];
+    out.push_back({std::min(a, b), std::max(a, b)});
   }
-  for (std::size_t e = 0; e < adj.num_edges(); ++e)
-    if (mark[e]) out.push_back({adj.edges[2 * e], adj.edges[2 * e + 1]});
   const auto key = [](const FeatureEdge& f) { return std::pair{f.v0, f.v1}; };
   std::sort(out.begin(), out.end(), [&](const auto& x, const auto& y) { return key(x) < key(y); });
   out.erase(std::unique(out.begin(), out.end(),
@@ -98,22 +93,34 @@ std::vector<FeatureEdge> collect_feature_edges(const Mesh& mesh, const Adjacency
       fe.ref = e < mesh.edge_ref.size() ? mesh.edge_ref[e] : 0;
     }
   }
-  adj2feature.assign(adj.num_edges(), kNoId);
-  for (std::size_t e = 0; e < adj.num_edges(); ++e)
-    if (mark[e]) adj2feature[e] = lookup.find_feature_edge(adj.edges[2 * e], adj.edges[2 * e + 1]);
   return std::move(lookup.edges);
+}
+
+/// The feature edge joining a and b, from the features at the smaller of the two (the CSR of
+/// vertex_features), or kNoId.
+Id feature_between(Id a, Id b, const std::vector<FeatureEdge>& fes, const std::vector<Id>& off,
+                   const std::vector<Id>& list) {
+  const Id lo = std::min(a, b), hi = std::max(a, b);
+  for (Id k = off[lo]; k < off[lo + 1]; ++k) {
+    const FeatureEdge& f = fes[list[k]];
+    if (f.v0 == lo && f.v1 == hi) return list[k];
+  }
+  return kNoId;
 }
 
 /// Which side of each feature edge each incident triangle lies on, by the sign of its area
 /// (robust to clockwise input triangles); the smallest triangle id when a side has several.
-Sides feature_sides(const Mesh& mesh, const Adjacency& adj, const std::vector<FeatureEdge>& fes,
-                    const std::vector<Id>& adj2feature) {
+Sides feature_sides(const Mesh& mesh, const std::vector<FeatureEdge>& fes,
+                    const std::vector<Id>& off, const std::vector<Id>& list) {
   Sides s{std::vector<Id>(fes.size(), kNoId), std::vector<Id>(fes.size(), kNoId)};
-  for (std::size_t t = 0; t < adj.num_elements(); ++t)
+  for (std::size_t t = 0; t < mesh.num_triangles(); ++t)
     for (int i = 0; i < 3; ++i) {
-      const Id f = adj2feature[adj.elem2edge[3 * t + i]];
-      if (f == kNoId) continue;
       const Id* tv = &mesh.triangles[3 * t];
+      const Id a = tv[kTriEdge[i][0]], b = tv[kTriEdge[i][1]];
+      // Most vertices are on no feature edge: the test is then two loads.
+      if (off[a] == off[a + 1] || off[b] == off[b + 1]) continue;
+      const Id f = feature_between(a, b, fes, off, list);
+      if (f == kNoId) continue;
       const Vec2 p0 = xy(mesh, fes[f].v0), p1 = xy(mesh, fes[f].v1);
       double o = cross(p1 - p0, xy(mesh, tv[i]) - p0);
       if (o == 0.0)  // degenerate triangle: its combinatorial orientation decides
@@ -254,12 +261,11 @@ BoundaryCurves build_boundary_curves(const Mesh& mesh, const CurveOptions& optio
   options.validate();
   check_input(mesh);
   const std::size_t nv = mesh.num_vertices();
-  const Adjacency own = adjacency ? Adjacency{} : build_adjacency(mesh.triangles, 3, nv);
+  const Adjacency own = adjacency ? Adjacency{} : build_face_adjacency(mesh.triangles, 3, nv);
   const Adjacency& adj = adjacency ? *adjacency : own;  // no copy of the caller's
 
   BoundaryCurves out;
-  std::vector<Id> adj2feature;
-  out.edges = collect_feature_edges(mesh, adj, out.input_edge2feature, adj2feature);
+  out.edges = collect_feature_edges(mesh, adj, out.input_edge2feature);
   const std::vector<FeatureEdge>& fes = out.edges;
   for (const FeatureEdge& f : fes)
     if (xy(mesh, f.v0) == xy(mesh, f.v1)) {
@@ -269,9 +275,9 @@ BoundaryCurves build_boundary_curves(const Mesh& mesh, const CurveOptions& optio
       msg += std::to_string(f.v1 + 1);
       throw InputError(msg);
     }
-  const Sides sides = feature_sides(mesh, adj, fes, adj2feature);
   std::vector<Id> off, list;
   vertex_features(nv, fes, off, list);
+  const Sides sides = feature_sides(mesh, fes, off, list);
   out.corner = find_corners(mesh, options, fes, sides, off, list);
 
   // Open curves from the corners in increasing id, then the corner-free loops from their

@@ -122,7 +122,8 @@ struct BoundaryCurves {
 /// triangle refs on either side, and a turning angle above options.angle_deg. Deterministic: the
 /// result depends on the vertex ids, edge refs and triangle refs only, not on the order of the
 /// triangles. Throws InputError for a non-planar mesh, bad ids or a zero-length feature edge.
-/// `adjacency`, when given, is build_adjacency(mesh.triangles, 3, nv) (saves rebuilding it).
+/// `adjacency`, when given, is build_face_adjacency (or build_adjacency) of mesh.triangles
+/// (saves rebuilding it; only the neighbours are read).
 BoundaryCurves build_boundary_curves(const Mesh& mesh, const CurveOptions& options = {},
                                      const Adjacency* adjacency = nullptr);
 
