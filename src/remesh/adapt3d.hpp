@@ -28,7 +28,7 @@ struct Adapt3dOptions : Adapt2dOptions {
   bool keep_surface = false;  ///< --nosurf: no boundary vertex moves, goes or is added
   /// Staged approach to the target (metric/approach.hpp): the largest size ratio asked of the
   /// mesh from one stage to the next; 0: the target at once. A mesh already near its target
-  /// (the sizes it implies within this factor of the target's) has one stage.
+  /// (no input edge longer than this in the target metric) has one stage.
   double approach_growth = 4.0;
 };
 

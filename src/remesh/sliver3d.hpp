@@ -12,7 +12,8 @@ struct SliverLimits {
   int sweeps = 4;            ///< at most this many sweeps over the bad tets
   double budget = 0.02;      ///< each sweep works on the worst tets only, this fraction of all
   bool swap = true, move = true, collapse = true;  ///< the operators allowed
-  /// Splits of the slivers none of whose vertices may move (split_sliver): with a kept surface.
+  /// A new interior vertex for the slivers none of whose vertices may move (star_sliver, else
+  /// split_sliver): with a kept surface.
   bool split_fixed = false;
 };
 
