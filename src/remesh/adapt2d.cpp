@@ -369,6 +369,7 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   TriMesh& m = ctx.mesh();
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
+  double prev_in = 0.0, prev_qmin = 0.0, prev_qmean = 0.0;
   Changes changes;
   std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the previous swap and smoothing sweeps
   for (int pass = 1; pass <= options.max_passes; ++pass) {
@@ -390,11 +391,15 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.report.passes.push_back(st);
     if (on_pass) on_pass(st);
-    // Converged when fewer than 0.5% of the vertices were inserted or removed, or when the
+    // Converged when fewer than 0.5% of the vertices were inserted or removed, when the
     // count of insertions and removals has not reached a new low for 3 passes (a few edges
-    // then only cycle between split and collapse).
+    // then only cycle between split and collapse), or when a pass changed neither the
+    // fraction of edges in band (by 0.1%) nor raised the worst or the mean quality (by 0.001).
     const long ops = st.splits + st.collapses;
-    if (ops <= static_cast<long>(st.vertices / 200) || pass - best_pass >= 3) {
+    const bool still = pass > 1 && std::abs(st.len_in - prev_in) < 1e-3 &&
+                       st.q_min < prev_qmin + 1e-3 && st.q_mean < prev_qmean + 1e-3;
+    prev_in = st.len_in, prev_qmin = st.q_min, prev_qmean = st.q_mean;
+    if (ops <= static_cast<long>(st.vertices / 200) || pass - best_pass >= 3 || still) {
       result.report.converged = true;
       break;
     }
