@@ -1,16 +1,63 @@
 #include "render/canvas.hpp"
 
 #include <cairo-svg.h>
+#include <cairo.h>
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <type_traits>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 
 namespace riemesh::render_detail {
+
+// The cairo functions the pictures use (the headers give their types; the library is loaded at
+// run time). X(name) for each cairo_name.
+#define RIEMESH_CAIRO_FUNCTIONS(X)                                                            \
+  X(arc) X(clip) X(close_path) X(create) X(destroy) X(fill) X(fill_preserve)                  \
+  X(image_surface_create) X(line_to) X(move_to) X(paint) X(rectangle) X(restore) X(rotate)    \
+  X(save) X(select_font_face) X(set_dash) X(set_font_size) X(set_line_join) X(set_line_width) \
+  X(set_source_rgb) X(set_source_rgba) X(show_text) X(status) X(status_to_string) X(stroke)   \
+  X(surface_destroy) X(surface_finish) X(surface_status) X(surface_write_to_png_stream)       \
+  X(svg_surface_create_for_stream) X(text_extents) X(translate)
+
+struct CairoApi {
+#define RIEMESH_CAIRO_POINTER(name) decltype(&::cairo_##name) name = nullptr;
+  RIEMESH_CAIRO_FUNCTIONS(RIEMESH_CAIRO_POINTER)
+#undef RIEMESH_CAIRO_POINTER
+};
+
 namespace {
+
+/// Loads libcairo.so.2 (kept loaded: RTLD_NODELETE) and resolves the functions above.
+std::unique_ptr<const CairoApi> load_cairo() {
+  void* lib = dlopen("libcairo.so.2", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+  if (lib == nullptr) {
+    const char* why = dlerror();
+    std::string msg = "pictures need the cairo library (Debian package libcairo2): ";
+    msg += why != nullptr ? why : "libcairo.so.2 not found";
+    throw Error(msg);
+  }
+  auto api = std::make_unique<CairoApi>();
+  bool missing = false;
+  std::string names;
+#define RIEMESH_CAIRO_RESOLVE(name)                                                   \
+  if (void* f = dlsym(lib, "cairo_" #name))                                          \
+    api->name = reinterpret_cast<std::remove_reference_t<decltype(api->name)>>(f);   \
+  else                                                                               \
+    missing = true, names += " cairo_" #name;
+  RIEMESH_CAIRO_FUNCTIONS(RIEMESH_CAIRO_RESOLVE)
+#undef RIEMESH_CAIRO_RESOLVE
+  dlclose(lib);  // NODELETE: stays loaded, the pointers stay valid
+  if (missing) throw Error("libcairo.so.2 lacks" + names + " (cairo too old?)");
+  return api;
+}
+
+cairo_t* context(void* cr) { return static_cast<cairo_t*>(cr); }
+cairo_surface_t* surface(void* s) { return static_cast<cairo_surface_t*>(s); }
 
 cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
   static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
@@ -25,12 +72,12 @@ bool ends_with(const std::string& s, const std::string& suffix) {
   return tail == suffix;
 }
 
-void require_ok(cairo_status_t s, const char* what) {
+void require_ok(const CairoApi& api, cairo_status_t s, const char* what) {
   if (s != CAIRO_STATUS_SUCCESS) {
     std::string msg = "cairo: ";
     msg += what;
     msg += ": ";
-    msg += cairo_status_to_string(s);
+    msg += api.status_to_string(s);
     throw Error(msg);
   }
 }
@@ -68,64 +115,89 @@ Rgb category_color(std::size_t i) {
 }
 
 Canvas::Canvas(ImageFormat format, int width, int height)
-    : format_(format), width_(width), height_(height) {
-  if (format == ImageFormat::kPng)
-    surface_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
-  else
-    surface_ = cairo_svg_surface_create_for_stream(append_bytes, &svg_bytes_, width, height);
-  cr_ = cairo_create(surface_);
-  if (cairo_status(cr_) != CAIRO_STATUS_SUCCESS) {
-    const cairo_status_t s = cairo_status(cr_);
-    cairo_destroy(cr_);
-    cairo_surface_destroy(surface_);
-    require_ok(s, "cannot create the image");
+    : api_(load_cairo()), format_(format), width_(width), height_(height) {
+  const CairoApi& c = *api_;
+  cairo_surface_t* s =
+      format == ImageFormat::kPng
+          ? c.image_surface_create(CAIRO_FORMAT_ARGB32, width, height)
+          : c.svg_surface_create_for_stream(append_bytes, &svg_bytes_, width, height);
+  cairo_t* cr = c.create(s);
+  if (c.status(cr) != CAIRO_STATUS_SUCCESS) {
+    const cairo_status_t status = c.status(cr);
+    c.destroy(cr);
+    c.surface_destroy(s);
+    require_ok(c, status, "cannot create the image");
   }
-  cairo_set_source_rgb(cr_, 1, 1, 1);
-  cairo_paint(cr_);
+  surface_ = s, cr_ = cr;
+  c.set_source_rgb(cr, 1, 1, 1);
+  c.paint(cr);
 }
 
 Canvas::~Canvas() {
-  cairo_destroy(cr_);
-  cairo_surface_destroy(surface_);
+  api_->destroy(context(cr_));
+  api_->surface_destroy(surface(surface_));
 }
 
 void Canvas::set_color(const Rgb& c, double alpha) const {
-  cairo_set_source_rgba(cr_, c.r, c.g, c.b, alpha);
+  api_->set_source_rgba(context(cr_), c.r, c.g, c.b, alpha);
 }
+void Canvas::set_line_width(double w) const { api_->set_line_width(context(cr_), w); }
+void Canvas::set_round_joins() const {
+  api_->set_line_join(context(cr_), CAIRO_LINE_JOIN_ROUND);
+}
+void Canvas::set_dash(bool dashed, double on, double off) const {
+  const double dash[2] = {on, off};
+  api_->set_dash(context(cr_), dash, dashed ? 2 : 0, 0);
+}
+void Canvas::move_to(double x, double y) const { api_->move_to(context(cr_), x, y); }
+void Canvas::line_to(double x, double y) const { api_->line_to(context(cr_), x, y); }
+void Canvas::close_path() const { api_->close_path(context(cr_)); }
+void Canvas::rectangle(double x, double y, double w, double h) const {
+  api_->rectangle(context(cr_), x, y, w, h);
+}
+void Canvas::arc(double x, double y, double radius, double from, double to) const {
+  api_->arc(context(cr_), x, y, radius, from, to);
+}
+void Canvas::stroke() const { api_->stroke(context(cr_)); }
+void Canvas::fill() const { api_->fill(context(cr_)); }
+void Canvas::fill_preserve() const { api_->fill_preserve(context(cr_)); }
+void Canvas::clip() const { api_->clip(context(cr_)); }
+void Canvas::push_state() const { api_->save(context(cr_)); }
+void Canvas::pop_state() const { api_->restore(context(cr_)); }
+void Canvas::translate(double x, double y) const { api_->translate(context(cr_), x, y); }
+void Canvas::rotate(double radians) const { api_->rotate(context(cr_), radians); }
 
 void Canvas::text(double x, double y, const std::string& s, double size, Align align,
                   bool bold) const {
-  cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr_, size);
-  cairo_text_extents_t ext;
-  cairo_text_extents(cr_, s.c_str(), &ext);
+  const double advance = text_width(s, size, bold);  // selects the font too
   const double dx = align == Align::kLeft     ? 0.0
-                    : align == Align::kCenter ? -0.5 * ext.x_advance
-                                              : -ext.x_advance;
-  cairo_move_to(cr_, x + dx, y);
-  cairo_show_text(cr_, s.c_str());
+                    : align == Align::kCenter ? -0.5 * advance
+                                              : -advance;
+  api_->move_to(context(cr_), x + dx, y);
+  api_->show_text(context(cr_), s.c_str());
 }
 
 double Canvas::text_width(const std::string& s, double size, bool bold) const {
-  cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+  cairo_t* cr = context(cr_);
+  api_->select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
                          bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr_, size);
+  api_->set_font_size(cr, size);
   cairo_text_extents_t ext;
-  cairo_text_extents(cr_, s.c_str(), &ext);
+  api_->text_extents(cr, s.c_str(), &ext);
   return ext.x_advance;
 }
 
 void Canvas::save(const std::string& path) {
-  require_ok(cairo_status(cr_), "drawing failed");
+  const CairoApi& c = *api_;
+  require_ok(c, c.status(context(cr_)), "drawing failed");
   if (format_ == ImageFormat::kPng) {
     std::string bytes;
-    require_ok(cairo_surface_write_to_png_stream(surface_, append_bytes, &bytes),
+    require_ok(c, c.surface_write_to_png_stream(surface(surface_), append_bytes, &bytes),
                "cannot encode the PNG");
     write_file_atomically(path, bytes);
   } else {
-    cairo_surface_finish(surface_);
-    require_ok(cairo_surface_status(surface_), "cannot encode the SVG");
+    c.surface_finish(surface(surface_));
+    require_ok(c, c.surface_status(surface(surface_)), "cannot encode the SVG");
     write_file_atomically(path, svg_bytes_);
   }
 }

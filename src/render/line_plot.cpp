@@ -59,8 +59,7 @@ struct Frame {
 };
 
 void draw_axes(const Canvas& cv, const Frame& f, const LogLogPlot& plot) {
-  cairo_t* cr = cv.cr();
-  cairo_set_line_width(cr, 1.0);
+  cv.set_line_width(1.0);
   // Grid and labels at each decade, light lines at 2..9 times it.
   for (int axis = 0; axis < 2; ++axis) {
     const Range& r = axis == 0 ? f.rx : f.ry;
@@ -70,13 +69,13 @@ void draw_axes(const Canvas& cv, const Frame& f, const LogLogPlot& plot) {
         if (lv < r.lo || lv > r.hi) continue;
         cv.set_color({0.5, 0.5, 0.5}, m == 1 ? 0.45 : 0.15);
         if (axis == 0) {
-          cairo_move_to(cr, f.px(v), f.y0);
-          cairo_line_to(cr, f.px(v), f.y0 + f.h);
+          cv.move_to(f.px(v), f.y0);
+          cv.line_to(f.px(v), f.y0 + f.h);
         } else {
-          cairo_move_to(cr, f.x0, f.py(v));
-          cairo_line_to(cr, f.x0 + f.w, f.py(v));
+          cv.move_to(f.x0, f.py(v));
+          cv.line_to(f.x0 + f.w, f.py(v));
         }
-        cairo_stroke(cr);
+        cv.stroke();
         // Labels at the decades, and at 2 and 5 times them on an axis of under two decades.
         const bool label = m == 1 || (r.hi - r.lo < 2.0 && (m == 2 || m == 5));
         if (!label) continue;
@@ -90,56 +89,52 @@ void draw_axes(const Canvas& cv, const Frame& f, const LogLogPlot& plot) {
     }
   }
   cv.set_color({0, 0, 0});
-  cairo_rectangle(cr, f.x0, f.y0, f.w, f.h);
-  cairo_stroke(cr);
+  cv.rectangle(f.x0, f.y0, f.w, f.h);
+  cv.stroke();
   cv.text(f.x0 + 0.5 * f.w, 22, plot.title, 14, Align::kCenter, true);
   cv.text(f.x0 + 0.5 * f.w, f.y0 + f.h + 36, plot.x_label, 12, Align::kCenter);
-  cairo_save(cr);
-  cairo_translate(cr, 18, f.y0 + 0.5 * f.h);
-  cairo_rotate(cr, -std::numbers::pi / 2);
+  cv.push_state();
+  cv.translate(18, f.y0 + 0.5 * f.h);
+  cv.rotate(-std::numbers::pi / 2);
   cv.text(0, 0, plot.y_label, 12, Align::kCenter);
-  cairo_restore(cr);
+  cv.pop_state();
 }
 
 void draw_series(const Canvas& cv, const Frame& f, const PlotSeries& s) {
-  cairo_t* cr = cv.cr();
   cv.set_color(render_detail::category_color(static_cast<std::size_t>(s.color)));
-  cairo_set_line_width(cr, 2.0);
-  const double dash[2] = {6.0, 4.0};
-  cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+  cv.set_line_width(2.0);
+  cv.set_dash(s.dashed);
   bool started = false;
   for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
     if (!drawable(s.x[i], s.y[i])) continue;
     if (started)
-      cairo_line_to(cr, f.px(s.x[i]), f.py(s.y[i]));
+      cv.line_to(f.px(s.x[i]), f.py(s.y[i]));
     else
-      cairo_move_to(cr, f.px(s.x[i]), f.py(s.y[i]));
+      cv.move_to(f.px(s.x[i]), f.py(s.y[i]));
     started = true;
   }
-  cairo_stroke(cr);
-  cairo_set_dash(cr, dash, 0, 0);
+  cv.stroke();
+  cv.set_dash(false);
   for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
     if (!drawable(s.x[i], s.y[i])) continue;
-    cairo_arc(cr, f.px(s.x[i]), f.py(s.y[i]), 3.5, 0, 2 * std::numbers::pi);
-    cairo_fill(cr);
+    cv.arc(f.px(s.x[i]), f.py(s.y[i]), 3.5, 0, 2 * std::numbers::pi);
+    cv.fill();
   }
 }
 
 /// Legend in a column right of the plot area (it never hides a curve).
 void draw_legend(const Canvas& cv, const Frame& f, const LogLogPlot& plot) {
-  cairo_t* cr = cv.cr();
   const double row = 17, bx = f.x0 + f.w + 10, by = f.y0;
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const PlotSeries& s = plot.series[i];
     const double y = by + 4 + row * (i + 0.5);
     cv.set_color(render_detail::category_color(static_cast<std::size_t>(s.color)));
-    cairo_set_line_width(cr, 2.0);
-    const double dash[2] = {6.0, 4.0};
-    cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
-    cairo_move_to(cr, bx + 6, y);
-    cairo_line_to(cr, bx + 34, y);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, dash, 0, 0);
+    cv.set_line_width(2.0);
+    cv.set_dash(s.dashed);
+    cv.move_to(bx + 6, y);
+    cv.line_to(bx + 34, y);
+    cv.stroke();
+    cv.set_dash(false);
     cv.set_color({0, 0, 0});
     cv.text(bx + 40, y + 4, s.label, 11);
   }
@@ -175,11 +170,11 @@ void plot_loglog(const LogLogPlot& plot, const std::string& path, int width) {
     legend_w = std::max(legend_w, cv.text_width(s.label, 11) + 56);
   f.w = std::max(0.5 * f.w, f.w - legend_w);
   draw_axes(cv, f, plot);
-  cairo_save(cv.cr());
-  cairo_rectangle(cv.cr(), f.x0, f.y0, f.w, f.h);
-  cairo_clip(cv.cr());
+  cv.push_state();
+  cv.rectangle(f.x0, f.y0, f.w, f.h);
+  cv.clip();
   for (const PlotSeries& s : plot.series) draw_series(cv, f, s);
-  cairo_restore(cv.cr());
+  cv.pop_state();
   draw_legend(cv, f, plot);
   cv.save(path);
 }

@@ -13,7 +13,6 @@ using render_detail::Align;
 using render_detail::Canvas;
 
 void draw_panel(const Canvas& cv, const HistogramPanel& p, double x, double y, double w, double h) {
-  cairo_t* cr = cv.cr();
   cv.set_color({0, 0, 0});
   cv.text(x + 0.5 * w, y + 16, p.title, 13, Align::kCenter, true);
   const std::size_t bins = p.histogram.counts.size();
@@ -29,17 +28,17 @@ void draw_panel(const Canvas& cv, const HistogramPanel& p, double x, double y, d
     const bool hi = i < p.highlight.size() && p.highlight[i];
     cv.set_color(hi ? render_detail::Rgb{0.173, 0.627, 0.173}
                     : render_detail::Rgb{0.122, 0.467, 0.706});
-    cairo_rectangle(cr, px + i * bar_w + 1, py + ph - bh, bar_w - 2, bh);
-    cairo_fill(cr);
+    cv.rectangle(px + i * bar_w + 1, py + ph - bh, bar_w - 2, bh);
+    cv.fill();
     cv.set_color({0.2, 0.2, 0.2});
     if (c > 0)
       cv.text(px + (i + 0.5) * bar_w, py + ph - bh - 3, std::to_string(c), 9, Align::kCenter);
   }
   cv.set_color({0, 0, 0});
-  cairo_set_line_width(cr, 1.0);
-  cairo_move_to(cr, px, py + ph + 0.5);
-  cairo_line_to(cr, px + pw, py + ph + 0.5);
-  cairo_stroke(cr);
+  cv.set_line_width(1.0);
+  cv.move_to(px, py + ph + 0.5);
+  cv.line_to(px + pw, py + ph + 0.5);
+  cv.stroke();
   // Edge labels, every other one when the bins are narrow.
   const std::size_t step = bar_w < 40 ? 2 : 1;
   for (std::size_t i = 0; i <= bins; i += step)

@@ -129,33 +129,32 @@ Coloring coloring(const Mesh& mesh, const RenderOptions& o) {
 }
 
 void draw_colorbar(const Canvas& cv, const Coloring& c, double x, double y, double h) {
-  cairo_t* cr = cv.cr();
   const double w = 16.0;
   const int steps = 64;
   for (int i = 0; i < steps; ++i) {
     cv.set_color(render_detail::viridis((i + 0.5) / steps));
-    cairo_rectangle(cr, x, y + h * (1.0 - (i + 1.0) / steps), w, h / steps + 0.5);
-    cairo_fill(cr);
+    cv.rectangle(x, y + h * (1.0 - (i + 1.0) / steps), w, h / steps + 0.5);
+    cv.fill();
   }
   cv.set_color({0, 0, 0});
-  cairo_set_line_width(cr, 1.0);
-  cairo_rectangle(cr, x, y, w, h);
-  cairo_stroke(cr);
+  cv.set_line_width(1.0);
+  cv.rectangle(x, y, w, h);
+  cv.stroke();
   const int ticks = 5;
   for (int i = 0; i <= ticks; ++i) {
     const double t = static_cast<double>(i) / ticks;
     const double v = c.log_scale ? c.lo * std::pow(c.hi / c.lo, t) : c.lo + t * (c.hi - c.lo);
     const double ty = y + h * (1.0 - t);
-    cairo_move_to(cr, x + w, ty);
-    cairo_line_to(cr, x + w + 4, ty);
-    cairo_stroke(cr);
+    cv.move_to(x + w, ty);
+    cv.line_to(x + w + 4, ty);
+    cv.stroke();
     cv.text(x + w + 7, ty + 4, render_detail::format_number(v), 11);
   }
   // Inverted elements (negative quality) are red, outside the colour map.
   if (std::any_of(c.values.begin(), c.values.end(), [](double v) { return v < 0.0; })) {
     cv.set_color({0.85, 0.0, 0.0});
-    cairo_rectangle(cr, x, y + h + 14, w, 12);
-    cairo_fill(cr);
+    cv.rectangle(x, y + h + 14, w, 12);
+    cv.fill();
     cv.set_color({0, 0, 0});
     cv.text(x + w + 7, y + h + 24, "inverted", 11);
   }
@@ -171,8 +170,8 @@ void draw_swatches(const Canvas& cv, const Coloring& c, double x, double y, doub
       break;
     }
     cv.set_color(render_detail::category_color(i));
-    cairo_rectangle(cv.cr(), x, ty, 14, 14);
-    cairo_fill(cv.cr());
+    cv.rectangle(x, ty, 14, 14);
+    cv.fill();
     cv.set_color({0, 0, 0});
     cv.text(x + 20, ty + 12, "ref " + std::to_string(c.refs[i]), 11);
   }
@@ -248,9 +247,8 @@ void render_mesh(const Mesh& mesh, const std::string& path, const RenderOptions&
   const double edge_alpha = std::clamp(mean_px / 12.0, 0.15, 0.7);
 
   Canvas cv(format, o.width, height);
-  cairo_t* cr = cv.cr();
-  cairo_set_line_width(cr, 0.4);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cv.set_line_width(0.4);
+  cv.set_round_joins();
   for (std::size_t i : order) {
     const Face& f = faces[i];
     double shade = 1.0;
@@ -263,14 +261,14 @@ void render_mesh(const Mesh& mesh, const std::string& path, const RenderOptions&
     }
     for (int k = 0; k < 3; ++k) {
       const auto p = to_px(f.v[k]);
-      k == 0 ? cairo_move_to(cr, p[0], p[1]) : cairo_line_to(cr, p[0], p[1]);
+      k == 0 ? cv.move_to(p[0], p[1]) : cv.line_to(p[0], p[1]);
     }
-    cairo_close_path(cr);
+    cv.close_path();
     const Rgb c = col.colors[f.element];
     cv.set_color({shade * c.r, shade * c.g, shade * c.b});
-    cairo_fill_preserve(cr);
+    cv.fill_preserve();
     cv.set_color({0.1, 0.1, 0.1}, edge_alpha);
-    cairo_stroke(cr);
+    cv.stroke();
   }
 
   cv.set_color({0, 0, 0});
