@@ -32,14 +32,9 @@ struct BoundaryEdge {
   Id a, b, outside;
 };
 
-/// A triangle of the cavity search: the next edge slot to look across and how many are left.
-struct Frame {
-  Id t;
-  int edge, left;
-};
-
-inline int next_slot(int e) { return e == 2 ? 0 : e + 1; }
-inline int prev_slot(int e) { return e == 0 ? 2 : e - 1; }
+// Branch-free: 2-bit tables {1, 2, 0} and {2, 0, 1} (a slot's value is unpredictable).
+inline int next_slot(int e) { return (0x09 >> (2 * e)) & 3; }
+inline int prev_slot(int e) { return (0x12 >> (2 * e)) & 3; }
 
 /// Reserves room for `size` elements of a fresh array in huge pages (a hint; see
 /// huge_page_allocator.hpp): the pages are first touched after the advice.
@@ -52,7 +47,9 @@ void reserve_huge(std::vector<T>& a, std::size_t size) {
 /// Bowyer–Watson insertion into a Triangulation2d, with scratch arrays owned by the builder.
 class Builder {
  public:
-  explicit Builder(Triangulation2d& t) : t_(t) {
+  /// `extent`: the largest difference between two input points' coordinates (x or y).
+  Builder(Triangulation2d& t, double extent)
+      : t_(t), static_bound_(detail::incircle_static_bound(extent)) {
     // Each insertion adds two triangles to the super-triangle: room for the most there can be is
     // reserved once (in huge pages: a few hundred page faults instead of tens of thousands), and
     // the arrays grow into it by chunks small enough to stay in cache until the triangles are
@@ -60,6 +57,7 @@ class Builder {
     const std::size_t most = 2 * (t.xy.size() / 2) + 1;
     reserve_huge(t_.tri, 3 * most);
     reserve_huge(t_.nbr, 3 * most);
+    grow_scratch();
   }
 
   /// The super-triangle as the first triangle.
@@ -161,65 +159,95 @@ class Builder {
   /// The triangles whose circumcircle contains p strictly, connected to t (which is one of them),
   /// and their boundary edges in counter-clockwise order. Depth-first, each triangle's edges in
   /// counter-clockwise order from the one it was entered by, so that a neighbour's boundary
-  /// replaces the shared edge in sequence. No marks are needed: the cavity of a point in a
-  /// Delaunay triangulation is a disk with all its vertices on its boundary (they all join the
-  /// point afterwards), so its triangles' adjacency is a tree and each is reached once. (A
-  /// triangle outside may be tested twice, from two cavity triangles; the answer is the same.)
+  /// replaces the shared edge in sequence: a stack of the half-edges still to look across, a
+  /// cavity triangle's two other edges pushed on top of its parent's. No marks are needed: the
+  /// cavity of a point in a Delaunay triangulation is a disk with all its vertices on its boundary
+  /// (they all join the point afterwards), so its triangles' adjacency is a tree and each is reached
+  /// once. (A triangle outside may be tested twice, from two cavity triangles; the answer is the
+  /// same.) The scratch arrays are used through local pointers, their room checked once per cavity
+  /// triangle: with c cavity triangles, at most 2c + 1 boundary edges and c + 2 pending half-edges.
   void find_cavity(Id t, const double* p) {
-    cavity_.clear();
-    boundary_.clear();
-    cavity_.push_back(t);
-    // The current triangle's frame stays in registers; a frame is stacked only when a triangle
-    // still has edges to look across after descending into a neighbour.
-    Frame f{t, 0, 3};
-    for (;;) {
-      if (f.left == 0) {
-        if (stack_.empty()) return;
-        f = stack_.back();
-        stack_.pop_back();
+    const Id* tri = t_.tri.data();
+    const Id* nbr = t_.nbr.data();
+    const double* xy = t_.xy.data();
+    const auto num_points = static_cast<std::uint32_t>(t_.num_points);
+    std::size_t nc = 0, nb = 0, ns = 0;
+    Id* cavity = cavity_.data();
+    BoundaryEdge* boundary = boundary_.data();
+    Id* stack = stack_.data();
+    cavity[nc++] = t;
+    stack[ns++] = 3 * t + 2;
+    stack[ns++] = 3 * t + 1;
+    stack[ns++] = 3 * t;
+    while (ns > 0) {
+      const Id h = stack[--ns];
+      const Id o = nbr[h];
+      if (o == kNoId) {  // a side of the super-triangle: the edge's vertices from this side
+        const int e = slot_of(h);
+        const Id* w = tri + (h - e);
+        boundary[nb++] = {w[next_slot(e)], w[prev_slot(e)], o};
         continue;
       }
-      const int e = f.edge;
-      const Id h = t_.nbr[3 * f.t + e];
-      f.edge = next_slot(e);
-      --f.left;
-      if (h != kNoId) {
-        const Id n = tri_of(h);
-        if (in_conflict(n, p)) {
-          cavity_.push_back(n);
+      const Id n3 = o - slot_of(o);  // 3·n for the neighbour n, entered by its slot j
+      const int j = o - n3;
+      const Id* v = tri + n3;
+      const auto v0 = static_cast<std::uint32_t>(v[0]), v1 = static_cast<std::uint32_t>(v[1]),
+                 v2 = static_cast<std::uint32_t>(v[2]);
+      const bool in_box = std::max(v0, std::max(v1, v2)) < num_points;
+      if (detail::incircle_sign_in_box(xy + 2 * std::size_t{v0}, xy + 2 * std::size_t{v1},
+                                       xy + 2 * std::size_t{v2}, p, in_box, static_bound_) > 0) {
+        if (nc == scratch_) {
           // Never fails with exact predicates (a tree); bounds the search if the theory is broken.
-          RIEMESH_CHECK(cavity_.size() <= num_triangles_);
-          if (f.left > 0) stack_.push_back(f);
-          f = {n, next_slot(slot_of(h)), 2};
-          continue;
+          RIEMESH_CHECK(nc < num_triangles_);
+          grow_scratch();
+          cavity = cavity_.data(), boundary = boundary_.data(), stack = stack_.data();
         }
+        cavity[nc++] = tri_of(o);
+        stack[ns++] = n3 + prev_slot(j);
+        stack[ns++] = n3 + next_slot(j);
+      } else {
+        // The shared edge, a → b on this side, is b → a on the neighbour's (opposite its j).
+        boundary[nb++] = {v[prev_slot(j)], v[next_slot(j)], o};
       }
-      boundary_.push_back({t_.tri[3 * f.t + next_slot(e)], t_.tri[3 * f.t + prev_slot(e)], h});
     }
+    num_cavity_ = nc;
+    num_boundary_ = nb;
+  }
+
+  /// Room for scratch_ cavity triangles (twice as much as before).
+  void grow_scratch() {
+    scratch_ = std::max<std::size_t>(64, 2 * scratch_);
+    cavity_.resize(scratch_ + 2);
+    boundary_.resize(2 * scratch_ + 1);
+    stack_.resize(scratch_ + 2);
   }
 
   /// Replaces the cavity by the fan (v, a, b) over its boundary edges a → b, reusing the cavity's
   /// triangle ids first. Consecutive boundary edges make consecutive fan triangles: across (b, v)
   /// from the k-th is the (k + 1)-th's edge (v, a), opposite its vertex b.
   void fill_cavity(Id v) {
-    const std::size_t nb = boundary_.size();
-    RIEMESH_CHECK(nb == cavity_.size() + 2);  // a disk with every vertex on its boundary
-    new_.assign(cavity_.begin(), cavity_.end());
-    for (std::size_t k = cavity_.size(); k < nb; ++k)
-      new_.push_back(static_cast<Id>(num_triangles_++));
+    const std::size_t nb = num_boundary_, nc = num_cavity_;
+    RIEMESH_CHECK(nb == nc + 2);  // a disk with every vertex on its boundary
+    Id* ids = cavity_.data();  // room for nc + 2
+    ids[nc] = static_cast<Id>(num_triangles_);
+    ids[nc + 1] = static_cast<Id>(num_triangles_ + 1);
+    num_triangles_ += 2;
     if (3 * num_triangles_ > t_.tri.size()) grow();
-    Id prev = new_[nb - 1];
+    Id* tri = t_.tri.data();
+    Id* nbr = t_.nbr.data();
+    const BoundaryEdge* boundary = boundary_.data();
+    Id prev = ids[nb - 1];
     for (std::size_t k = 0; k < nb; ++k) {
-      const Id t = new_[k], next = new_[k + 1 == nb ? 0 : k + 1];
-      const BoundaryEdge& be = boundary_[k];
-      Id* tv = &t_.tri[3 * t];
+      const Id t = ids[k], next = k + 1 == nb ? ids[0] : ids[k + 1];
+      const BoundaryEdge& be = boundary[k];
+      Id* tv = tri + 3 * t;
       tv[0] = v, tv[1] = be.a, tv[2] = be.b;
-      Id* tn = &t_.nbr[3 * t];
+      Id* tn = nbr + 3 * t;
       tn[0] = be.outside, tn[1] = 3 * next + 2, tn[2] = 3 * prev + 1;
-      if (be.outside != kNoId) t_.nbr[be.outside] = 3 * t;
+      if (be.outside != kNoId) nbr[be.outside] = 3 * t;
       prev = t;
     }
-    last_ = new_[nb - 1];
+    last_ = prev;
   }
 
   /// Makes room for num_triangles_ triangles (within the reserved capacity).
@@ -233,9 +261,11 @@ class Builder {
   }
 
   Triangulation2d& t_;
-  std::vector<Id> cavity_, new_;
+  const double static_bound_;  // of incircle_sign_in_box, for triangles of input points
+  // Scratch of the cavity search (sized by grow_scratch): cavity triangles, then the fan's new ids.
+  std::vector<Id> cavity_, stack_;
   std::vector<BoundaryEdge> boundary_;
-  std::vector<Frame> stack_;
+  std::size_t scratch_ = 0, num_cavity_ = 0, num_boundary_ = 0;
   Id last_ = 0;
   std::size_t num_triangles_ = 0;
   std::uint64_t steps_ = 0;
@@ -243,7 +273,8 @@ class Builder {
 
 /// Appends the three vertices of a triangle that strictly contains the bounding box of the points
 /// with a wide margin (so that it hardly changes the triangulation of the points near the hull).
-void add_super_triangle(Triangulation2d& t) {
+/// Returns the larger side of the bounding box.
+double add_super_triangle(Triangulation2d& t) {
   double lo[2] = {0, 0}, hi[2] = {0, 0};
   for (std::size_t v = 0; v < t.num_points; ++v)
     for (int c = 0; c < 2; ++c) {
@@ -257,6 +288,7 @@ void add_super_triangle(Triangulation2d& t) {
   // Box ⊂ [c − size/2, c + size/2]²; the triangle's sides pass at least 12 sizes away from it.
   const double s = 20.0 * size;
   t.xy.insert(t.xy.end(), {cx - s, cy - 0.5 * s, cx + s, cy - 0.5 * s, cx, cy + s});
+  return std::max(hi[0] - lo[0], hi[1] - lo[1]);
 }
 
 }  // namespace
@@ -293,11 +325,11 @@ Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
     }
   reserve_huge(t.xy, 2 * t.num_points + 6);
   t.xy.assign(xy.begin(), xy.begin() + 2 * t.num_points);
-  add_super_triangle(t);
+  const double extent = add_super_triangle(t);
   const Id n = static_cast<Id>(t.num_points);
   reserve_huge(t.representative, t.num_points);
   t.representative.resize(t.num_points);
-  Builder builder(t);
+  Builder builder(t, extent);
   builder.start(n, n + 1, n + 2);
 
   const auto insert = [&](Id v) {
