@@ -217,7 +217,7 @@ class Builder {
   /// Room for scratch_ cavity triangles (twice as much as before).
   void grow_scratch() {
     scratch_ = std::max<std::size_t>(64, 2 * scratch_);
-    cavity_.resize(scratch_ + 2);
+    cavity_.resize(scratch_ + 3);
     boundary_.resize(2 * scratch_ + 1);
     stack_.resize(scratch_ + 2);
   }
@@ -228,9 +228,10 @@ class Builder {
   void fill_cavity(Id v) {
     const std::size_t nb = num_boundary_, nc = num_cavity_;
     RIEMESH_CHECK(nb == nc + 2);  // a disk with every vertex on its boundary
-    Id* ids = cavity_.data();  // room for nc + 2
+    Id* ids = cavity_.data();  // room for nc + 3
     ids[nc] = static_cast<Id>(num_triangles_);
     ids[nc + 1] = static_cast<Id>(num_triangles_ + 1);
+    ids[nb] = ids[0];  // the fan closes
     num_triangles_ += 2;
     if (3 * num_triangles_ > t_.tri.size()) grow();
     Id* tri = t_.tri.data();
@@ -238,7 +239,7 @@ class Builder {
     const BoundaryEdge* boundary = boundary_.data();
     Id prev = ids[nb - 1];
     for (std::size_t k = 0; k < nb; ++k) {
-      const Id t = ids[k], next = k + 1 == nb ? ids[0] : ids[k + 1];
+      const Id t = ids[k], next = ids[k + 1];
       const BoundaryEdge& be = boundary[k];
       Id* tv = tri + 3 * t;
       tv[0] = v, tv[1] = be.a, tv[2] = be.b;
@@ -262,7 +263,8 @@ class Builder {
 
   Triangulation2d& t_;
   const double static_bound_;  // of incircle_sign_in_box, for triangles of input points
-  // Scratch of the cavity search (sized by grow_scratch): cavity triangles, then the fan's new ids.
+  // Scratch of the cavity search (sized by grow_scratch): cavity triangles, then the fan's new ids
+  // and its first again.
   std::vector<Id> cavity_, stack_;
   std::vector<BoundaryEdge> boundary_;
   std::size_t scratch_ = 0, num_cavity_ = 0, num_boundary_ = 0;
