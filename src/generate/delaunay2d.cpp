@@ -164,28 +164,32 @@ class Builder {
   /// cavity of a point in a Delaunay triangulation is a disk with all its vertices on its boundary
   /// (they all join the point afterwards), so its triangles' adjacency is a tree and each is reached
   /// once. (A triangle outside may be tested twice, from two cavity triangles; the answer is the
-  /// same.) The scratch arrays are used through local pointers, their room checked once per cavity
-  /// triangle: with c cavity triangles, at most 2c + 1 boundary edges and c + 2 pending half-edges.
+  /// same.) The scratch arrays are used through local end pointers, their room checked once per
+  /// cavity triangle: with c cavity triangles, at most 2c + 1 boundary edges and c + 2 pending
+  /// half-edges (above the stack's bottom mark).
   void find_cavity(Id t, const double* p) {
     const Id* tri = t_.tri.data();
     const Id* nbr = t_.nbr.data();
     const double* xy = t_.xy.data();
     const auto num_points = static_cast<std::uint32_t>(t_.num_points);
-    std::size_t nc = 0, nb = 0, ns = 0;
+    // End pointers (few registers for the loop); the stack's bottom holds kNoId, which ends it.
     Id* cavity = cavity_.data();
+    Id* room = cavity + scratch_;
     BoundaryEdge* boundary = boundary_.data();
-    Id* stack = stack_.data();
-    cavity[nc++] = t;
-    stack[ns++] = 3 * t + 2;
-    stack[ns++] = 3 * t + 1;
-    stack[ns++] = 3 * t;
-    while (ns > 0) {
-      const Id h = stack[--ns];
+    Id* top = stack_.data();
+    *cavity++ = t;
+    *top = kNoId;
+    *++top = 3 * t + 2;
+    *++top = 3 * t + 1;
+    *++top = 3 * t;
+    for (;;) {
+      const Id h = *top--;
+      if (h < 0) break;
       const Id o = nbr[h];
       if (o == kNoId) {  // a side of the super-triangle: the edge's vertices from this side
         const int e = slot_of(h);
         const Id* w = tri + (h - e);
-        boundary[nb++] = {w[next_slot(e)], w[prev_slot(e)], o};
+        *boundary++ = {w[next_slot(e)], w[prev_slot(e)], o};
         continue;
       }
       const Id n3 = o - slot_of(o);  // 3·n for the neighbour n, entered by its slot j
@@ -196,22 +200,26 @@ class Builder {
       const bool in_box = std::max(v0, std::max(v1, v2)) < num_points;
       if (detail::incircle_sign_in_box(xy + 2 * std::size_t{v0}, xy + 2 * std::size_t{v1},
                                        xy + 2 * std::size_t{v2}, p, in_box, static_bound_) > 0) {
-        if (nc == scratch_) {
+        if (cavity == room) [[unlikely]] {
+          const auto nc = static_cast<std::size_t>(cavity - cavity_.data());
+          const auto nb = static_cast<std::size_t>(boundary - boundary_.data());
+          const auto ns = static_cast<std::size_t>(top - stack_.data());
           // Never fails with exact predicates (a tree); bounds the search if the theory is broken.
           RIEMESH_CHECK(nc < num_triangles_);
           grow_scratch();
-          cavity = cavity_.data(), boundary = boundary_.data(), stack = stack_.data();
+          cavity = cavity_.data() + nc, room = cavity_.data() + scratch_;
+          boundary = boundary_.data() + nb, top = stack_.data() + ns;
         }
-        cavity[nc++] = tri_of(o);
-        stack[ns++] = n3 + prev_slot(j);
-        stack[ns++] = n3 + next_slot(j);
+        *cavity++ = tri_of(o);
+        *++top = n3 + prev_slot(j);
+        *++top = n3 + next_slot(j);
       } else {
         // The shared edge, a → b on this side, is b → a on the neighbour's (opposite its j).
-        boundary[nb++] = {v[prev_slot(j)], v[next_slot(j)], o};
+        *boundary++ = {v[prev_slot(j)], v[next_slot(j)], o};
       }
     }
-    num_cavity_ = nc;
-    num_boundary_ = nb;
+    num_cavity_ = static_cast<std::size_t>(cavity - cavity_.data());
+    num_boundary_ = static_cast<std::size_t>(boundary - boundary_.data());
   }
 
   /// Room for scratch_ cavity triangles (twice as much as before).
@@ -219,7 +227,7 @@ class Builder {
     scratch_ = std::max<std::size_t>(64, 2 * scratch_);
     cavity_.resize(scratch_ + 3);
     boundary_.resize(2 * scratch_ + 1);
-    stack_.resize(scratch_ + 2);
+    stack_.resize(scratch_ + 3);
   }
 
   /// Replaces the cavity by the fan (v, a, b) over its boundary edges a → b, reusing the cavity's

@@ -18,6 +18,11 @@ namespace riemesh::detail {
 int orient2d_exact_sign(const double* a, const double* b, const double* c);
 int incircle_exact_sign(const double* a, const double* b, const double* c, const double* d);
 
+/// incircle_sign out of line, for the rare cases a static filter cannot decide (cold: the callers'
+/// loops keep their registers).
+[[gnu::cold]] int incircle_sign_cold(const double* a, const double* b, const double* c,
+                                     const double* d);
+
 /// Absolute slack covering products that underflow (each loses < 2^-1074): inputs that tiny fail
 /// the filter and go to the exact predicate, which rescales them. An overflowing (infinite or NaN)
 /// determinant or permanent never passes either (comparisons with NaN or ∞ bounds are false).
@@ -73,11 +78,9 @@ inline int incircle_sign_in_box(const double* a, const double* b, const double* 
   const double clift = cdx * cdx + cdy * cdy;
   const double det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
                      clift * (adx * bdy - bdx * ady);
-  if (in_box) {
-    if (det > static_bound) return 1;
-    if (-det > static_bound) return -1;
-  }
-  return incircle_sign(a, b, c, d);
+  if (in_box && std::fabs(det) > static_bound) [[likely]]
+    return det > 0 ? 1 : -1;
+  return incircle_sign_cold(a, b, c, d);
 }
 
 }  // namespace riemesh::detail
