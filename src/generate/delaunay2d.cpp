@@ -132,23 +132,30 @@ class Builder {
   /// Turns last_ around the last vertex inserted (vertex 0 of the fan triangles) to the fan
   /// triangle whose wedge holds the direction of p: the next point is usually close, so that
   /// triangle is often in conflict with it or contains it. At most a few steps each way.
+  /// A turn tells on which side of the wedge's new edge p is (its vertex 1 or 2 is the old one's 2
+  /// or 1), so after the first turn one orientation test per step is enough.
   void turn_towards(const double* p) {
-    const Id* v = &t_.tri[3 * last_];
-    const double* c = point(v[0]);
+    const Id* tri = t_.tri.data();
+    const Id* nbr = t_.nbr.data();
+    Id t = last_;
+    const double* c = point(tri[3 * t]);
+    int turned = 0;  // +1 after a counter-clockwise turn, -1 after a clockwise one
     for (int k = 0; k < 4; ++k) {
-      const Id* w = &t_.tri[3 * last_];
-      if (detail::orient2d_sign(c, point(w[2]), p) >= 0) {  // p beyond edge (v, b): turn ccw
-        const Id h = t_.nbr[3 * last_ + 1];
-        if (h == kNoId) return;
-        last_ = tri_of(h);
-      } else if (detail::orient2d_sign(c, point(w[1]), p) < 0) {  // before edge (v, a): turn cw
-        const Id h = t_.nbr[3 * last_ + 2];
-        if (h == kNoId) return;
-        last_ = tri_of(h);
+      const Id* w = tri + 3 * t;
+      Id h;
+      if (turned >= 0 && detail::orient2d_sign(c, point(w[2]), p) >= 0) {
+        h = nbr[3 * t + 1];  // p beyond edge (v, b): turn ccw
+        turned = 1;
+      } else if (turned <= 0 && detail::orient2d_sign(c, point(w[1]), p) < 0) {
+        h = nbr[3 * t + 2];  // p before edge (v, a): turn cw
+        turned = -1;
       } else {
-        return;
+        break;
       }
+      if (h == kNoId) break;
+      t = tri_of(h);
     }
+    last_ = t;
   }
 
   bool in_conflict(Id t, const double* p) const {
@@ -286,12 +293,15 @@ class Builder {
 /// Returns the larger side of the bounding box.
 double add_super_triangle(Triangulation2d& t) {
   double lo[2] = {0, 0}, hi[2] = {0, 0};
-  for (std::size_t v = 0; v < t.num_points; ++v)
-    for (int c = 0; c < 2; ++c) {
-      const double x = t.xy[2 * v + c];
-      lo[c] = v == 0 ? x : std::min(lo[c], x);
-      hi[c] = v == 0 ? x : std::max(hi[c], x);
-    }
+  if (t.num_points > 0) {
+    const double* xy = t.xy.data();
+    lo[0] = hi[0] = xy[0], lo[1] = hi[1] = xy[1];
+    for (std::size_t v = 1; v < t.num_points; ++v)
+      for (int c = 0; c < 2; ++c) {
+        lo[c] = std::min(lo[c], xy[2 * v + c]);
+        hi[c] = std::max(hi[c], xy[2 * v + c]);
+      }
+  }
   const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
   double size = std::max(hi[0] - lo[0], hi[1] - lo[1]);
   if (!(size > 0)) size = std::max(1.0, std::max(std::fabs(cx), std::fabs(cy)));
