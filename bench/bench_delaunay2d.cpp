@@ -3,8 +3,16 @@
 //   Brio/N      unsorted points; BRIO ordering (Hilbert sort per round) included in the time
 // Run: build/bench/riemesh_bench_delaunay2d --benchmark_repetitions=5
 //        --benchmark_report_aggregates_only=true
+// Or one delaunay2d call on the same N points, Hilbert-sorted (as Sorted/N) or unsorted with BRIO
+// (as Brio/N), for valgrind --tool=callgrind --toggle-collect='riemesh::delaunay2d*' (counts the
+// load does not disturb); prints the triangle count and a hash of tri and nbr (same hash = same
+// triangulation, triangle order included): build/bench/riemesh_bench_delaunay2d --once N [--order brio]
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -55,6 +63,37 @@ void Brio(benchmark::State& state) {
 }
 BENCHMARK(Brio)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
+/// FNV-1a over the ids.
+std::uint64_t hash_ids(const std::vector<Id>& ids, std::uint64_t h) {
+  for (const Id v : ids) {
+    h ^= static_cast<std::uint32_t>(v);
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+int run_once(std::size_t n, bool brio) {
+  const std::vector<double> xy = brio ? random_square(n) : hilbert_sorted(random_square(n));
+  const Triangulation2d t = delaunay2d(xy, brio ? InsertionOrder::kBrio : InsertionOrder::kAsGiven);
+  const std::uint64_t h = hash_ids(t.nbr, hash_ids(t.tri, 0xcbf29ce484222325ULL));
+  std::printf("points %zu triangles %zu hash %016llx\n", n, t.num_triangles(),
+              static_cast<unsigned long long>(h));
+  return 0;
+}
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  std::size_t once = 0;
+  bool brio = false;
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::strcmp(argv[i], "--once") == 0) once = std::strtoull(argv[i + 1], nullptr, 10);
+    if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "brio") == 0) brio = true;
+  }
+  if (once > 0) return run_once(once, brio);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

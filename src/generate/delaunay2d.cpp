@@ -32,14 +32,9 @@ struct BoundaryEdge {
   Id a, b, outside;
 };
 
-/// A triangle of the cavity search: the next edge slot to look across and how many are left.
-struct Frame {
-  Id t;
-  int edge, left;
-};
-
-inline int next_slot(int e) { return e == 2 ? 0 : e + 1; }
-inline int prev_slot(int e) { return e == 0 ? 2 : e - 1; }
+// Branch-free: 2-bit tables {1, 2, 0} and {2, 0, 1} (a slot's value is unpredictable).
+inline int next_slot(int e) { return (0x09 >> (2 * e)) & 3; }
+inline int prev_slot(int e) { return (0x12 >> (2 * e)) & 3; }
 
 /// Reserves room for `size` elements of a fresh array in huge pages (a hint; see
 /// huge_page_allocator.hpp): the pages are first touched after the advice.
@@ -52,7 +47,9 @@ void reserve_huge(std::vector<T>& a, std::size_t size) {
 /// Bowyer–Watson insertion into a Triangulation2d, with scratch arrays owned by the builder.
 class Builder {
  public:
-  explicit Builder(Triangulation2d& t) : t_(t) {
+  /// `extent`: the largest difference between two input points' coordinates (x or y).
+  Builder(Triangulation2d& t, double extent)
+      : t_(t), static_bound_(detail::incircle_static_bound(extent)) {
     // Each insertion adds two triangles to the super-triangle: room for the most there can be is
     // reserved once (in huge pages: a few hundred page faults instead of tens of thousands), and
     // the arrays grow into it by chunks small enough to stay in cache until the triangles are
@@ -60,6 +57,7 @@ class Builder {
     const std::size_t most = 2 * (t.xy.size() / 2) + 1;
     reserve_huge(t_.tri, 3 * most);
     reserve_huge(t_.nbr, 3 * most);
+    grow_scratch();
   }
 
   /// The super-triangle as the first triangle.
@@ -134,23 +132,30 @@ class Builder {
   /// Turns last_ around the last vertex inserted (vertex 0 of the fan triangles) to the fan
   /// triangle whose wedge holds the direction of p: the next point is usually close, so that
   /// triangle is often in conflict with it or contains it. At most a few steps each way.
+  /// A turn tells on which side of the wedge's new edge p is (its vertex 1 or 2 is the old one's 2
+  /// or 1), so after the first turn one orientation test per step is enough.
   void turn_towards(const double* p) {
-    const Id* v = &t_.tri[3 * last_];
-    const double* c = point(v[0]);
+    const Id* tri = t_.tri.data();
+    const Id* nbr = t_.nbr.data();
+    Id t = last_;
+    const double* c = point(tri[3 * t]);
+    int turned = 0;  // +1 after a counter-clockwise turn, -1 after a clockwise one
     for (int k = 0; k < 4; ++k) {
-      const Id* w = &t_.tri[3 * last_];
-      if (detail::orient2d_sign(c, point(w[2]), p) >= 0) {  // p beyond edge (v, b): turn ccw
-        const Id h = t_.nbr[3 * last_ + 1];
-        if (h == kNoId) return;
-        last_ = tri_of(h);
-      } else if (detail::orient2d_sign(c, point(w[1]), p) < 0) {  // before edge (v, a): turn cw
-        const Id h = t_.nbr[3 * last_ + 2];
-        if (h == kNoId) return;
-        last_ = tri_of(h);
+      const Id* w = tri + 3 * t;
+      Id h;
+      if (turned >= 0 && detail::orient2d_sign(c, point(w[2]), p) >= 0) {
+        h = nbr[3 * t + 1];  // p beyond edge (v, b): turn ccw
+        turned = 1;
+      } else if (turned <= 0 && detail::orient2d_sign(c, point(w[1]), p) < 0) {
+        h = nbr[3 * t + 2];  // p before edge (v, a): turn cw
+        turned = -1;
       } else {
-        return;
+        break;
       }
+      if (h == kNoId) break;
+      t = tri_of(h);
     }
+    last_ = t;
   }
 
   bool in_conflict(Id t, const double* p) const {
@@ -161,65 +166,104 @@ class Builder {
   /// The triangles whose circumcircle contains p strictly, connected to t (which is one of them),
   /// and their boundary edges in counter-clockwise order. Depth-first, each triangle's edges in
   /// counter-clockwise order from the one it was entered by, so that a neighbour's boundary
-  /// replaces the shared edge in sequence. No marks are needed: the cavity of a point in a
-  /// Delaunay triangulation is a disk with all its vertices on its boundary (they all join the
-  /// point afterwards), so its triangles' adjacency is a tree and each is reached once. (A
-  /// triangle outside may be tested twice, from two cavity triangles; the answer is the same.)
+  /// replaces the shared edge in sequence: a stack of the half-edges still to look across, a
+  /// cavity triangle's two other edges pushed on top of its parent's. No marks are needed: the
+  /// cavity of a point in a Delaunay triangulation is a disk with all its vertices on its boundary
+  /// (they all join the point afterwards), so its triangles' adjacency is a tree and each is reached
+  /// once. (A triangle outside may be tested twice, from two cavity triangles; the answer is the
+  /// same.) The scratch arrays are used through local end pointers, their room checked once per
+  /// cavity triangle: with c cavity triangles, at most 2c + 1 boundary edges and c + 2 pending
+  /// half-edges (above the stack's bottom mark).
   void find_cavity(Id t, const double* p) {
-    cavity_.clear();
-    boundary_.clear();
-    cavity_.push_back(t);
-    // The current triangle's frame stays in registers; a frame is stacked only when a triangle
-    // still has edges to look across after descending into a neighbour.
-    Frame f{t, 0, 3};
+    const Id* tri = t_.tri.data();
+    const Id* nbr = t_.nbr.data();
+    const double* xy = t_.xy.data();
+    const auto num_points = static_cast<std::uint32_t>(t_.num_points);
+    // End pointers (few registers for the loop); the stack's bottom holds kNoId, which ends it.
+    Id* cavity = cavity_.data();
+    Id* room = cavity + scratch_;
+    BoundaryEdge* boundary = boundary_.data();
+    Id* top = stack_.data();
+    *cavity++ = t;
+    *top = kNoId;
+    *++top = 3 * t + 2;
+    *++top = 3 * t + 1;
+    *++top = 3 * t;
     for (;;) {
-      if (f.left == 0) {
-        if (stack_.empty()) return;
-        f = stack_.back();
-        stack_.pop_back();
+      const Id h = *top--;
+      if (h < 0) break;
+      const Id o = nbr[h];
+      if (o == kNoId) {  // a side of the super-triangle: the edge's vertices from this side
+        const int e = slot_of(h);
+        const Id* w = tri + (h - e);
+        *boundary++ = {w[next_slot(e)], w[prev_slot(e)], o};
         continue;
       }
-      const int e = f.edge;
-      const Id h = t_.nbr[3 * f.t + e];
-      f.edge = next_slot(e);
-      --f.left;
-      if (h != kNoId) {
-        const Id n = tri_of(h);
-        if (in_conflict(n, p)) {
-          cavity_.push_back(n);
+      const Id n3 = o - slot_of(o);  // 3·n for the neighbour n, entered by its slot j
+      const int j = o - n3;
+      const Id* v = tri + n3;
+      const auto v0 = static_cast<std::uint32_t>(v[0]), v1 = static_cast<std::uint32_t>(v[1]),
+                 v2 = static_cast<std::uint32_t>(v[2]);
+      const bool in_box = std::max(v0, std::max(v1, v2)) < num_points;
+      if (detail::incircle_sign_in_box(xy + 2 * std::size_t{v0}, xy + 2 * std::size_t{v1},
+                                       xy + 2 * std::size_t{v2}, p, in_box, static_bound_) > 0) {
+        if (cavity == room) [[unlikely]] {
+          const auto nc = static_cast<std::size_t>(cavity - cavity_.data());
+          const auto nb = static_cast<std::size_t>(boundary - boundary_.data());
+          const auto ns = static_cast<std::size_t>(top - stack_.data());
           // Never fails with exact predicates (a tree); bounds the search if the theory is broken.
-          RIEMESH_CHECK(cavity_.size() <= num_triangles_);
-          if (f.left > 0) stack_.push_back(f);
-          f = {n, next_slot(slot_of(h)), 2};
-          continue;
+          RIEMESH_CHECK(nc < num_triangles_);
+          grow_scratch();
+          cavity = cavity_.data() + nc, room = cavity_.data() + scratch_;
+          boundary = boundary_.data() + nb, top = stack_.data() + ns;
         }
+        *cavity++ = tri_of(o);
+        *++top = n3 + prev_slot(j);
+        *++top = n3 + next_slot(j);
+      } else {
+        // The shared edge, a → b on this side, is b → a on the neighbour's (opposite its j).
+        *boundary++ = {v[prev_slot(j)], v[next_slot(j)], o};
       }
-      boundary_.push_back({t_.tri[3 * f.t + next_slot(e)], t_.tri[3 * f.t + prev_slot(e)], h});
     }
+    num_cavity_ = static_cast<std::size_t>(cavity - cavity_.data());
+    num_boundary_ = static_cast<std::size_t>(boundary - boundary_.data());
+  }
+
+  /// Room for scratch_ cavity triangles (twice as much as before).
+  void grow_scratch() {
+    scratch_ = std::max<std::size_t>(64, 2 * scratch_);
+    cavity_.resize(scratch_ + 3);
+    boundary_.resize(2 * scratch_ + 1);
+    stack_.resize(scratch_ + 3);
   }
 
   /// Replaces the cavity by the fan (v, a, b) over its boundary edges a → b, reusing the cavity's
   /// triangle ids first. Consecutive boundary edges make consecutive fan triangles: across (b, v)
   /// from the k-th is the (k + 1)-th's edge (v, a), opposite its vertex b.
   void fill_cavity(Id v) {
-    const std::size_t nb = boundary_.size();
-    RIEMESH_CHECK(nb == cavity_.size() + 2);  // a disk with every vertex on its boundary
-    new_.assign(cavity_.begin(), cavity_.end());
-    for (std::size_t k = cavity_.size(); k < nb; ++k)
-      new_.push_back(static_cast<Id>(num_triangles_++));
+    const std::size_t nb = num_boundary_, nc = num_cavity_;
+    RIEMESH_CHECK(nb == nc + 2);  // a disk with every vertex on its boundary
+    Id* ids = cavity_.data();  // room for nc + 3
+    ids[nc] = static_cast<Id>(num_triangles_);
+    ids[nc + 1] = static_cast<Id>(num_triangles_ + 1);
+    ids[nb] = ids[0];  // the fan closes
+    num_triangles_ += 2;
     if (3 * num_triangles_ > t_.tri.size()) grow();
-    Id prev = new_[nb - 1];
+    Id* tri = t_.tri.data();
+    Id* nbr = t_.nbr.data();
+    const BoundaryEdge* boundary = boundary_.data();
+    Id prev = ids[nb - 1];
     for (std::size_t k = 0; k < nb; ++k) {
-      const Id t = new_[k], next = new_[k + 1 == nb ? 0 : k + 1];
-      const BoundaryEdge& be = boundary_[k];
-      Id* tv = &t_.tri[3 * t];
+      const Id t = ids[k], next = ids[k + 1];
+      const BoundaryEdge& be = boundary[k];
+      Id* tv = tri + 3 * t;
       tv[0] = v, tv[1] = be.a, tv[2] = be.b;
-      Id* tn = &t_.nbr[3 * t];
+      Id* tn = nbr + 3 * t;
       tn[0] = be.outside, tn[1] = 3 * next + 2, tn[2] = 3 * prev + 1;
-      if (be.outside != kNoId) t_.nbr[be.outside] = 3 * t;
+      if (be.outside != kNoId) nbr[be.outside] = 3 * t;
       prev = t;
     }
-    last_ = new_[nb - 1];
+    last_ = prev;
   }
 
   /// Makes room for num_triangles_ triangles (within the reserved capacity).
@@ -233,9 +277,12 @@ class Builder {
   }
 
   Triangulation2d& t_;
-  std::vector<Id> cavity_, new_;
+  const double static_bound_;  // of incircle_sign_in_box, for triangles of input points
+  // Scratch of the cavity search (sized by grow_scratch): cavity triangles, then the fan's new ids
+  // and its first again.
+  std::vector<Id> cavity_, stack_;
   std::vector<BoundaryEdge> boundary_;
-  std::vector<Frame> stack_;
+  std::size_t scratch_ = 0, num_cavity_ = 0, num_boundary_ = 0;
   Id last_ = 0;
   std::size_t num_triangles_ = 0;
   std::uint64_t steps_ = 0;
@@ -243,20 +290,25 @@ class Builder {
 
 /// Appends the three vertices of a triangle that strictly contains the bounding box of the points
 /// with a wide margin (so that it hardly changes the triangulation of the points near the hull).
-void add_super_triangle(Triangulation2d& t) {
+/// Returns the larger side of the bounding box.
+double add_super_triangle(Triangulation2d& t) {
   double lo[2] = {0, 0}, hi[2] = {0, 0};
-  for (std::size_t v = 0; v < t.num_points; ++v)
-    for (int c = 0; c < 2; ++c) {
-      const double x = t.xy[2 * v + c];
-      lo[c] = v == 0 ? x : std::min(lo[c], x);
-      hi[c] = v == 0 ? x : std::max(hi[c], x);
-    }
+  if (t.num_points > 0) {
+    const double* xy = t.xy.data();
+    lo[0] = hi[0] = xy[0], lo[1] = hi[1] = xy[1];
+    for (std::size_t v = 1; v < t.num_points; ++v)
+      for (int c = 0; c < 2; ++c) {
+        lo[c] = std::min(lo[c], xy[2 * v + c]);
+        hi[c] = std::max(hi[c], xy[2 * v + c]);
+      }
+  }
   const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
   double size = std::max(hi[0] - lo[0], hi[1] - lo[1]);
   if (!(size > 0)) size = std::max(1.0, std::max(std::fabs(cx), std::fabs(cy)));
   // Box ⊂ [c − size/2, c + size/2]²; the triangle's sides pass at least 12 sizes away from it.
   const double s = 20.0 * size;
   t.xy.insert(t.xy.end(), {cx - s, cy - 0.5 * s, cx + s, cy - 0.5 * s, cx, cy + s});
+  return std::max(hi[0] - lo[0], hi[1] - lo[1]);
 }
 
 }  // namespace
@@ -293,11 +345,11 @@ Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
     }
   reserve_huge(t.xy, 2 * t.num_points + 6);
   t.xy.assign(xy.begin(), xy.begin() + 2 * t.num_points);
-  add_super_triangle(t);
+  const double extent = add_super_triangle(t);
   const Id n = static_cast<Id>(t.num_points);
   reserve_huge(t.representative, t.num_points);
   t.representative.resize(t.num_points);
-  Builder builder(t);
+  Builder builder(t, extent);
   builder.start(n, n + 1, n + 2);
 
   const auto insert = [&](Id v) {

@@ -13,6 +13,10 @@ int orient2d_exact_sign(const double* a, const double* b, const double* c) {
   return sign(orient2d(a, b, c));
 }
 
+int incircle_sign_cold(const double* a, const double* b, const double* c, const double* d) {
+  return incircle_sign(a, b, c, d);
+}
+
 int incircle_exact_sign(const double* a, const double* b, const double* c, const double* d) {
   return sign(incircle(a, b, c, d));
 }

@@ -130,6 +130,22 @@ TEST(Delaunay2d, PointsOnACircleAndALine) {
   expect_empty_circles(t);
 }
 
+TEST(Delaunay2d, CentreOfACircleLast) {
+  // Inserted after 600 points of a circle, the centre is inside every circumcircle of the circle's
+  // triangles: one cavity of hundreds of triangles (the scratch arrays grow during the search).
+  std::vector<double> xy;
+  for (int k = 0; k < 600; ++k) {
+    const double th = 2 * M_PI * k / 600;
+    xy.insert(xy.end(), {std::cos(th), std::sin(th)});
+  }
+  xy.insert(xy.end(), {0.0, 0.0});
+  for (InsertionOrder o : {InsertionOrder::kAsGiven, InsertionOrder::kBrio}) {
+    const Triangulation2d t = delaunay2d(xy, o);
+    expect_delaunay(t, 601);
+    expect_empty_circles(t);
+  }
+}
+
 TEST(Delaunay2d, DuplicatesAreMergedNotInserted) {
   std::vector<double> xy = random_points(500, 4);
   const std::vector<double> copy(xy.begin(), xy.begin() + 200);

@@ -1,9 +1,11 @@
 // The inline 2D filters of the Delaunay kernel against the exact predicates (expansion
 // arithmetic, no filter): the signs must agree on random points, on exactly degenerate ones
 // (collinear, cocircular: the filter must pass them on) and on nearly degenerate ones (rounded
-// onto a line or circle, moved by one ulp), at ordinary, tiny and huge scales.
+// onto a line or circle, moved by one ulp), at ordinary, tiny and huge scales. The in-circle sign
+// with the static filter (incircle_sign_in_box) too, with the points' own box.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -16,6 +18,21 @@ namespace {
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
+/// The static in-circle filter with the tightest box of the four points, and with a looser one.
+void expect_static_agrees(const double (&p)[4][2], int exact_sign) {
+  double extent = 0;
+  for (int c = 0; c < 2; ++c) {
+    double lo = p[0][c], hi = p[0][c];
+    for (const auto& q : p) lo = std::min(lo, q[c]), hi = std::max(hi, q[c]);
+    extent = std::max(extent, hi - lo);
+  }
+  for (const double e : {extent, 4 * extent})
+    EXPECT_EQ(detail::incircle_sign_in_box(p[0], p[1], p[2], p[3], true,
+                                           detail::incircle_static_bound(e)),
+              exact_sign)
+        << "extent " << e;
+}
+
 /// Both filtered signs against the exact ones; returns how many of the two are exactly zero.
 int expect_agree(const double (&p)[4][2]) {
   const int o = sign(exact::orient2d(p[0], p[1], p[2]));
@@ -24,6 +41,7 @@ int expect_agree(const double (&p)[4][2]) {
       << p[0][0] << " " << p[0][1] << " " << p[1][0] << " " << p[1][1] << " " << p[2][0] << " "
       << p[2][1];
   EXPECT_EQ(detail::incircle_sign(p[0], p[1], p[2], p[3]), i) << p[3][0] << " " << p[3][1];
+  expect_static_agrees(p, i);
   return (o == 0) + (i == 0);
 }
 
@@ -40,6 +58,13 @@ TEST(FilteredPredicates2d, KnownSigns) {
   EXPECT_EQ(detail::incircle_sign(a, b, c, out), -1);
   EXPECT_EQ(detail::incircle_sign(a, b, c, on), 0);   // (1,1) is on the circle through a, b, c
   EXPECT_EQ(detail::incircle_sign(a, c, b, in), -1);  // clockwise: the sign flips
+  const double box = detail::incircle_static_bound(2.0);
+  EXPECT_EQ(detail::incircle_sign_in_box(a, b, c, in, true, box), 1);
+  EXPECT_EQ(detail::incircle_sign_in_box(a, b, c, out, true, box), -1);
+  EXPECT_EQ(detail::incircle_sign_in_box(a, b, c, on, true, box), 0);
+  EXPECT_EQ(detail::incircle_sign_in_box(a, b, c, in, false, box), 1);
+  EXPECT_EQ(detail::incircle_static_bound(HUGE_VAL), HUGE_VAL);  // nothing passes
+  EXPECT_EQ(detail::incircle_static_bound(1e300), HUGE_VAL);     // overflow: nothing passes
 }
 
 TEST(FilteredPredicates2d, RandomPointsAtEveryScale) {
