@@ -94,9 +94,7 @@ std::vector<ShortEdge> edges_shorter_than(const TetMesh& m, const NeighbourTable
     if (!m.vert_alive(a)) continue;
     for (const Id b : neighbours(m, a, nbrs, scratch)) {
       if (b < a) continue;
-      const Vec3 ab = m.xyz[b] - m.xyz[a];
-      if (compare_edge_length_geometric(m.metric[a], m.metric[b], ab, below) < 0)
-        out.push_back({edge_length(m, a, b), a, b});
+      if (compare_edge_length(m, a, b, below) < 0) out.push_back({edge_length(m, a, b), a, b});
     }
   }
   sort_candidates(out, false);
@@ -278,22 +276,22 @@ bool lengthen(Remesh3dContext& ctx, Id v, Id other, MoveCache& cache, const Neig
   if (!(l > 0.0)) return false;
   Vec3 away = m.xyz[other] + (1.0 / l) * (m.xyz[v] - m.xyz[other]);
   if (!ctx.constrain(v, away)) return false;
-  const auto range = [&](const Vec3& p, const SymMat3& mp) {
+  const auto range = [&](const Vec3& p, const SymMat3& mp, const SymMat3& log_mp) {
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
     for (const Id x : around) {
-      const double lx = edge_length_geometric(mp, m.metric[x], m.xyz[x] - p);
+      const double lx = edge_length_simpson(mp, log_mp, m.metric[x], m.log_metric[x], m.xyz[x] - p);
       lo = std::min(lo, lx), hi = std::max(hi, lx);
     }
     return std::pair{lo, hi};
   };
   const Vec3 from = m.xyz[v];
-  const auto [lo0, hi0] = range(from, m.metric[v]);
+  const auto [lo0, hi0] = range(from, m.metric[v], m.log_metric[v]);
   for (const Vec3& to : {target.p, away})
     for (const double f : {1.0, 0.5, 0.25}) {
       Vec3 p = from + f * (to - from);
       if (f != 1.0 && !ctx.constrain(v, p)) return false;
       const SymMat3 mp = ctx.metric_for(p, v);
-      const auto [lo, hi] = range(p, mp);
+      const auto [lo, hi] = range(p, mp, log_spd(mp));
       if (!(lo > lo0) || hi > std::max(hi0, kSwapMaxLength)) continue;
       if (move_vertex(m, v, p, mp, &cache, kLengthenFloor) == Outcome::kApplied) {
         ctx.inherit_hint(v);

@@ -34,7 +34,7 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
   const double bar = std::min(c.worst, floor);
   const Vec3 old_p = m.xyz[v];
   const SymMat3 old_m = m.metric[v];
-  m.xyz[v] = p, m.metric[v] = metric;
+  m.xyz[v] = p, m.metric[v] = metric;  // its logarithm (for lengths) only when kept
   double worst = 1.0;
   std::size_t k = 0, worst_at = first;
   for (; k < ball.size(); ++k) {
@@ -53,6 +53,7 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
       }
       m.xyz[v] = p;
     }
+    m.log_metric[v] = log_spd(metric);
     c.worst = worst;  // the ball's tets are the same, v moved
     if (m.vmoved.size() <= static_cast<std::size_t>(v)) m.vmoved.resize(m.vertex_capacity(), 0);
     m.vmoved[v] = m.clock;

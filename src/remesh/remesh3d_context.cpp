@@ -210,7 +210,7 @@ void Remesh3dContext::set_field(std::vector<SymMat3>&& metrics) {
   for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
     const Id v = static_cast<Id>(vi);
     if (!m.vert_alive(v)) continue;
-    m.metric[vi] = metric_for(m.xyz[vi], v);
+    m.set_metric(v, metric_for(m.xyz[vi], v));
     inherit_hint(v);
     m.vmoved[vi] = now;
   }

@@ -43,6 +43,7 @@ struct TetMesh {
   // Vertices.
   std::vector<Vec3> xyz;
   std::vector<SymMat3> metric;
+  std::vector<SymMat3> log_metric;  // log_spd(metric[v]), for the edge lengths (set_metric)
   std::vector<std::int32_t> vref;
   std::vector<std::uint8_t> vtag;
   std::vector<VertexKind> vkind;
@@ -93,6 +94,9 @@ struct TetMesh {
   bool unmoved_since(Id v, std::uint32_t since) const {
     return static_cast<std::size_t>(v) >= vmoved.size() || vmoved[v] < since;
   }
+
+  /// Sets vertex v's metric and its logarithm.
+  void set_metric(Id v, const SymMat3& m);
 
   std::size_t vertex_capacity() const { return xyz.size(); }
   std::size_t tet_capacity() const { return tref.size(); }

@@ -103,8 +103,9 @@ TEST(Edges3d, EdgeLongerThanDecidesAsTheExactLength) {
   int decided_each_way[2] = {0, 0};
   for (int k = 0; k < 2000; ++k) {
     for (const Id v : {0, 1}) {
-      m.metric[v] = SymMat3{{1.0 / (size(rng) * size(rng)), 0.01 * u(rng), 1.0 / (size(rng) * size(rng)),
-                             0.01 * u(rng), 0.01 * u(rng), 1.0 / (size(rng) * size(rng))}};
+      m.set_metric(v, SymMat3{{1.0 / (size(rng) * size(rng)), 0.01 * u(rng),
+                               1.0 / (size(rng) * size(rng)), 0.01 * u(rng), 0.01 * u(rng),
+                               1.0 / (size(rng) * size(rng))}});
       m.xyz[v] = Vec3{{u(rng), u(rng), u(rng)}};
     }
     const double l = edge_length(m, 0, 1);

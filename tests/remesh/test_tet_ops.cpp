@@ -214,3 +214,30 @@ TEST(TetOps, MoveWithAFloorMayLowerTheWorstQualityDownToIt) {
             Outcome::kRejectedGeometry);
   EXPECT_EQ(check_tet_mesh(m), "");
 }
+
+TEST(TetOps, EdgeLengthSeesTheMetricTurn) {
+  TetMesh m = bipyramid();
+  // A stiff axis turned by ±0.05 rad between the two ends of an edge along y: about 10 |ab| long
+  // at its middle (in the log-Euclidean mean), and sqrt(1e6 sin²(0.05) + 100 cos²(0.05)) |ab|
+  // ≈ 51 |ab| at its ends; Simpson's rule: (2 ends + 4 middle) / 6.
+  const auto turned = [](double angle) {
+    Mat3 r = Mat3::identity();
+    r(0, 0) = std::cos(angle), r(0, 1) = -std::sin(angle);
+    r(1, 0) = std::sin(angle), r(1, 1) = std::cos(angle);
+    return compose(r, Vec3{{1e6, 100.0, 100.0}});
+  };
+  m.set_metric(0, turned(0.05)), m.set_metric(1, turned(-0.05));
+  m.xyz[0] = Vec3{{0, 0, 0}}, m.xyz[1] = Vec3{{0, 0.01, 0}};
+  const SymMat3 mid_metric = exp_sym(0.5 * (log_spd(turned(0.05)) + log_spd(turned(-0.05))));
+  const double ends = 0.01 * std::sqrt(1e6 * std::sin(0.05) * std::sin(0.05) +
+                                       100 * std::cos(0.05) * std::cos(0.05));
+  const double mid = 0.01 * std::sqrt(quadratic(mid_metric, Vec3{{0, 1, 0}}));
+  EXPECT_NEAR(mid, 0.1, 2e-3);
+  EXPECT_NEAR(edge_length(m, 0, 1), (2 * ends + 4 * mid) / 6, 1e-9);
+  EXPECT_EQ(compare_edge_length(m, 0, 1, 0.5 * ends), -1);
+  EXPECT_FALSE(edge_longer_than(m, 0, 1, 0.5 * ends));
+  // Axis-aligned metrics (no turn): the closed form, as before.
+  const SymMat3 d1 = SymMat3::diagonal(Vec3{{1.0, 4.0, 1e4}}), d2 = SymMat3::diagonal(Vec3{{9.0, 1.0, 1.0}});
+  m.set_metric(0, d1), m.set_metric(1, d2);
+  EXPECT_EQ(edge_length(m, 0, 1), edge_length_geometric(d1, d2, m.xyz[1] - m.xyz[0]));
+}
