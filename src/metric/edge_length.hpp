@@ -117,7 +117,6 @@ template <int D>
 inline double edge_length_simpson(const SymMat<D>& ma, const SymMat<D>& log_a,
                                   const SymMat<D>& mb, const SymMat<D>& log_b, const Vec<D>& ab) {
   const double la = length(ma, ab), lb = length(mb, ab);
-  if (log_a == log_b) return la;
   if (commute(log_a, log_b))
     return la == lb ? la : std::sqrt(la * lb) * detail::sinhc(0.5 * std::log(la / lb));
   const SymEigen<D> e = eigen(0.5 * (log_a + log_b));  // l_M² = Σ exp(s_i) (v_i · ab)²
