@@ -28,6 +28,7 @@ Outcome move_vertex(TriMesh& m, Id v, const Vec2& p, const SymMat2& metric, doub
   if (after < std::min(before, floor)) return Outcome::kRejectedQuality;
   m.xy[v] = p;
   m.metric[v] = metric;
+  m.log_metric[v] = log_spd(metric);
   m.vparam[v] = param;
   return Outcome::kApplied;
 }

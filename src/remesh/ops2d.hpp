@@ -14,13 +14,15 @@ enum class Outcome { kApplied, kRejectedTopology, kRejectedGeometry, kRejectedQu
 
 /// Metric length of edge (a, b): the UGAWG closed form (l_a − l_b)/ln(l_a/l_b).
 inline double edge_length(const TriMesh& m, Id a, Id b) {
-  return edge_length_geometric(m.metric[a], m.metric[b], m.xy[b] - m.xy[a]);
+  return edge_length_simpson(m.metric[a], m.log_metric[a], m.metric[b], m.log_metric[b],
+                             m.xy[b] - m.xy[a]);
 }
 
 /// The sign of edge_length(m, a, b) − limit (0 only when equal), the logarithm only when needed
 /// (compare_edge_length_geometric).
 inline int compare_edge_length(const TriMesh& m, Id a, Id b, double limit) {
-  return compare_edge_length_geometric(m.metric[a], m.metric[b], m.xy[b] - m.xy[a], limit);
+  const double l = edge_length(m, a, b);
+  return l > limit ? 1 : (l < limit ? -1 : 0);
 }
 
 /// Mean-ratio quality 4√3 |K|_M / Σ l_M² of triangle (pa, pb, pc) in the metric `mm` (1 for the
