@@ -44,8 +44,11 @@ bool side_ok(const TriMesh& m, Id t, int i, const NewVertex& nv, double min_qual
   const double ref = std::abs(signed_area(pa, pb, pc)) * 1e-9;
   if (!(signed_area(pc, pa, nv.p) > ref && signed_area(pc, nv.p, pb) > ref)) return false;
   if (min_quality <= 0.0) return true;
-  const SymMat2 m1 = (1.0 / 3.0) * (m.metric[c] + m.metric[a] + nv.metric);
-  const SymMat2 m2 = (1.0 / 3.0) * (m.metric[c] + nv.metric + m.metric[b]);
+  const SymMat2 ln = log_spd(nv.metric);
+  const SymMat2 m1 =
+      tri_metric(m.metric[c], m.log_metric[c], m.metric[a], m.log_metric[a], nv.metric, ln);
+  const SymMat2 m2 =
+      tri_metric(m.metric[c], m.log_metric[c], nv.metric, ln, m.metric[b], m.log_metric[b]);
   return quality_in(m1, pc, pa, nv.p) >= min_quality && quality_in(m2, pc, nv.p, pb) >= min_quality;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "core/spd.hpp"
+
 namespace riemesh {
 
 Id TriMesh::add_vertex(const Vec2& p, const SymMat2& m) {
@@ -14,6 +16,7 @@ Id TriMesh::add_vertex(const Vec2& p, const SymMat2& m) {
     v = static_cast<Id>(xy.size());
     xy.emplace_back();
     metric.emplace_back();
+    log_metric.emplace_back();
     vref.emplace_back();
     vtag.emplace_back();
     vcurve.emplace_back();
@@ -22,6 +25,7 @@ Id TriMesh::add_vertex(const Vec2& p, const SymMat2& m) {
   }
   xy[v] = p;
   metric[v] = m;
+  log_metric[v] = log_spd(m);
   vref[v] = 0;
   vtag[v] = kTagNone;
   vcurve[v] = kNoCurve;

@@ -23,6 +23,7 @@ struct TriMesh {
   // Vertices.
   std::vector<Vec2> xy;
   std::vector<SymMat2> metric;      // the metric the mesh must be unit in
+  std::vector<SymMat2> log_metric;  // log_spd(metric[v]) (edge lengths)
   std::vector<std::int32_t> vref;
   std::vector<std::uint8_t> vtag;   // kTagCorner / kTagRequired: never moves nor disappears;
                                     // kTagRidge: on a feature curve

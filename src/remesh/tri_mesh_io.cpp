@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/spd.hpp"
 #include "mesh/adjacency.hpp"
 
 namespace riemesh {
@@ -25,6 +26,8 @@ void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics
   const std::size_t nv = mesh.num_vertices();
   m.xy.resize(nv);
   m.metric.assign(metrics.begin(), metrics.begin() + static_cast<std::ptrdiff_t>(nv));
+  m.log_metric.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) m.log_metric[v] = log_spd(m.metric[v]);
   m.vref.resize(nv);
   m.vtag.resize(nv);
   m.vcurve.resize(nv);
