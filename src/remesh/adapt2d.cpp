@@ -254,16 +254,34 @@ long swap_sweep(TriMesh& m, PassStats& st, Changes& changes, std::uint32_t since
 /// triangle qualities are cached for the sweep (updated after each move). `since` > 0: only the
 /// vertices with a ball vertex changed at or after that stamp (the others were left as they are
 /// by the sweep that began then).
-long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since) {
+/// Triangle qualities cached by the smoothing sweeps, kept from sweep to sweep (one allocation
+/// per run instead of two arrays of the triangle count per sweep): `known[t] == sweep` when
+/// quality[t] was computed in the current sweep.
+struct QualityCache {
+  std::vector<double> quality;
+  std::vector<std::uint32_t> known;
+  std::uint32_t sweep = 0;
+
+  /// Starts a sweep over a mesh of `triangles` slots: no quality known yet.
+  void begin(std::size_t triangles) {
+    if (quality.size() < triangles) quality.resize(triangles), known.resize(triangles, 0);
+    ++sweep;
+  }
+};
+
+long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since,
+                  QualityCache& cache) {
   constexpr double kGoodBall = 0.9;
   TriMesh& m = ctx.mesh();
   // Exact qualities (move_vertex takes the ball's worst from here); the good-ball test compares
   // them rounded to float, as it always has. Computed at the first look (a sweep with `since`
   // visits few balls) and after each move: the same values as computing them all up front.
-  std::vector<double> quality(m.triangle_capacity(), 0.0);
-  std::vector<std::uint8_t> known(m.triangle_capacity(), 0);
+  cache.begin(m.triangle_capacity());
+  std::vector<double>& quality = cache.quality;
+  std::vector<std::uint32_t>& known = cache.known;
+  const std::uint32_t sweep = cache.sweep;
   auto quality_of = [&](Id t) {
-    if (!known[t]) quality[t] = tri_quality(m, t), known[t] = 1;
+    if (known[t] != sweep) quality[t] = tri_quality(m, t), known[t] = sweep;
     return quality[t];
   };
   thread_local Ball ball;
@@ -292,7 +310,7 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
         Outcome::kApplied) {
       ctx.inherit_hint(v, v);
       changes.mark(v);
-      for (const Id t : ball.tris) quality[t] = tri_quality(m, t), known[t] = 1;
+      for (const Id t : ball.tris) quality[t] = tri_quality(m, t), known[t] = sweep;
       ++done;
     } else {
       ++st.rejected;
@@ -370,6 +388,7 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
   Changes changes;
+  QualityCache qualities;
   std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the previous swap and smoothing sweeps
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -383,7 +402,7 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
       const std::uint32_t swap_stamp = changes.begin();
       if (options.swap) st.swaps += swap_sweep(m, st, changes, swap_from);
       const std::uint32_t smooth_stamp = changes.begin();
-      if (options.move) st.moves += smooth_sweep(ctx, st, changes, smooth_from);
+      if (options.move) st.moves += smooth_sweep(ctx, st, changes, smooth_from, qualities);
       swap_from = swap_stamp, smooth_from = smooth_stamp;
     }
     summarize(m, st);

@@ -19,24 +19,28 @@ Id find_slot(const TriMesh& m, Id t, Id a, Id b) {
   return kNoId;
 }
 
-/// The vertices, in one go (as add_vertex one by one would set them).
+/// The vertices, in one go (as add_vertex one by one would set them). Each array is written
+/// once (no zero fill first) and reserved with room for as many again: splits then append
+/// without reallocating (copying) every array; the room is address space only until used.
 void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics,
                   std::span<const VertexCurve> curves) {
-  const std::size_t nv = mesh.num_vertices();
-  m.xy.resize(nv);
+  const std::size_t nv = mesh.num_vertices(), room = 2 * nv;
+  m.xy.reserve(room);
+  m.metric.reserve(room);
+  m.vref.reserve(room);
+  m.vtag.reserve(room);
+  m.vcurve.reserve(room);
+  m.vparam.reserve(room);
+  m.vtri.reserve(room);
   m.metric.assign(metrics.begin(), metrics.begin() + static_cast<std::ptrdiff_t>(nv));
-  m.vref.resize(nv);
-  m.vtag.resize(nv);
-  m.vcurve.resize(nv);
-  m.vparam.resize(nv);
   m.vtri.assign(nv, kNoId);
   for (std::size_t v = 0; v < nv; ++v) {
-    m.xy[v] = Vec2{{mesh.coords[2 * v], mesh.coords[2 * v + 1]}};
-    m.vref[v] = mesh.vert_ref.empty() ? 0 : mesh.vert_ref[v];
-    m.vtag[v] = mesh.vert_tag.empty() ? std::uint8_t{kTagNone} : mesh.vert_tag[v];
-    m.vcurve[v] = curves[v].curve;
-    m.vparam[v] = curves[v].param;
-    if (curves[v].curve != kNoCurve) m.vtag[v] |= kTagRidge;
+    m.xy.push_back(Vec2{{mesh.coords[2 * v], mesh.coords[2 * v + 1]}});
+    m.vref.push_back(mesh.vert_ref.empty() ? 0 : mesh.vert_ref[v]);
+    const std::uint8_t tag = mesh.vert_tag.empty() ? std::uint8_t{kTagNone} : mesh.vert_tag[v];
+    m.vtag.push_back(curves[v].curve != kNoCurve ? static_cast<std::uint8_t>(tag | kTagRidge) : tag);
+    m.vcurve.push_back(curves[v].curve);
+    m.vparam.push_back(curves[v].param);
   }
 }
 
@@ -45,35 +49,40 @@ void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics
 void add_triangles(TriMesh& m, const Mesh& mesh, const Adjacency& adj) {
   if (!adj.nonmanifold_faces.empty())
     throw InputError("non-manifold edge at " + tri_name(adj.nonmanifold_faces[0] / 3));
-  const std::size_t nt = mesh.num_triangles();
-  m.tv.resize(3 * nt);
-  m.tadj.assign(3 * nt, kNoId);
-  m.tref.resize(nt);
+  const std::size_t nt = mesh.num_triangles(), room = 6 * nt;  // room for as many again
+  m.tv.reserve(room);
+  m.tadj.reserve(room);
+  m.tref.reserve(room / 3);
+  m.ecurve.reserve(room);
+  m.eref.reserve(room);
+  m.etag.reserve(room);
+  m.tv.assign(mesh.triangles.begin(), mesh.triangles.begin() + static_cast<std::ptrdiff_t>(3 * nt));
   m.ecurve.assign(3 * nt, kNoCurve);
   m.eref.assign(3 * nt, 0);
   m.etag.assign(3 * nt, kTagNone);
+  if (mesh.tri_ref.empty()) m.tref.assign(nt, 0);
+  else m.tref.assign(mesh.tri_ref.begin(), mesh.tri_ref.begin() + static_cast<std::ptrdiff_t>(nt));
   for (std::size_t t = 0; t < nt; ++t) {
     const Id* v = &mesh.triangles[3 * t];
     if (!(signed_area(m.xy[v[0]], m.xy[v[1]], m.xy[v[2]]) > 0.0))
       throw InputError(tri_name(t) + " is clockwise or degenerate");
-    for (int i = 0; i < 3; ++i) {
-      m.tv[3 * t + i] = v[i];
-      m.vtri[v[i]] = static_cast<Id>(t);
-    }
-    m.tref[t] = mesh.tri_ref.empty() ? 0 : mesh.tri_ref[t];
+    for (int i = 0; i < 3; ++i) m.vtri[v[i]] = static_cast<Id>(t);
   }
   constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};  // edge i runs next -> prev
   for (std::size_t t = 0; t < nt; ++t)
     for (int i = 0; i < 3; ++i) {
       const Id n = adj.elem2elem[3 * t + i];
-      if (n == kNoId) continue;
+      if (n == kNoId) {
+        m.tadj.push_back(kNoId);
+        continue;
+      }
       const Id a = m.tv[3 * t + kNext[i]], b = m.tv[3 * t + kPrev[i]];
       const Id* w = &m.tv[3 * static_cast<std::size_t>(n)];
       int j = 0;
       while (j < 3 && (w[j] == a || w[j] == b)) ++j;
       const bool same = j < 3 && ((w[kNext[j]] == b && w[kPrev[j]] == a) ||
                                   (w[kNext[j]] == a && w[kPrev[j]] == b));
-      m.tadj[3 * t + i] = same ? 3 * n + j : find_slot(m, n, a, b);
+      m.tadj.push_back(same ? 3 * n + j : find_slot(m, n, a, b));
     }
 }
 
