@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "mesh/adjacency.hpp"
 #include "mesh/hilbert.hpp"
 #include "metric/gradation.hpp"
@@ -105,6 +106,7 @@ std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer,
   // Sorted as pairs of integers: the bits of a positive double order as its value (flipped for
   // the longest first), then (a, b) packed; the same order as comparing (length, a, b).
   std::vector<std::pair<std::uint64_t, std::uint64_t>> keys;
+  reserve_huge(keys, m.tadj.size() / 2 + 1);  // room for every edge (address space only)
   const int want = longer ? 1 : -1;
   const std::uint64_t flip = longer ? ~std::uint64_t{0} : 0;
   for_each_edge(m, [&](Id s) {
@@ -119,10 +121,11 @@ std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer,
                     (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b)});
   });
   std::sort(keys.begin(), keys.end());
-  std::vector<Candidate> out(keys.size());
-  for (std::size_t i = 0; i < keys.size(); ++i)
-    out[i] = {std::bit_cast<double>(keys[i].first ^ flip), static_cast<Id>(keys[i].second >> 32),
-              static_cast<Id>(keys[i].second & 0xffffffffu)};
+  std::vector<Candidate> out;
+  reserve_huge(out, keys.size());
+  for (const auto& [length_bits, ids] : keys)
+    out.push_back({std::bit_cast<double>(length_bits ^ flip), static_cast<Id>(ids >> 32),
+                   static_cast<Id>(ids & 0xffffffffu)});
   return out;
 }
 
@@ -264,6 +267,7 @@ struct QualityCache {
 
   /// Starts a sweep over a mesh of `triangles` slots: no quality known yet.
   void begin(std::size_t triangles) {
+    if (quality.empty()) reserve_huge(quality, triangles), reserve_huge(known, triangles);
     if (quality.size() < triangles) quality.resize(triangles), known.resize(triangles, 0);
     ++sweep;
   }

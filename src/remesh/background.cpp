@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "core/spd.hpp"
 #include "mesh/adjacency.hpp"
 #include "remesh/simplex_geometry.hpp"
@@ -176,6 +177,7 @@ void BackgroundMesh<D>::finish(std::vector<Id>&& elem2elem) {
                        " is not symmetric positive definite");
   }
   if (scheme_ == InterpScheme::kLogEuclidean) {
+    reserve_huge(logs_, nv);
     logs_.resize(nv);
     for (std::size_t v = 0; v < nv; ++v) logs_[v] = log_spd(metrics_[v]);
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "remesh/tri_mesh_io.hpp"
 
 namespace riemesh {
@@ -15,12 +16,19 @@ BackgroundMesh<2> make_background(const Mesh& input, std::span<const SymMat2> me
                                   InterpScheme scheme, const Adjacency& adjacency) {
   const std::size_t nv = input.num_vertices();
   std::vector<Vec2> coords;
-  coords.reserve(nv);
+  reserve_huge(coords, nv);
   for (std::size_t v = 0; v < nv; ++v)
     coords.push_back(Vec2{{input.coords[2 * v], input.coords[2 * v + 1]}});
-  return BackgroundMesh<2>(std::move(coords), std::vector<Id>(input.triangles),
-                           std::vector<SymMat2>(metrics.begin(), metrics.end()), scheme,
-                           std::vector<Id>(adjacency.elem2elem));
+  std::vector<Id> simplices, neighbours;
+  std::vector<SymMat2> vertex_metrics;
+  reserve_huge(simplices, input.triangles.size());
+  simplices.assign(input.triangles.begin(), input.triangles.end());
+  reserve_huge(vertex_metrics, metrics.size());
+  vertex_metrics.assign(metrics.begin(), metrics.end());
+  reserve_huge(neighbours, adjacency.elem2elem.size());
+  neighbours.assign(adjacency.elem2elem.begin(), adjacency.elem2elem.end());
+  return BackgroundMesh<2>(std::move(coords), std::move(simplices), std::move(vertex_metrics),
+                           scheme, std::move(neighbours));
 }
 
 /// Where to split an edge of metric length L running from density la to lb: at the fraction of
@@ -53,7 +61,9 @@ Remesh2dContext::Remesh2dContext(const Mesh& input, std::span<const SymMat2> met
                         curves_.curves[f.curve].ref,
                         static_cast<std::uint8_t>(required ? kTagRequired : kTagNone)});
   }
-  std::vector<VertexCurve> vcurves(nv);
+  std::vector<VertexCurve> vcurves;
+  reserve_huge(vcurves, nv);
+  vcurves.resize(nv);
   for (std::size_t v = 0; v < nv; ++v) {
     const auto at = curves_.curves_at(static_cast<Id>(v));
     if (!curves_.corner[v] && !at.empty())

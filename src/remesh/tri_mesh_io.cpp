@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "mesh/adjacency.hpp"
 
 namespace riemesh {
@@ -25,13 +26,13 @@ Id find_slot(const TriMesh& m, Id t, Id a, Id b) {
 void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics,
                   std::span<const VertexCurve> curves) {
   const std::size_t nv = mesh.num_vertices(), room = 2 * nv;
-  m.xy.reserve(room);
-  m.metric.reserve(room);
-  m.vref.reserve(room);
-  m.vtag.reserve(room);
-  m.vcurve.reserve(room);
-  m.vparam.reserve(room);
-  m.vtri.reserve(room);
+  reserve_huge(m.xy, room);
+  reserve_huge(m.metric, room);
+  reserve_huge(m.vref, room);
+  reserve_huge(m.vtag, room);
+  reserve_huge(m.vcurve, room);
+  reserve_huge(m.vparam, room);
+  reserve_huge(m.vtri, room);
   m.metric.assign(metrics.begin(), metrics.begin() + static_cast<std::ptrdiff_t>(nv));
   m.vtri.assign(nv, kNoId);
   for (std::size_t v = 0; v < nv; ++v) {
@@ -50,12 +51,12 @@ void add_triangles(TriMesh& m, const Mesh& mesh, const Adjacency& adj) {
   if (!adj.nonmanifold_faces.empty())
     throw InputError("non-manifold edge at " + tri_name(adj.nonmanifold_faces[0] / 3));
   const std::size_t nt = mesh.num_triangles(), room = 6 * nt;  // room for as many again
-  m.tv.reserve(room);
-  m.tadj.reserve(room);
-  m.tref.reserve(room / 3);
-  m.ecurve.reserve(room);
-  m.eref.reserve(room);
-  m.etag.reserve(room);
+  reserve_huge(m.tv, room);
+  reserve_huge(m.tadj, room);
+  reserve_huge(m.tref, room / 3);
+  reserve_huge(m.ecurve, room);
+  reserve_huge(m.eref, room);
+  reserve_huge(m.etag, room);
   m.tv.assign(mesh.triangles.begin(), mesh.triangles.begin() + static_cast<std::ptrdiff_t>(3 * nt));
   m.ecurve.assign(3 * nt, kNoCurve);
   m.eref.assign(3 * nt, 0);
@@ -121,6 +122,14 @@ Mesh to_mesh(const TriMesh& m, std::vector<SymMat2>* metrics) {
   out.dim = 2;
   std::vector<Id> new_id(m.vertex_capacity(), kNoId);
   if (metrics) metrics->clear();
+  // Exact sizes up front: no growth by copies, huge pages for the large arrays.
+  const std::size_t nv = m.num_live_vertices(), nt = m.num_live_triangles();
+  reserve_huge(out.coords, 2 * nv);
+  reserve_huge(out.vert_ref, nv);
+  reserve_huge(out.vert_tag, nv);
+  reserve_huge(out.triangles, 3 * nt);
+  reserve_huge(out.tri_ref, nt);
+  if (metrics) reserve_huge(*metrics, nv);
   for (std::size_t v = 0; v < m.vertex_capacity(); ++v) {
     if (!m.vert_alive(static_cast<Id>(v))) continue;
     new_id[v] = static_cast<Id>(out.num_vertices());
