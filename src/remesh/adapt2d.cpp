@@ -90,22 +90,38 @@ struct Changes {
   }
 };
 
-/// An edge to split or collapse, by its end vertices (slots move as the mesh changes).
+/// An edge to split or collapse, by its end vertices (slots move as the mesh changes), and a
+/// flag computed for it when the list was made (collapse candidates: refused by length both
+/// ways).
 struct Candidate {
   double length;
   Id a, b;
+  std::uint8_t flag = 0;
+};
+
+/// No flag.
+struct NoFlag {
+  std::uint8_t operator()(const Candidate&) const { return 0; }
 };
 
 /// The edges of metric length above `limit` (longer = true) or below it, sorted by `longer`
-/// first length (ties by ids, so the order is deterministic). Only the selected edges have
-/// their length computed (compare_edge_length decides the others from cheap bounds).
+/// first length (ties by ids, so the order is deterministic), each with flag(candidate)
+/// computed in mesh order as they are found. Only the selected edges have their length
+/// computed (compare_edge_length decides the others from cheap bounds).
 /// `since` > 0: only the edges with a vertex of their two triangles changed at or after that
 /// stamp.
+template <class Flag = NoFlag>
 std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer,
-                                  const Changes& changes, std::uint32_t since = 0) {
+                                  const Changes& changes, std::uint32_t since = 0,
+                                  Flag flag = {}) {
   // Sorted as pairs of integers: the bits of a positive double order as its value (flipped for
-  // the longest first), then (a, b) packed; the same order as comparing (length, a, b).
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> keys;
+  // the longest first), then (a, b) packed; the same order as comparing (length, a, b). Each
+  // edge is listed once, so no two keys are equal.
+  struct Key {
+    std::uint64_t length, ids;
+    std::uint8_t flag;
+  };
+  std::vector<Key> keys;
   reserve_huge(keys, m.tadj.size() / 2 + 1);  // room for every edge (address space only)
   const int want = longer ? 1 : -1;
   const std::uint64_t flip = longer ? ~std::uint64_t{0} : 0;
@@ -118,14 +134,17 @@ std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer,
     if (compare_edge_length(m, a, b, limit) != want) return;
     const double l = edge_length(m, a, b);
     keys.push_back({std::bit_cast<std::uint64_t>(l) ^ flip,
-                    (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b)});
+                    (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b),
+                    flag(Candidate{l, a, b})});
   });
-  std::sort(keys.begin(), keys.end());
+  std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) {
+    return x.length != y.length ? x.length < y.length : x.ids < y.ids;
+  });
   std::vector<Candidate> out;
   reserve_huge(out, keys.size());
-  for (const auto& [length_bits, ids] : keys)
-    out.push_back({std::bit_cast<double>(length_bits ^ flip), static_cast<Id>(ids >> 32),
-                   static_cast<Id>(ids & 0xffffffffu)});
+  for (const Key& k : keys)
+    out.push_back({std::bit_cast<double>(k.length ^ flip), static_cast<Id>(k.ids >> 32),
+                   static_cast<Id>(k.ids & 0xffffffffu), k.flag});
   return out;
 }
 
@@ -180,30 +199,20 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
   // from a coarse mesh overshot) may be removed even if a triangle gets up to 2x worse.
   CollapseLimits tiny = limits;
   tiny.relative_floor = 0.5;
-  std::vector<Candidate> list = candidates(m, kCollapseBelow, false, changes);
-  // Candidates refused by length both ways, found in mesh order (vertex a first).
-  std::vector<std::uint8_t> too_long(list.size(), 0);
-  {
-    // (vertex a, index) packed in one integer: the same order as sorting the indices by a.
-    std::vector<std::uint64_t> order(list.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-      order[i] = (static_cast<std::uint64_t>(list[i].a) << 32) | i;
-    std::sort(order.begin(), order.end());
-    for (const std::uint64_t key : order) {
-      const std::size_t i = key & 0xffffffffu;
-      const Candidate& c = list[i];
-      const CollapseLimits& lim = c.length < 0.25 ? tiny : limits;
-      too_long[i] = (m.frozen(c.a) || collapse_too_long(m, c.a, c.b, lim)) &&
-                    (m.frozen(c.b) || collapse_too_long(m, c.b, c.a, lim));
-    }
-  }
+  // Candidates refused by length both ways, found as they are listed (in mesh order).
+  const std::vector<Candidate> list =
+      candidates(m, kCollapseBelow, false, changes, 0, [&](const Candidate& c) -> std::uint8_t {
+        const CollapseLimits& lim = c.length < 0.25 ? tiny : limits;
+        return (m.frozen(c.a) || collapse_too_long(m, c.a, c.b, lim)) &&
+               (m.frozen(c.b) || collapse_too_long(m, c.b, c.a, lim));
+      });
   std::vector<std::uint8_t> touched(m.vertex_capacity(), 0);
   thread_local Ball ball;
   thread_local std::vector<Id> around;
   long done = 0;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Candidate& c = list[i];
-    if (too_long[i] && !touched[c.a] && !touched[c.b]) {
+    if (c.flag && !touched[c.a] && !touched[c.b]) {
       ++st.rejected;
       continue;
     }
