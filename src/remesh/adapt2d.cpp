@@ -273,6 +273,7 @@ struct QualityCache {
   std::vector<double> quality;
   std::vector<std::uint32_t> known;
   std::uint32_t sweep = 0;
+  std::vector<std::uint8_t> visit;  // per vertex, sweeps with `since`: a ball vertex changed
 
   /// Starts a sweep over a mesh of `triangles` slots: no quality known yet.
   void begin(std::size_t triangles) {
@@ -297,18 +298,28 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
     if (known[t] != sweep) quality[t] = tri_quality(m, t), known[t] = sweep;
     return quality[t];
   };
+  // With `since`: the vertices sharing a triangle with a vertex changed since then, found in
+  // one pass over the triangles (not a ball walk per vertex), then kept up to date as vertices
+  // move in this sweep (a move marks the vertices of its ball): the vertices whose ball holds a
+  // changed vertex when they are reached, as testing each ball would find.
+  std::vector<std::uint8_t>& visit = cache.visit;
+  if (since > 0) {
+    visit.assign(m.vertex_capacity(), 0);
+    for (std::size_t t = 0; t < m.triangle_capacity(); ++t) {
+      const Id* tv = &m.tv[3 * t];
+      if (tv[0] == kNoId) continue;
+      if (changes.since(tv[0], since) || changes.since(tv[1], since) ||
+          changes.since(tv[2], since))
+        visit[tv[0]] = visit[tv[1]] = visit[tv[2]] = 1;
+    }
+  }
   thread_local Ball ball;
   long done = 0;
   for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
     const Id v = static_cast<Id>(vi);
     if (!m.vert_alive(v) || m.frozen(v)) continue;
+    if (since > 0 && !visit[v]) continue;
     collect_ball(m, v, ball);
-    if (since > 0) {
-      bool changed = false;
-      for (const Id t : ball.tris)
-        for (int i = 0; i < 3; ++i) changed = changed || changes.since(m.tv[3 * t + i], since);
-      if (!changed) continue;
-    }
     float worst = 1.0f;
     double worst_exact = 2.0;
     for (const Id t : ball.tris) {
@@ -324,6 +335,9 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
       ctx.inherit_hint(v, v);
       changes.mark(v);
       for (const Id t : ball.tris) quality[t] = tri_quality(m, t), known[t] = sweep;
+      if (since > 0)
+        for (const Id t : ball.tris)
+          for (int i = 0; i < 3; ++i) visit[m.tv[3 * t + i]] = 1;
       ++done;
     } else {
       ++st.rejected;
