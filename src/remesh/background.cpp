@@ -264,17 +264,18 @@ void BackgroundMesh<D>::build_starts() const {
     Vec<D> centroid = Vec<D>::zero();
     for (int i = 0; i < kVerts; ++i) centroid += coords_[simplices_[kVerts * s + i]];
     centroid *= 1.0 / kVerts;
-    for_box<D>(c_lo, c_hi, grid_.n, [&](std::size_t cell) {
+    int k[D];  // the cells of the box, axis 0 fastest (as for_box)
+    for (int a = 0; a < D; ++a) k[a] = c_lo[a];
+    for (;;) {
+      const std::size_t cell = cell_index(k);
       Vec<D> centre{};
-      std::size_t rest = cell;  // axis 0 fastest (as cell_index)
-      for (int a = 0; a < D; ++a) {
-        const int k = static_cast<int>(rest % static_cast<std::size_t>(grid_.n[a]));
-        rest /= static_cast<std::size_t>(grid_.n[a]);
-        centre[a] = grid_.lo[a] + (k + 0.5) * grid_.cell[a];
-      }
+      for (int a = 0; a < D; ++a) centre[a] = grid_.lo[a] + (k[a] + 0.5) * grid_.cell[a];
       const Vec<D> d = centroid - centre;
       if (dot(d, d) < best[cell]) best[cell] = dot(d, d), grid_.start[cell] = static_cast<Id>(s);
-    });
+      int a = 0;
+      while (a < D && ++k[a] > c_hi[a]) k[a] = c_lo[a], ++a;
+      if (a == D) break;
+    }
   }
 }
 
