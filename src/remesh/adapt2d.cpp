@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "mesh/adjacency.hpp"
 #include "mesh/hilbert.hpp"
 #include "metric/gradation.hpp"
@@ -89,22 +90,39 @@ struct Changes {
   }
 };
 
-/// An edge to split or collapse, by its end vertices (slots move as the mesh changes).
+/// An edge to split or collapse, by its end vertices (slots move as the mesh changes), and a
+/// flag computed for it when the list was made (collapse candidates: refused by length both
+/// ways).
 struct Candidate {
   double length;
   Id a, b;
+  std::uint8_t flag = 0;
+};
+
+/// No flag.
+struct NoFlag {
+  std::uint8_t operator()(const Candidate&) const { return 0; }
 };
 
 /// The edges of metric length above `limit` (longer = true) or below it, sorted by `longer`
-/// first length (ties by ids, so the order is deterministic). Only the selected edges have
-/// their length computed (compare_edge_length decides the others from cheap bounds).
+/// first length (ties by ids, so the order is deterministic), each with flag(candidate)
+/// computed in mesh order as they are found. Only the selected edges have their length
+/// computed (compare_edge_length decides the others from cheap bounds).
 /// `since` > 0: only the edges with a vertex of their two triangles changed at or after that
 /// stamp.
+template <class Flag = NoFlag>
 std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer,
-                                  const Changes& changes, std::uint32_t since = 0) {
+                                  const Changes& changes, std::uint32_t since = 0,
+                                  Flag flag = {}) {
   // Sorted as pairs of integers: the bits of a positive double order as its value (flipped for
-  // the longest first), then (a, b) packed; the same order as comparing (length, a, b).
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> keys;
+  // the longest first), then (a, b) packed; the same order as comparing (length, a, b). Each
+  // edge is listed once, so no two keys are equal.
+  struct Key {
+    std::uint64_t length, ids;
+    std::uint8_t flag;
+  };
+  std::vector<Key> keys;
+  reserve_huge(keys, m.tadj.size() / 2 + 1);  // room for every edge (address space only)
   const int want = longer ? 1 : -1;
   const std::uint64_t flip = longer ? ~std::uint64_t{0} : 0;
   for_each_edge(m, [&](Id s) {
@@ -116,13 +134,17 @@ std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer,
     if (compare_edge_length(m, a, b, limit) != want) return;
     const double l = edge_length(m, a, b);
     keys.push_back({std::bit_cast<std::uint64_t>(l) ^ flip,
-                    (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b)});
+                    (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b),
+                    flag(Candidate{l, a, b})});
   });
-  std::sort(keys.begin(), keys.end());
-  std::vector<Candidate> out(keys.size());
-  for (std::size_t i = 0; i < keys.size(); ++i)
-    out[i] = {std::bit_cast<double>(keys[i].first ^ flip), static_cast<Id>(keys[i].second >> 32),
-              static_cast<Id>(keys[i].second & 0xffffffffu)};
+  std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) {
+    return x.length != y.length ? x.length < y.length : x.ids < y.ids;
+  });
+  std::vector<Candidate> out;
+  reserve_huge(out, keys.size());
+  for (const Key& k : keys)
+    out.push_back({std::bit_cast<double>(k.length ^ flip), static_cast<Id>(k.ids >> 32),
+                   static_cast<Id>(k.ids & 0xffffffffu), k.flag});
   return out;
 }
 
@@ -177,30 +199,20 @@ long collapse_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
   // from a coarse mesh overshot) may be removed even if a triangle gets up to 2x worse.
   CollapseLimits tiny = limits;
   tiny.relative_floor = 0.5;
-  std::vector<Candidate> list = candidates(m, kCollapseBelow, false, changes);
-  // Candidates refused by length both ways, found in mesh order (vertex a first).
-  std::vector<std::uint8_t> too_long(list.size(), 0);
-  {
-    // (vertex a, index) packed in one integer: the same order as sorting the indices by a.
-    std::vector<std::uint64_t> order(list.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-      order[i] = (static_cast<std::uint64_t>(list[i].a) << 32) | i;
-    std::sort(order.begin(), order.end());
-    for (const std::uint64_t key : order) {
-      const std::size_t i = key & 0xffffffffu;
-      const Candidate& c = list[i];
-      const CollapseLimits& lim = c.length < 0.25 ? tiny : limits;
-      too_long[i] = (m.frozen(c.a) || collapse_too_long(m, c.a, c.b, lim)) &&
-                    (m.frozen(c.b) || collapse_too_long(m, c.b, c.a, lim));
-    }
-  }
+  // Candidates refused by length both ways, found as they are listed (in mesh order).
+  const std::vector<Candidate> list =
+      candidates(m, kCollapseBelow, false, changes, 0, [&](const Candidate& c) -> std::uint8_t {
+        const CollapseLimits& lim = c.length < 0.25 ? tiny : limits;
+        return (m.frozen(c.a) || collapse_too_long(m, c.a, c.b, lim)) &&
+               (m.frozen(c.b) || collapse_too_long(m, c.b, c.a, lim));
+      });
   std::vector<std::uint8_t> touched(m.vertex_capacity(), 0);
   thread_local Ball ball;
   thread_local std::vector<Id> around;
   long done = 0;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Candidate& c = list[i];
-    if (too_long[i] && !touched[c.a] && !touched[c.b]) {
+    if (c.flag && !touched[c.a] && !touched[c.b]) {
       ++st.rejected;
       continue;
     }
@@ -254,30 +266,60 @@ long swap_sweep(TriMesh& m, PassStats& st, Changes& changes, std::uint32_t since
 /// triangle qualities are cached for the sweep (updated after each move). `since` > 0: only the
 /// vertices with a ball vertex changed at or after that stamp (the others were left as they are
 /// by the sweep that began then).
-long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since) {
+/// Triangle qualities cached by the smoothing sweeps, kept from sweep to sweep (one allocation
+/// per run instead of two arrays of the triangle count per sweep): `known[t] == sweep` when
+/// quality[t] was computed in the current sweep.
+struct QualityCache {
+  std::vector<double> quality;
+  std::vector<std::uint32_t> known;
+  std::uint32_t sweep = 0;
+  std::vector<std::uint8_t> visit;  // per vertex, sweeps with `since`: a ball vertex changed
+
+  /// Starts a sweep over a mesh of `triangles` slots: no quality known yet.
+  void begin(std::size_t triangles) {
+    if (quality.empty()) reserve_huge(quality, triangles), reserve_huge(known, triangles);
+    if (quality.size() < triangles) quality.resize(triangles), known.resize(triangles, 0);
+    ++sweep;
+  }
+};
+
+long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::uint32_t since,
+                  QualityCache& cache) {
   constexpr double kGoodBall = 0.9;
   TriMesh& m = ctx.mesh();
   // Exact qualities (move_vertex takes the ball's worst from here); the good-ball test compares
   // them rounded to float, as it always has. Computed at the first look (a sweep with `since`
   // visits few balls) and after each move: the same values as computing them all up front.
-  std::vector<double> quality(m.triangle_capacity(), 0.0);
-  std::vector<std::uint8_t> known(m.triangle_capacity(), 0);
+  cache.begin(m.triangle_capacity());
+  std::vector<double>& quality = cache.quality;
+  std::vector<std::uint32_t>& known = cache.known;
+  const std::uint32_t sweep = cache.sweep;
   auto quality_of = [&](Id t) {
-    if (!known[t]) quality[t] = tri_quality(m, t), known[t] = 1;
+    if (known[t] != sweep) quality[t] = tri_quality(m, t), known[t] = sweep;
     return quality[t];
   };
+  // With `since`: the vertices sharing a triangle with a vertex changed since then, found in
+  // one pass over the triangles (not a ball walk per vertex), then kept up to date as vertices
+  // move in this sweep (a move marks the vertices of its ball): the vertices whose ball holds a
+  // changed vertex when they are reached, as testing each ball would find.
+  std::vector<std::uint8_t>& visit = cache.visit;
+  if (since > 0) {
+    visit.assign(m.vertex_capacity(), 0);
+    for (std::size_t t = 0; t < m.triangle_capacity(); ++t) {
+      const Id* tv = &m.tv[3 * t];
+      if (tv[0] == kNoId) continue;
+      if (changes.since(tv[0], since) || changes.since(tv[1], since) ||
+          changes.since(tv[2], since))
+        visit[tv[0]] = visit[tv[1]] = visit[tv[2]] = 1;
+    }
+  }
   thread_local Ball ball;
   long done = 0;
   for (std::size_t vi = 0; vi < m.vertex_capacity(); ++vi) {
     const Id v = static_cast<Id>(vi);
     if (!m.vert_alive(v) || m.frozen(v)) continue;
+    if (since > 0 && !visit[v]) continue;
     collect_ball(m, v, ball);
-    if (since > 0) {
-      bool changed = false;
-      for (const Id t : ball.tris)
-        for (int i = 0; i < 3; ++i) changed = changed || changes.since(m.tv[3 * t + i], since);
-      if (!changed) continue;
-    }
     float worst = 1.0f;
     double worst_exact = 2.0;
     for (const Id t : ball.tris) {
@@ -292,7 +334,10 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
         Outcome::kApplied) {
       ctx.inherit_hint(v, v);
       changes.mark(v);
-      for (const Id t : ball.tris) quality[t] = tri_quality(m, t), known[t] = 1;
+      for (const Id t : ball.tris) quality[t] = tri_quality(m, t), known[t] = sweep;
+      if (since > 0)
+        for (const Id t : ball.tris)
+          for (int i = 0; i < 3; ++i) visit[m.tv[3 * t + i]] = 1;
       ++done;
     } else {
       ++st.rejected;
@@ -371,6 +416,7 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   int best_pass = 0;
   double prev_in = 0.0, prev_qmin = 0.0, prev_qmean = 0.0;
   Changes changes;
+  QualityCache qualities;
   std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the previous swap and smoothing sweeps
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -384,7 +430,7 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
       const std::uint32_t swap_stamp = changes.begin();
       if (options.swap) st.swaps += swap_sweep(m, st, changes, swap_from);
       const std::uint32_t smooth_stamp = changes.begin();
-      if (options.move) st.moves += smooth_sweep(ctx, st, changes, smooth_from);
+      if (options.move) st.moves += smooth_sweep(ctx, st, changes, smooth_from, qualities);
       swap_from = swap_stamp, smooth_from = smooth_stamp;
     }
     summarize(m, st);

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "core/spd.hpp"
 #include "mesh/adjacency.hpp"
 #include "remesh/simplex_geometry.hpp"
@@ -176,6 +177,7 @@ void BackgroundMesh<D>::finish(std::vector<Id>&& elem2elem) {
                        " is not symmetric positive definite");
   }
   if (scheme_ == InterpScheme::kLogEuclidean) {
+    reserve_huge(logs_, nv);
     logs_.resize(nv);
     for (std::size_t v = 0; v < nv; ++v) logs_[v] = log_spd(metrics_[v]);
   }
@@ -216,58 +218,70 @@ void BackgroundMesh<D>::build_grid() {
 }
 
 template <int D>
+void BackgroundMesh<D>::simplex_cells(std::size_t s, int c_lo[D], int c_hi[D]) const {
+  Vec<D> b_lo = coords_[simplices_[kVerts * s]], b_hi = b_lo;
+  for (int i = 1; i < kVerts; ++i) {
+    const Vec<D>& x = coords_[simplices_[kVerts * s + i]];
+    for (int a = 0; a < D; ++a) b_lo[a] = std::min(b_lo[a], x[a]), b_hi[a] = std::max(b_hi[a], x[a]);
+  }
+  cell_of(b_lo, c_lo);
+  cell_of(b_hi, c_hi);
+}
+
+template <int D>
 void BackgroundMesh<D>::build_grid_lists() const {
   const std::size_t cells = grid_.cells;
   // Two passes over the simplices' bounding boxes: count, then fill (ids increase per cell).
   grid_.offsets.assign(cells + 1, 0);
-  auto simplex_box = [&](std::size_t s, int c_lo[D], int c_hi[D]) {
-    Vec<D> b_lo = coords_[simplices_[kVerts * s]], b_hi = b_lo;
-    for (int i = 1; i < kVerts; ++i) {
-      const Vec<D>& x = coords_[simplices_[kVerts * s + i]];
-      for (int a = 0; a < D; ++a)
-        b_lo[a] = std::min(b_lo[a], x[a]), b_hi[a] = std::max(b_hi[a], x[a]);
-    }
-    cell_of(b_lo, c_lo);
-    cell_of(b_hi, c_hi);
-  };
   int c_lo[D], c_hi[D];
   for (std::size_t s = 0; s < num_simplices(); ++s) {
-    simplex_box(s, c_lo, c_hi);
+    simplex_cells(s, c_lo, c_hi);
     for_box<D>(c_lo, c_hi, grid_.n, [&](std::size_t c) { ++grid_.offsets[c + 1]; });
   }
   for (std::size_t c = 0; c < cells; ++c) grid_.offsets[c + 1] += grid_.offsets[c];
   grid_.ids.resize(grid_.offsets[cells]);
   std::vector<std::size_t> fill(grid_.offsets.begin(), grid_.offsets.end() - 1);
   for (std::size_t s = 0; s < num_simplices(); ++s) {
-    simplex_box(s, c_lo, c_hi);
+    simplex_cells(s, c_lo, c_hi);
     for_box<D>(c_lo, c_hi, grid_.n,
                [&](std::size_t c) { grid_.ids[fill[c]++] = static_cast<Id>(s); });
-  }
-  // Walk starts: the simplex nearest the cell centre (first in id order on ties), so that a
-  // hint-free walk crosses about half a cell. Cell by cell over the lists just built (ids
-  // increase in each), the cell centre computed once per cell.
-  grid_.start.assign(cells, kNoId);
-  int k[D]{};  // the cell's integer coordinates, axis 0 fastest (as cell_index)
-  for (std::size_t cell = 0; cell < cells; ++cell) {
-    Vec<D> centre{};
-    for (int a = 0; a < D; ++a) centre[a] = grid_.lo[a] + (k[a] + 0.5) * grid_.cell[a];
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t x = grid_.offsets[cell]; x < grid_.offsets[cell + 1]; ++x) {
-      const std::size_t s = static_cast<std::size_t>(grid_.ids[x]);
-      Vec<D> centroid = Vec<D>::zero();
-      for (int i = 0; i < kVerts; ++i) centroid += coords_[simplices_[kVerts * s + i]];
-      centroid *= 1.0 / kVerts;
-      const Vec<D> d = centroid - centre;
-      if (dot(d, d) < best) best = dot(d, d), grid_.start[cell] = static_cast<Id>(s);
-    }
-    for (int a = 0; a < D && ++k[a] == grid_.n[a]; ++a) k[a] = 0;
   }
   build_face_grid();
 }
 
 template <int D>
+void BackgroundMesh<D>::build_starts() const {
+  // Walk starts: the simplex nearest the cell centre among those whose bounding box overlaps
+  // the cell (first in id order on ties: simplices in increasing id, strict improvement), so
+  // that a hint-free walk crosses about half a cell. One pass over the simplices, the centroid
+  // computed once per simplex (the same sums, hence the same bits, as cell by cell).
+  const std::size_t cells = grid_.cells;
+  grid_.start.assign(cells, kNoId);
+  std::vector<double> best(cells, std::numeric_limits<double>::infinity());
+  int c_lo[D], c_hi[D];
+  for (std::size_t s = 0; s < num_simplices(); ++s) {
+    simplex_cells(s, c_lo, c_hi);
+    Vec<D> centroid = Vec<D>::zero();
+    for (int i = 0; i < kVerts; ++i) centroid += coords_[simplices_[kVerts * s + i]];
+    centroid *= 1.0 / kVerts;
+    int k[D];  // the cells of the box, axis 0 fastest (as for_box)
+    for (int a = 0; a < D; ++a) k[a] = c_lo[a];
+    for (;;) {
+      const std::size_t cell = cell_index(k);
+      Vec<D> centre{};
+      for (int a = 0; a < D; ++a) centre[a] = grid_.lo[a] + (k[a] + 0.5) * grid_.cell[a];
+      const Vec<D> d = centroid - centre;
+      if (dot(d, d) < best[cell]) best[cell] = dot(d, d), grid_.start[cell] = static_cast<Id>(s);
+      int a = 0;
+      while (a < D && ++k[a] > c_hi[a]) k[a] = c_lo[a], ++a;
+      if (a == D) break;
+    }
+  }
+}
+
+template <int D>
 void BackgroundMesh<D>::build_face_grid() const {
-  const std::size_t cells = grid_.start.size();
+  const std::size_t cells = grid_.cells;
   grid_.face_offsets.assign(cells + 1, 0);
   auto face_box = [&](std::size_t slot, int c_lo[D], int c_hi[D]) {
     const std::size_t s = slot / kVerts, i = slot % kVerts;

@@ -150,9 +150,17 @@ class BackgroundMesh {
   /// The grid's shape (the cell lists wait for ensure_grid_lists).
   void build_grid();
   void build_grid_lists() const;
+  /// The walk starts alone, without the lists (the same simplices as the lists would give).
+  void build_starts() const;
+  /// The cells [lo, hi] (per axis) overlapped by simplex s's bounding box.
+  void simplex_cells(std::size_t s, int lo[D], int hi[D]) const;
   /// Builds the cell lists once (thread-safe: queries may run concurrently).
   void ensure_grid_lists() const {
     std::call_once(*grid_once_, [this] { build_grid_lists(); });
+  }
+  /// Builds the walk starts once (a far hint needs only them: ~10x less memory than the lists).
+  void ensure_starts() const {
+    std::call_once(*starts_once_, [this] { build_starts(); });
   }
   /// Signed sub-volumes Vᵢ(p) (p replacing vertex i) divided by the simplex's volume.
   void barycentric(Id s, const Vec<D>& p, double b[kVerts]) const;
@@ -175,6 +183,7 @@ class BackgroundMesh {
   std::vector<SymMat<D>> logs_;  // log M per vertex, for kLogEuclidean only
   mutable Grid grid_;  // the cell lists are filled by ensure_grid_lists
   std::unique_ptr<std::once_flag> grid_once_ = std::make_unique<std::once_flag>();
+  std::unique_ptr<std::once_flag> starts_once_ = std::make_unique<std::once_flag>();
   int max_walk_steps_ = 0;
   double hint_reach_ = 0.0;
 };

@@ -118,7 +118,7 @@ Location<D> BackgroundMesh<D>::locate(const Vec<D>& p, Id hint, LocateStats* sta
   if (start == kNoId) {
     int c[D];
     cell_of(p, c);
-    ensure_grid_lists();
+    ensure_starts();
     start = grid_.start[cell_index(c)];
   }
   long steps = 0;

@@ -7,6 +7,7 @@
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "core/spd.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
@@ -29,7 +30,9 @@ std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
   if (metrics.size() != in.num_vertices())
     throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
                      std::to_string(in.num_vertices()) + " vertices");
-  std::vector<SymMat<D>> out(metrics.begin(), metrics.end());
+  std::vector<SymMat<D>> out;
+  reserve_huge(out, metrics.size());
+  out.assign(metrics.begin(), metrics.end());
   const double lo = std::isfinite(o.hmax) ? 1.0 / (o.hmax * o.hmax) : 0.0;
   const double hi = o.hmin > 0.0 ? 1.0 / (o.hmin * o.hmin) : std::numeric_limits<double>::max();
   std::size_t below_hmin = 0, above_hmax = 0, first_below = 0;

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "core/spd.hpp"
 #include "mesh/adjacency.hpp"
 
@@ -20,26 +21,30 @@ Id find_slot(const TriMesh& m, Id t, Id a, Id b) {
   return kNoId;
 }
 
-/// The vertices, in one go (as add_vertex one by one would set them).
+/// The vertices, in one go (as add_vertex one by one would set them). Each array is written
+/// once (no zero fill first) and reserved with room for as many again: splits then append
+/// without reallocating (copying) every array; the room is address space only until used.
 void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics,
                   std::span<const VertexCurve> curves) {
-  const std::size_t nv = mesh.num_vertices();
-  m.xy.resize(nv);
+  const std::size_t nv = mesh.num_vertices(), room = 2 * nv;
+  reserve_huge(m.xy, room);
+  reserve_huge(m.metric, room);
+  reserve_huge(m.vref, room);
+  reserve_huge(m.vtag, room);
+  reserve_huge(m.vcurve, room);
+  reserve_huge(m.vparam, room);
+  reserve_huge(m.vtri, room);
   m.metric.assign(metrics.begin(), metrics.begin() + static_cast<std::ptrdiff_t>(nv));
-  m.log_metric.resize(nv);
-  for (std::size_t v = 0; v < nv; ++v) m.log_metric[v] = log_spd(m.metric[v]);
-  m.vref.resize(nv);
-  m.vtag.resize(nv);
-  m.vcurve.resize(nv);
-  m.vparam.resize(nv);
+  reserve_huge(m.log_metric, room);
+  for (std::size_t v = 0; v < nv; ++v) m.log_metric.push_back(log_spd(m.metric[v]));
   m.vtri.assign(nv, kNoId);
   for (std::size_t v = 0; v < nv; ++v) {
-    m.xy[v] = Vec2{{mesh.coords[2 * v], mesh.coords[2 * v + 1]}};
-    m.vref[v] = mesh.vert_ref.empty() ? 0 : mesh.vert_ref[v];
-    m.vtag[v] = mesh.vert_tag.empty() ? std::uint8_t{kTagNone} : mesh.vert_tag[v];
-    m.vcurve[v] = curves[v].curve;
-    m.vparam[v] = curves[v].param;
-    if (curves[v].curve != kNoCurve) m.vtag[v] |= kTagRidge;
+    m.xy.push_back(Vec2{{mesh.coords[2 * v], mesh.coords[2 * v + 1]}});
+    m.vref.push_back(mesh.vert_ref.empty() ? 0 : mesh.vert_ref[v]);
+    const std::uint8_t tag = mesh.vert_tag.empty() ? std::uint8_t{kTagNone} : mesh.vert_tag[v];
+    m.vtag.push_back(curves[v].curve != kNoCurve ? static_cast<std::uint8_t>(tag | kTagRidge) : tag);
+    m.vcurve.push_back(curves[v].curve);
+    m.vparam.push_back(curves[v].param);
   }
 }
 
@@ -48,35 +53,40 @@ void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics
 void add_triangles(TriMesh& m, const Mesh& mesh, const Adjacency& adj) {
   if (!adj.nonmanifold_faces.empty())
     throw InputError("non-manifold edge at " + tri_name(adj.nonmanifold_faces[0] / 3));
-  const std::size_t nt = mesh.num_triangles();
-  m.tv.resize(3 * nt);
-  m.tadj.assign(3 * nt, kNoId);
-  m.tref.resize(nt);
+  const std::size_t nt = mesh.num_triangles(), room = 6 * nt;  // room for as many again
+  reserve_huge(m.tv, room);
+  reserve_huge(m.tadj, room);
+  reserve_huge(m.tref, room / 3);
+  reserve_huge(m.ecurve, room);
+  reserve_huge(m.eref, room);
+  reserve_huge(m.etag, room);
+  m.tv.assign(mesh.triangles.begin(), mesh.triangles.begin() + static_cast<std::ptrdiff_t>(3 * nt));
   m.ecurve.assign(3 * nt, kNoCurve);
   m.eref.assign(3 * nt, 0);
   m.etag.assign(3 * nt, kTagNone);
+  if (mesh.tri_ref.empty()) m.tref.assign(nt, 0);
+  else m.tref.assign(mesh.tri_ref.begin(), mesh.tri_ref.begin() + static_cast<std::ptrdiff_t>(nt));
   for (std::size_t t = 0; t < nt; ++t) {
     const Id* v = &mesh.triangles[3 * t];
     if (!(signed_area(m.xy[v[0]], m.xy[v[1]], m.xy[v[2]]) > 0.0))
       throw InputError(tri_name(t) + " is clockwise or degenerate");
-    for (int i = 0; i < 3; ++i) {
-      m.tv[3 * t + i] = v[i];
-      m.vtri[v[i]] = static_cast<Id>(t);
-    }
-    m.tref[t] = mesh.tri_ref.empty() ? 0 : mesh.tri_ref[t];
+    for (int i = 0; i < 3; ++i) m.vtri[v[i]] = static_cast<Id>(t);
   }
   constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};  // edge i runs next -> prev
   for (std::size_t t = 0; t < nt; ++t)
     for (int i = 0; i < 3; ++i) {
       const Id n = adj.elem2elem[3 * t + i];
-      if (n == kNoId) continue;
+      if (n == kNoId) {
+        m.tadj.push_back(kNoId);
+        continue;
+      }
       const Id a = m.tv[3 * t + kNext[i]], b = m.tv[3 * t + kPrev[i]];
       const Id* w = &m.tv[3 * static_cast<std::size_t>(n)];
       int j = 0;
       while (j < 3 && (w[j] == a || w[j] == b)) ++j;
       const bool same = j < 3 && ((w[kNext[j]] == b && w[kPrev[j]] == a) ||
                                   (w[kNext[j]] == a && w[kPrev[j]] == b));
-      m.tadj[3 * t + i] = same ? 3 * n + j : find_slot(m, n, a, b);
+      m.tadj.push_back(same ? 3 * n + j : find_slot(m, n, a, b));
     }
 }
 
@@ -115,6 +125,14 @@ Mesh to_mesh(const TriMesh& m, std::vector<SymMat2>* metrics) {
   out.dim = 2;
   std::vector<Id> new_id(m.vertex_capacity(), kNoId);
   if (metrics) metrics->clear();
+  // Exact sizes up front: no growth by copies, huge pages for the large arrays.
+  const std::size_t nv = m.num_live_vertices(), nt = m.num_live_triangles();
+  reserve_huge(out.coords, 2 * nv);
+  reserve_huge(out.vert_ref, nv);
+  reserve_huge(out.vert_tag, nv);
+  reserve_huge(out.triangles, 3 * nt);
+  reserve_huge(out.tri_ref, nt);
+  if (metrics) reserve_huge(*metrics, nv);
   for (std::size_t v = 0; v < m.vertex_capacity(); ++v) {
     if (!m.vert_alive(static_cast<Id>(v))) continue;
     new_id[v] = static_cast<Id>(out.num_vertices());
