@@ -88,7 +88,8 @@ inline int compare_edge_length_geometric(const SymMat<D>& ma, const SymMat<D>& m
 }
 
 /// Whether symmetric a and b commute (a b = b a, to 1e-12 relative): they then have the same
-/// eigenvectors (isotropic metrics, or all aligned with the axes).
+/// eigenvectors (isotropic metrics, or all aligned with the axes). SPD metrics commute exactly
+/// when their logarithms do.
 template <int D>
 inline bool commute(const SymMat<D>& a, const SymMat<D>& b) {
   bool diagonal = true;  // both diagonal (isotropic or axis-aligned): the common quick answer
@@ -107,25 +108,37 @@ inline bool commute(const SymMat<D>& a, const SymMat<D>& b) {
 }
 
 /// Edge length by Simpson's rule on the log-Euclidean interpolated field: (l_A + 4 l_M + l_B) / 6
-/// with l_M = ‖AB‖ in exp((log M_A + log M_B) / 2), given the end metrics and their logarithms.
-/// When the end metrics commute (no turning along AB: isotropic or axis-aligned fields) it is the
-/// closed form of edge_length_geometric instead, as before (Simpson's rule differs from it by 1e-4
-/// where the size doubles along AB). Where the metric turns along AB (a thin layer along a curved
-/// wall) it sees that the edge is short across the layer at its middle, which the end lengths
-/// miss: a chord of a circle is oblique to the layer at its ends and tangent to it at its middle.
+/// with l_M = ‖AB‖ in exp((log M_A + log M_B) / 2); the logarithms of the end metrics when the
+/// caller keeps them (else computed). When the end metrics commute (no turning along AB:
+/// isotropic or axis-aligned fields) it is the closed form of edge_length_geometric instead, as
+/// before (Simpson's rule differs from it by 1e-4 where the size doubles along AB). Where the
+/// metric turns along AB (a thin layer along a curved wall) it sees that the edge is short across
+/// the layer at its middle, which the end lengths miss: a chord of a circle is oblique to the
+/// layer at its ends and tangent to it at its middle.
 template <int D>
-inline double edge_length_simpson(const SymMat<D>& ma, const SymMat<D>& log_a,
-                                  const SymMat<D>& mb, const SymMat<D>& log_b, const Vec<D>& ab) {
+inline double edge_length_simpson(const SymMat<D>& ma, const SymMat<D>& mb, const Vec<D>& ab,
+                                  const SymMat<D>* log_a = nullptr,
+                                  const SymMat<D>* log_b = nullptr) {
+  if (commute(ma, mb)) return edge_length_geometric(ma, mb, ab);
   const double la = length(ma, ab), lb = length(mb, ab);
-  if (commute(log_a, log_b))
-    return la == lb ? la : std::sqrt(la * lb) * detail::sinhc(0.5 * std::log(la / lb));
-  const SymEigen<D> e = eigen(0.5 * (log_a + log_b));  // l_M² = Σ exp(s_i) (v_i · ab)²
-  double lm2 = 0.0;
+  const SymEigen<D> e = eigen(0.5 * ((log_a ? *log_a : log_spd(ma)) + (log_b ? *log_b : log_spd(mb))));
+  double lm2 = 0.0;  // l_M² = Σ exp(s_i) (v_i · ab)²
   for (int i = 0; i < D; ++i) {
     const double c = dot(e.vectors.column(i), ab);
     lm2 += std::exp(e.values[i]) * c * c;
   }
   return (la + 4.0 * std::sqrt(lm2) + lb) / 6.0;
+}
+
+/// The sign of edge_length_simpson(ma, mb, ab, ...) − limit (0 only when equal); for commuting
+/// metrics the logarithm only when needed (compare_edge_length_geometric).
+template <int D>
+inline int compare_edge_length_simpson(const SymMat<D>& ma, const SymMat<D>& mb, const Vec<D>& ab,
+                                       double limit, const SymMat<D>* log_a = nullptr,
+                                       const SymMat<D>* log_b = nullptr) {
+  if (commute(ma, mb)) return compare_edge_length_geometric(ma, mb, ab, limit);
+  const double l = edge_length_simpson(ma, mb, ab, log_a, log_b);
+  return l > limit ? 1 : (l < limit ? -1 : 0);
 }
 
 /// Edge length by `points`-point Gauss–Legendre quadrature (1..8) of the field interpolated

@@ -276,22 +276,26 @@ bool lengthen(Remesh3dContext& ctx, Id v, Id other, MoveCache& cache, const Neig
   if (!(l > 0.0)) return false;
   Vec3 away = m.xyz[other] + (1.0 / l) * (m.xyz[v] - m.xyz[other]);
   if (!ctx.constrain(v, away)) return false;
-  const auto range = [&](const Vec3& p, const SymMat3& mp, const SymMat3& log_mp) {
+  const auto range = [&](const Vec3& p, const SymMat3& mp, const SymMat3* log_mp) {
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
     for (const Id x : around) {
-      const double lx = edge_length_simpson(mp, log_mp, m.metric[x], m.log_metric[x], m.xyz[x] - p);
+      const double lx =
+          edge_length_simpson(mp, m.metric[x], m.xyz[x] - p, log_mp, log_of(m.log_metric, x));
       lo = std::min(lo, lx), hi = std::max(hi, lx);
     }
     return std::pair{lo, hi};
   };
   const Vec3 from = m.xyz[v];
-  const auto [lo0, hi0] = range(from, m.metric[v], m.log_metric[v]);
+  const auto [lo0, hi0] = range(from, m.metric[v], log_of(m.log_metric, v));
   for (const Vec3& to : {target.p, away})
     for (const double f : {1.0, 0.5, 0.25}) {
       Vec3 p = from + f * (to - from);
       if (f != 1.0 && !ctx.constrain(v, p)) return false;
       const SymMat3 mp = ctx.metric_for(p, v);
-      const auto [lo, hi] = range(p, mp, log_spd(mp));
+      SymMat3 log_mp{};  // only when some length may need it
+      const bool turning = !m.log_metric.empty() || !is_diagonal(mp);
+      if (turning) log_mp = log_spd(mp);
+      const auto [lo, hi] = range(p, mp, turning ? &log_mp : nullptr);
       if (!(lo > lo0) || hi > std::max(hi0, kSwapMaxLength)) continue;
       if (move_vertex(m, v, p, mp, &cache, kLengthenFloor) == Outcome::kApplied) {
         ctx.inherit_hint(v);

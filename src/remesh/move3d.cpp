@@ -53,7 +53,7 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
       }
       m.xyz[v] = p;
     }
-    m.log_metric[v] = log_spd(metric);
+    sync_log(m.metric, m.log_metric, static_cast<std::size_t>(v));
     c.worst = worst;  // the ball's tets are the same, v moved
     if (m.vmoved.size() <= static_cast<std::size_t>(v)) m.vmoved.resize(m.vertex_capacity(), 0);
     m.vmoved[v] = m.clock;

@@ -7,6 +7,7 @@
 
 #include "metric/edge_length.hpp"
 #include "remesh/tri_mesh.hpp"
+#include "remesh/vertex_logs.hpp"
 
 namespace riemesh {
 
@@ -15,17 +16,15 @@ enum class Outcome { kApplied, kRejectedTopology, kRejectedGeometry, kRejectedQu
 /// Metric length of edge (a, b): Simpson's rule on the log-Euclidean interpolated field, or the
 /// UGAWG closed form (l_a − l_b)/ln(l_a/l_b) when the end metrics commute (edge_length_simpson).
 inline double edge_length(const TriMesh& m, Id a, Id b) {
-  return edge_length_simpson(m.metric[a], m.log_metric[a], m.metric[b], m.log_metric[b],
-                             m.xy[b] - m.xy[a]);
+  return edge_length_simpson(m.metric[a], m.metric[b], m.xy[b] - m.xy[a], log_of(m.log_metric, a),
+                             log_of(m.log_metric, b));
 }
 
 /// The sign of edge_length(m, a, b) − limit (0 only when equal); for commuting end metrics the
 /// logarithm only when needed (compare_edge_length_geometric).
 inline int compare_edge_length(const TriMesh& m, Id a, Id b, double limit) {
-  if (commute(m.log_metric[a], m.log_metric[b]))
-    return compare_edge_length_geometric(m.metric[a], m.metric[b], m.xy[b] - m.xy[a], limit);
-  const double l = edge_length(m, a, b);
-  return l > limit ? 1 : (l < limit ? -1 : 0);
+  return compare_edge_length_simpson(m.metric[a], m.metric[b], m.xy[b] - m.xy[a], limit,
+                                     log_of(m.log_metric, a), log_of(m.log_metric, b));
 }
 
 /// Mean-ratio quality 4√3 |K|_M / Σ l_M² of triangle (pa, pb, pc) in the metric `mm` (1 for the
@@ -42,16 +41,17 @@ inline double quality_in(const SymMat2& mm, const Vec2& pa, const Vec2& pb, cons
 /// log-Euclidean mean exp(Σ log M_i / 3). Where the metric turns across the triangle (a thin
 /// layer along a curved wall) the plain mean overweights the largest eigenvalues and sees the
 /// triangle as far better than it is (as tet_metric in 3D).
-inline SymMat2 tri_metric(const SymMat2& ma, const SymMat2& la, const SymMat2& mb,
-                          const SymMat2& lb, const SymMat2& mc, const SymMat2& lc) {
-  if (commute(la, lb) && commute(la, lc) && commute(lb, lc)) return (1.0 / 3.0) * (ma + mb + mc);
-  return exp_sym((1.0 / 3.0) * (la + lb + lc));
+inline SymMat2 tri_metric(const SymMat2& ma, const SymMat2* la, const SymMat2& mb,
+                          const SymMat2* lb, const SymMat2& mc, const SymMat2* lc) {
+  if (commute(ma, mb) && commute(ma, mc) && commute(mb, mc)) return (1.0 / 3.0) * (ma + mb + mc);
+  const auto log_or = [](const SymMat2& m, const SymMat2* l) { return l ? *l : log_spd(m); };
+  return exp_sym((1.0 / 3.0) * (log_or(ma, la) + log_or(mb, lb) + log_or(mc, lc)));
 }
 
 /// Quality of a triangle in tri_metric, used consistently for every decision.
 inline double tri_quality(const TriMesh& m, Id a, Id b, Id c) {
-  const SymMat2 mm = tri_metric(m.metric[a], m.log_metric[a], m.metric[b], m.log_metric[b],
-                                m.metric[c], m.log_metric[c]);
+  const SymMat2 mm = tri_metric(m.metric[a], log_of(m.log_metric, a), m.metric[b],
+                                log_of(m.log_metric, b), m.metric[c], log_of(m.log_metric, c));
   return quality_in(mm, m.xy[a], m.xy[b], m.xy[c]);
 }
 inline double tri_quality(const TriMesh& m, Id t) {

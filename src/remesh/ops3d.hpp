@@ -12,6 +12,7 @@
 #include "metric/edge_length.hpp"
 #include "remesh/ops2d.hpp"
 #include "remesh/tet_mesh.hpp"
+#include "remesh/vertex_logs.hpp"
 
 namespace riemesh {
 
@@ -21,18 +22,15 @@ inline constexpr double kMinRelativeVolume = 1e-9;
 /// The metric length of edge ab: Simpson's rule on the log-Euclidean interpolated field
 /// (edge_length_simpson), which sees the metric turning along the edge.
 inline double edge_length(const TetMesh& m, Id a, Id b) {
-  return edge_length_simpson(m.metric[a], m.log_metric[a], m.metric[b], m.log_metric[b],
-                             m.xyz[b] - m.xyz[a]);
+  return edge_length_simpson(m.metric[a], m.metric[b], m.xyz[b] - m.xyz[a],
+                             log_of(m.log_metric, a), log_of(m.log_metric, b));
 }
 
 /// The sign of edge_length(m, a, b) − limit (0 only when equal); for commuting end metrics
 /// the logarithm only when needed (compare_edge_length_geometric, as in 2D).
 inline int compare_edge_length(const TetMesh& m, Id a, Id b, double limit) {
-  const Vec3 ab = m.xyz[b] - m.xyz[a];
-  if (commute(m.log_metric[a], m.log_metric[b]))
-    return compare_edge_length_geometric(m.metric[a], m.metric[b], ab, limit);
-  const double l = edge_length(m, a, b);
-  return l > limit ? 1 : (l < limit ? -1 : 0);
+  return compare_edge_length_simpson(m.metric[a], m.metric[b], m.xyz[b] - m.xyz[a], limit,
+                                     log_of(m.log_metric, a), log_of(m.log_metric, b));
 }
 
 /// Whether edge_length(m, a, b) > limit.

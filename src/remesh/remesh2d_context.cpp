@@ -5,8 +5,8 @@
 
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
-#include "core/spd.hpp"
 #include "remesh/tri_mesh_io.hpp"
+#include "remesh/vertex_logs.hpp"
 
 namespace riemesh {
 namespace {
@@ -85,7 +85,7 @@ Remesh2dContext::Remesh2dContext(const Mesh& input, std::span<const SymMat2> met
   for (std::size_t v = 0; v < nv; ++v) {
     if (!mesh_.on_curve(static_cast<Id>(v))) continue;
     mesh_.metric[v] = metric_for(mesh_.xy[v], mesh_.vcurve[v], mesh_.vparam[v], static_cast<Id>(v));
-    mesh_.log_metric[v] = log_spd(mesh_.metric[v]);
+    sync_log(mesh_.metric, mesh_.log_metric, v);
   }
 }
 

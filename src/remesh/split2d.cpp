@@ -44,11 +44,10 @@ bool side_ok(const TriMesh& m, Id t, int i, const NewVertex& nv, double min_qual
   const double ref = std::abs(signed_area(pa, pb, pc)) * 1e-9;
   if (!(signed_area(pc, pa, nv.p) > ref && signed_area(pc, nv.p, pb) > ref)) return false;
   if (min_quality <= 0.0) return true;
-  const SymMat2 ln = log_spd(nv.metric);
-  const SymMat2 m1 =
-      tri_metric(m.metric[c], m.log_metric[c], m.metric[a], m.log_metric[a], nv.metric, ln);
-  const SymMat2 m2 =
-      tri_metric(m.metric[c], m.log_metric[c], nv.metric, ln, m.metric[b], m.log_metric[b]);
+  const SymMat2 m1 = tri_metric(m.metric[c], log_of(m.log_metric, c), m.metric[a],
+                                log_of(m.log_metric, a), nv.metric, nullptr);
+  const SymMat2 m2 = tri_metric(m.metric[c], log_of(m.log_metric, c), nv.metric, nullptr,
+                                m.metric[b], log_of(m.log_metric, b));
   return quality_in(m1, pc, pa, nv.p) >= min_quality && quality_in(m2, pc, nv.p, pb) >= min_quality;
 }
 

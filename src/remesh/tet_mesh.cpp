@@ -4,7 +4,7 @@
 #include <limits>
 #include <utility>
 
-#include "core/spd.hpp"
+#include "remesh/vertex_logs.hpp"
 #include "mesh/adjacency.hpp"
 
 namespace riemesh {
@@ -91,7 +91,7 @@ void TetMesh::set_face(std::size_t slot, std::uint8_t code, std::int32_t ref) {
 
 void TetMesh::set_metric(Id v, const SymMat3& m) {
   metric[v] = m;
-  log_metric[v] = log_spd(m);
+  sync_log(metric, log_metric, static_cast<std::size_t>(v));
 }
 
 Id TetMesh::add_vertex(const Vec3& p, const SymMat3& m) {
@@ -99,14 +99,15 @@ Id TetMesh::add_vertex(const Vec3& p, const SymMat3& m) {
   if (!free_verts.empty()) {
     v = free_verts.back();
     free_verts.pop_back();
-    xyz[v] = p, metric[v] = m, log_metric[v] = log_spd(m), vref[v] = 0, vtag[v] = kTagNone, vkind[v] = VertexKind::kInterior;
+    xyz[v] = p, metric[v] = m, vref[v] = 0, vtag[v] = kTagNone, vkind[v] = VertexKind::kInterior;
     vplane[2 * v] = vplane[2 * v + 1] = 0;
   } else {
     v = static_cast<Id>(xyz.size());
-    xyz.push_back(p), metric.push_back(m), log_metric.push_back(log_spd(m)), vref.push_back(0), vtag.push_back(kTagNone);
+    xyz.push_back(p), metric.push_back(m), vref.push_back(0), vtag.push_back(kTagNone);
     vkind.push_back(VertexKind::kInterior), vplane.insert(vplane.end(), {0, 0});
     vtet.push_back(kNoId);
   }
+  sync_log(metric, log_metric, static_cast<std::size_t>(v));
   vtet[v] = kNoId;
   return v;
 }

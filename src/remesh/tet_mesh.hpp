@@ -43,7 +43,8 @@ struct TetMesh {
   // Vertices.
   std::vector<Vec3> xyz;
   std::vector<SymMat3> metric;
-  std::vector<SymMat3> log_metric;  // log_spd(metric[v]), for the edge lengths (set_metric)
+  std::vector<SymMat3> log_metric;  // log_spd(metric[v]) once a metric is not diagonal, else
+                                    // empty (vertex_logs.hpp; set_metric keeps it in step)
   std::vector<std::int32_t> vref;
   std::vector<std::uint8_t> vtag;
   std::vector<VertexKind> vkind;

@@ -4,9 +4,9 @@
 #include <map>
 
 #include "core/error.hpp"
-#include "core/spd.hpp"
 #include "mesh/adjacency.hpp"
 #include "remesh/tet_mesh.hpp"
+#include "remesh/vertex_logs.hpp"
 
 namespace riemesh {
 namespace {
@@ -29,7 +29,7 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   // Room for 1/8 more vertices and tets than the input: at steady state (input close to the
   // output) the passes then never double the arrays' capacity, the largest part of the peak.
   const std::size_t rv = nv + nv / 8 + 16, rt = nt + nt / 8 + 16;
-  m.xyz.reserve(rv), m.metric.reserve(rv), m.log_metric.reserve(rv), m.vref.reserve(rv), m.vtag.reserve(rv);
+  m.xyz.reserve(rv), m.metric.reserve(rv), m.vref.reserve(rv), m.vtag.reserve(rv);
   m.vkind.reserve(rv), m.vplane.reserve(2 * rv), m.vtet.reserve(rv);
   m.tv.reserve(4 * rt), m.tadj.reserve(4 * rt), m.fbdy.reserve(4 * rt);
   m.tref.reserve(rt), m.mark.reserve(rt), m.quality.reserve(rt);
@@ -37,8 +37,7 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   for (std::size_t v = 0; v < nv; ++v)
     m.xyz[v] = Vec3{{mesh.coords[3 * v], mesh.coords[3 * v + 1], mesh.coords[3 * v + 2]}};
   m.metric.assign(metrics.begin(), metrics.end());
-  m.log_metric.resize(nv);
-  for (std::size_t v = 0; v < nv; ++v) m.log_metric[v] = log_spd(m.metric[v]);
+  sync_logs(m.metric, m.log_metric);
   m.vref.assign(mesh.vert_ref.begin(), mesh.vert_ref.end());
   m.vref.resize(nv, 0);
   m.vtag.assign(mesh.vert_tag.begin(), mesh.vert_tag.end());

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "core/spd.hpp"
+#include "remesh/vertex_logs.hpp"
 
 namespace riemesh {
 
@@ -16,7 +16,6 @@ Id TriMesh::add_vertex(const Vec2& p, const SymMat2& m) {
     v = static_cast<Id>(xy.size());
     xy.emplace_back();
     metric.emplace_back();
-    log_metric.emplace_back();
     vref.emplace_back();
     vtag.emplace_back();
     vcurve.emplace_back();
@@ -25,7 +24,7 @@ Id TriMesh::add_vertex(const Vec2& p, const SymMat2& m) {
   }
   xy[v] = p;
   metric[v] = m;
-  log_metric[v] = log_spd(m);
+  sync_log(metric, log_metric, static_cast<std::size_t>(v));
   vref[v] = 0;
   vtag[v] = kTagNone;
   vcurve[v] = kNoCurve;

@@ -23,7 +23,8 @@ struct TriMesh {
   // Vertices.
   std::vector<Vec2> xy;
   std::vector<SymMat2> metric;      // the metric the mesh must be unit in
-  std::vector<SymMat2> log_metric;  // log_spd(metric[v]) (edge lengths)
+  std::vector<SymMat2> log_metric;  // log_spd(metric[v]) once a metric is not diagonal, else
+                                    // empty (vertex_logs.hpp)
   std::vector<std::int32_t> vref;
   std::vector<std::uint8_t> vtag;   // kTagCorner / kTagRequired: never moves nor disappears;
                                     // kTagRidge: on a feature curve

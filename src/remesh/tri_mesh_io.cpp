@@ -4,8 +4,8 @@
 
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
-#include "core/spd.hpp"
 #include "mesh/adjacency.hpp"
+#include "remesh/vertex_logs.hpp"
 
 namespace riemesh {
 namespace {
@@ -35,8 +35,7 @@ void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics
   reserve_huge(m.vparam, room);
   reserve_huge(m.vtri, room);
   m.metric.assign(metrics.begin(), metrics.begin() + static_cast<std::ptrdiff_t>(nv));
-  reserve_huge(m.log_metric, room);
-  for (std::size_t v = 0; v < nv; ++v) m.log_metric.push_back(log_spd(m.metric[v]));
+  sync_logs(m.metric, m.log_metric);
   m.vtri.assign(nv, kNoId);
   for (std::size_t v = 0; v < nv; ++v) {
     m.xy.push_back(Vec2{{mesh.coords[2 * v], mesh.coords[2 * v + 1]}});

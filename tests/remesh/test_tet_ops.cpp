@@ -241,3 +241,20 @@ TEST(TetOps, EdgeLengthSeesTheMetricTurn) {
   m.set_metric(0, d1), m.set_metric(1, d2);
   EXPECT_EQ(edge_length(m, 0, 1), edge_length_geometric(d1, d2, m.xyz[1] - m.xyz[0]));
 }
+
+TEST(TetOps, VertexLogsOnlyOnceAMetricTurns) {
+  // Diagonal (isotropic or axis-aligned) metrics: no logarithms kept; the first metric that is
+  // not diagonal brings them for every vertex, and they follow every change after.
+  TetMesh m = bipyramid();
+  EXPECT_TRUE(m.log_metric.empty());
+  m.set_metric(2, SymMat3::diagonal(Vec3{{1.0, 4.0, 9.0}}));
+  EXPECT_TRUE(m.log_metric.empty());
+  const SymMat3 turned{{2.0, 0.5, 3.0, 0.0, 0.1, 4.0}};
+  m.set_metric(3, turned);
+  ASSERT_EQ(m.log_metric.size(), m.vertex_capacity());
+  for (std::size_t v = 0; v < m.vertex_capacity(); ++v)
+    for (int k = 0; k < 6; ++k) EXPECT_EQ(m.log_metric[v].c[k], log_spd(m.metric[v]).c[k]);
+  const Id x = m.add_vertex(Vec3{{0.2, 0.2, 0.0}}, SymMat3::identity());
+  ASSERT_EQ(m.log_metric.size(), m.vertex_capacity());
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(m.log_metric[x].c[k], 0.0);
+}
