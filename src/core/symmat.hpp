@@ -194,4 +194,13 @@ inline bool is_finite(const SymMat<D>& m) {
   return true;
 }
 
+/// Whether m has no off-diagonal term (isotropic or axis-aligned, for a metric).
+template <int D>
+constexpr bool is_diagonal(const SymMat<D>& m) {
+  for (int i = 0; i < D; ++i)
+    for (int j = i + 1; j < D; ++j)
+      if (m(i, j) != 0.0) return false;
+  return true;
+}
+
 }  // namespace riemesh

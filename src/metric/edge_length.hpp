@@ -92,10 +92,7 @@ inline int compare_edge_length_geometric(const SymMat<D>& ma, const SymMat<D>& m
 /// when their logarithms do.
 template <int D>
 inline bool commute(const SymMat<D>& a, const SymMat<D>& b) {
-  bool diagonal = true;  // both diagonal (isotropic or axis-aligned): the common quick answer
-  for (int i = 0; i < D; ++i)
-    for (int j = i + 1; j < D; ++j) diagonal = diagonal && a(i, j) == 0.0 && b(i, j) == 0.0;
-  if (diagonal) return true;
+  if (is_diagonal(a) && is_diagonal(b)) return true;  // the common quick answer
   double off = 0.0, na = 0.0, nb = 0.0;
   for (int i = 0; i < D; ++i)
     for (int j = i + 1; j < D; ++j) {

@@ -12,14 +12,6 @@
 
 namespace riemesh {
 
-template <int D>
-bool is_diagonal(const SymMat<D>& m) {
-  for (int i = 0; i < D; ++i)
-    for (int j = i + 1; j < D; ++j)
-      if (m(i, j) != 0.0) return false;
-  return true;
-}
-
 /// After metric[v] was set or appended: keeps `logs` in step (see above).
 template <int D>
 void sync_log(const std::vector<SymMat<D>>& metric, std::vector<SymMat<D>>& logs, std::size_t v) {
