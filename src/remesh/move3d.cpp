@@ -34,7 +34,13 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
   const double bar = std::min(c.worst, floor);
   const Vec3 old_p = m.xyz[v];
   const SymMat3 old_m = m.metric[v];
-  m.xyz[v] = p, m.metric[v] = metric;  // its logarithm (for lengths) only when kept
+  const bool had_logs = !m.log_metric.empty();
+  const SymMat3 old_log = had_logs ? m.log_metric[v] : SymMat3{};
+  m.xyz[v] = p, m.set_metric(v, metric);  // and its logarithm when kept (tet_metric needs it)
+  const auto restore_metric = [&] {  // the trial may have started the logs: v's is then old_m's
+    m.metric[v] = old_m;
+    if (!m.log_metric.empty()) m.log_metric[v] = had_logs ? old_log : log_spd(old_m);
+  };
   double worst = 1.0;
   std::size_t k = 0, worst_at = first;
   for (; k < ball.size(); ++k) {
@@ -48,12 +54,11 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
       m.xyz[v] = old_p;  // the boundary checks compare the old and new positions
       const bool ok = curved_boundary_ok(m, ball, v, kNoId, p);
       if (!ok) {
-        m.metric[v] = old_m;
+        restore_metric();
         return Outcome::kRejectedGeometry;
       }
       m.xyz[v] = p;
     }
-    sync_log(m.metric, m.log_metric, static_cast<std::size_t>(v));
     c.worst = worst;  // the ball's tets are the same, v moved
     if (m.vmoved.size() <= static_cast<std::size_t>(v)) m.vmoved.resize(m.vertex_capacity(), 0);
     m.vmoved[v] = m.clock;
@@ -67,7 +72,8 @@ Outcome move_vertex(TetMesh& m, Id v, const Vec3& p, const SymMat3& metric, Move
     const Id* tv = &m.tv[4 * ball[at(k)]];
     valid = above_volume_floor(m.xyz[tv[0]], m.xyz[tv[1]], m.xyz[tv[2]], m.xyz[tv[3]]);
   }
-  m.xyz[v] = old_p, m.metric[v] = old_m;
+  m.xyz[v] = old_p;
+  restore_metric();
   return valid ? Outcome::kRejectedQuality : Outcome::kRejectedGeometry;
 }
 

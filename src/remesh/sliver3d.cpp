@@ -103,7 +103,7 @@ double best_split_point(Remesh3dContext& ctx, std::span<const Id> shell, Id a, I
       const Vec3 &pa = m.xyz[v[kTetFace[i][0]]], &pb = m.xyz[v[kTetFace[i][1]]],
                  &pc = m.xyz[v[kTetFace[i][2]]];
       const Vec3 inward = pa - cross(pb - pa, pc - pa);  // x's side of the outward face
-      const SymMat3 mm = 0.25 * (m.metric[v[0]] + m.metric[v[1]] + m.metric[v[2]] + m.metric[v[3]]);
+      const SymMat3 mm = tet_metric(m, v[0], v[1], v[2], v[3]);
       const Vec3 apex = ideal_apex(mm, pa, pb, pc, inward);
       const double q = tet_quality(m, v.data());
       const double w = 1.0 / std::pow(std::max(q, 0.02), 4);
@@ -199,7 +199,7 @@ Outcome star_sliver(Remesh3dContext& ctx, Id t, double floor, Id* created) {
   Id v[4];
   std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
   const Vec3 g = 0.25 * (m.xyz[v[0]] + m.xyz[v[1]] + m.xyz[v[2]] + m.xyz[v[3]]);
-  const SymMat3 mm = 0.25 * (m.metric[v[0]] + m.metric[v[1]] + m.metric[v[2]] + m.metric[v[3]]);
+  const SymMat3 mm = tet_metric(m, v[0], v[1], v[2], v[3]);
   const Id x = m.add_vertex(g, mm);
   double best = floor;
   Vec3 best_p{};
@@ -228,7 +228,7 @@ Outcome star_sliver(Remesh3dContext& ctx, Id t, double floor, Id* created) {
     return Outcome::kRejectedQuality;
   }
   m.xyz[x] = best_p;
-  m.metric[x] = ctx.metric_for(best_p, v[0]);
+  m.set_metric(x, ctx.metric_for(best_p, v[0]));
   for (const NewTet& nt : best_tets)
     if (!(tet_quality(m, nt.v) > floor)) {
       m.kill_vertex(x);
@@ -261,7 +261,7 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
     const Id* tv = &m.tv[4 * t];
     const int i = tet_index(m, t, v);
     const Id a = tv[kTetFace[i][0]], b = tv[kTetFace[i][1]], c = tv[kTetFace[i][2]];
-    const SymMat3 mm = 0.25 * (m.metric[a] + m.metric[b] + m.metric[c] + m.metric[v]);
+    const SymMat3 mm = tet_metric(m, a, b, c, v);
     const Vec3 apex = ideal_apex(mm, m.xyz[a], m.xyz[b], m.xyz[c], p0);
     const double q = cached_quality(m, t);
     const double w = 1.0 / std::pow(std::max(q, 0.02), 4);

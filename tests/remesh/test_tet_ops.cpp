@@ -258,3 +258,50 @@ TEST(TetOps, VertexLogsOnlyOnceAMetricTurns) {
   ASSERT_EQ(m.log_metric.size(), m.vertex_capacity());
   for (int k = 0; k < 6; ++k) EXPECT_EQ(m.log_metric[x].c[k], 0.0);
 }
+
+TEST(TetOps, TetQualityInTheLogEuclideanMeanWhereTheMetricTurns) {
+  // Where the vertex metrics do not commute, a tet is measured in exp(Σ log M_i / 4): the plain
+  // mean would add up the turned stiff directions and rate the tet far better than it is.
+  TetMesh m = bipyramid();
+  const auto turned = [](double angle) {
+    Mat3 r = Mat3::identity();
+    r(0, 0) = std::cos(angle), r(0, 1) = -std::sin(angle);
+    r(1, 0) = std::sin(angle), r(1, 1) = std::cos(angle);
+    return compose(r, Vec3{{400.0, 1.0, 1.0}});
+  };
+  const Id* v = &m.tv[0];
+  const double angles[4] = {0.3, -0.3, 0.1, -0.1};
+  SymMat3 log_sum = SymMat3::zero(), sum = SymMat3::zero();
+  for (int i = 0; i < 4; ++i) {
+    m.set_metric(v[i], turned(angles[i]));
+    log_sum += log_spd(turned(angles[i])), sum += turned(angles[i]);
+  }
+  const Vec3 &p0 = m.xyz[v[0]], &p1 = m.xyz[v[1]], &p2 = m.xyz[v[2]], &p3 = m.xyz[v[3]];
+  const double log_euclidean = quality_in(exp_sym(0.25 * log_sum), p0, p1, p2, p3);
+  const double plain = quality_in(0.25 * sum, p0, p1, p2, p3);
+  EXPECT_NEAR(tet_quality(m, 0), log_euclidean, 1e-9 * log_euclidean);
+  EXPECT_GT(std::abs(plain - log_euclidean), 0.01);
+  // Axis-aligned metrics commute: the plain mean, exactly as before.
+  for (int i = 0; i < 4; ++i) m.set_metric(v[i], SymMat3::diagonal(Vec3{{1.0 + i, 4.0, 9.0 * i + 1}}));
+  SymMat3 diag_sum = SymMat3::zero();
+  for (int i = 0; i < 4; ++i) diag_sum += m.metric[v[i]];
+  EXPECT_EQ(tet_quality(m, 0), quality_in(0.25 * diag_sum, p0, p1, p2, p3));
+}
+
+TEST(TetOps, RefusedMoveKeepsTheVertexLog) {
+  // A trial move sets the vertex's metric and log (the ball is measured with them); a refusal
+  // puts both back, also when the trial's metric was the first that is not diagonal.
+  TetMesh m = bipyramid();
+  m.vkind[3] = VertexKind::kInterior;  // free to try (the test is about the metric, not the kind)
+  ASSERT_TRUE(m.log_metric.empty());
+  const SymMat3 turned{{2.0, 0.5, 3.0, 0.0, 0.1, 4.0}};
+  // Vertex 3 (the lower apex) to the other side of the base: inverts its tet, refused.
+  EXPECT_EQ(move_vertex(m, 3, Vec3{{0.3, 0.3, 0.4}}, turned), Outcome::kRejectedGeometry);
+  ASSERT_FALSE(m.log_metric.empty());  // the trial started the logs
+  EXPECT_EQ(m.metric[3], SymMat3::identity());
+  for (std::size_t x = 0; x < m.log_metric.size(); ++x)
+    for (int k = 0; k < 6; ++k) EXPECT_NEAR(m.log_metric[x].c[k], log_spd(m.metric[x]).c[k], 1e-15);
+  m.set_metric(0, turned);
+  EXPECT_EQ(move_vertex(m, 3, Vec3{{0.3, 0.3, 0.4}}, 2.0 * turned), Outcome::kRejectedGeometry);
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(m.log_metric[3].c[k], 0.0);
+}
