@@ -152,11 +152,11 @@ std::vector<double> metric_edge_lengths(const Mesh& mesh, const Adjacency& adj,
   for (std::size_t e = 0; e < out.size(); ++e) {
     const Id a = adj.edges[2 * e], b = adj.edges[2 * e + 1];
     if (mesh.dim == 2)
-      out[e] = edge_length_geometric(metric_at<2>(metric, a), metric_at<2>(metric, b),
-                                     point<2>(mesh, b) - point<2>(mesh, a));
+      out[e] = edge_length_simpson(metric_at<2>(metric, a), metric_at<2>(metric, b),
+                                   point<2>(mesh, b) - point<2>(mesh, a));
     else
-      out[e] = edge_length_geometric(metric_at<3>(metric, a), metric_at<3>(metric, b),
-                                     point<3>(mesh, b) - point<3>(mesh, a));
+      out[e] = edge_length_simpson(metric_at<3>(metric, a), metric_at<3>(metric, b),
+                                   point<3>(mesh, b) - point<3>(mesh, a));
   }
   return out;
 }

@@ -5,7 +5,9 @@
 //
 // Element metric: the log-Euclidean mean of the element's vertex metrics (BOOK.md §1, "the metric
 // at the element"); edge length: the closed form for geometric size variation along the edge,
-// (l_a − l_b) / ln(l_a / l_b) (the UGAWG convention, metric/edge_length.hpp).
+// (l_a − l_b) / ln(l_a / l_b) (the UGAWG convention, metric/edge_length.hpp), and where the end
+// metrics do not commute (the metric turns along the edge) Simpson's rule on the log-Euclidean
+// field, as the remeshers measure (edge_length_simpson).
 #include <cstddef>
 #include <span>
 #include <vector>

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "mesh/fixtures.hpp"
 #include "metric/mesh_quality.hpp"
+#include "metric/metric.hpp"
 
 using namespace riemesh;
 
@@ -122,4 +123,28 @@ TEST(MeshQuality, HistogramEdges) {
   EXPECT_DOUBLE_EQ(e[5], 1.0);
   EXPECT_DOUBLE_EQ(e[4] * e[6], 1.0);
   EXPECT_EQ(quality_histogram_edges().size(), 11u);
+}
+
+TEST(MeshQuality, EdgeLengthsWhereTheMetricTurns) {
+  // The ends of the x-edge (0,0)-(1,0) carry a stiff axis turned by ±0.4 rad: their metrics do
+  // not commute, and the edge is measured as the remeshers do, by Simpson's rule on the
+  // log-Euclidean field (its middle sees the stiff axis across the edge: shorter than its ends).
+  Mesh m = unit_square(1, 1);
+  const auto turned = [](double a) {
+    const double c = std::cos(a), s = std::sin(a);
+    return SymMat2{{c * c * 1.0 + s * s * 100.0, c * s * (1.0 - 100.0), s * s * 1.0 + c * c * 100.0}};
+  };
+  std::vector<double> f = constant_field(m, {1, 0, 1});
+  const SymMat2 m0 = turned(0.4), m1 = turned(-0.4);
+  for (int k = 0; k < 3; ++k) f[k] = m0.c[k], f[3 + k] = m1.c[k];  // vertices 0 and 1
+  const Adjacency adj = build_adjacency(m);
+  const std::vector<double> l = metric_edge_lengths(m, adj, f);
+  const Vec2 ab{{1.0, 0.0}};
+  const double ends = std::sqrt(quadratic(m0, ab));  // both ends alike, by symmetry
+  EXPECT_NEAR(ends, std::sqrt(std::cos(0.4) * std::cos(0.4) + 100 * std::sin(0.4) * std::sin(0.4)), 1e-12);
+  // Log-Euclidean middle: the logs R(±a) diag(0, ln 100) R(±a)ᵀ average to
+  // diag(sin²a ln 100, cos²a ln 100), so the x-edge is 10^(sin²a) long there.
+  const double mid = std::pow(10.0, std::sin(0.4) * std::sin(0.4));
+  EXPECT_NEAR(l[find_edge(adj, 0, 1)], (2 * ends + 4 * mid) / 6, 1e-9);
+  EXPECT_LT(l[find_edge(adj, 0, 1)], 0.8 * ends);
 }
