@@ -200,8 +200,9 @@ long collapse_sweep(Remesh3dContext& ctx, PassStats& st, std::vector<ShortEdge> 
   return done;
 }
 
-/// Edge swaps then face swaps around the tets worse than kSwapBelow (sliver removal).
-long swap_sweep(TetMesh& m, PassStats& st) {
+/// Edge swaps then face swaps around the tets worse than kSwapBelow (sliver removal), except
+/// those on which they failed with nothing changed since (memo).
+long swap_sweep(TetMesh& m, PassStats& st, const NeighbourTable& nbrs, FailureMemo& memo) {
   std::vector<Id> bad;
   for (std::size_t t = 0; t < m.tet_capacity(); ++t)
     if (m.tet_alive(static_cast<Id>(t)) && cached_quality(m, static_cast<Id>(t)) < kSwapBelow)
@@ -209,6 +210,10 @@ long swap_sweep(TetMesh& m, PassStats& st) {
   long done = 0;
   for (const Id t : bad) {
     if (!m.tet_alive(t) || cached_quality(m, t) >= kSwapBelow) continue;
+    if (memo.known_to_fail(m, t, nbrs)) {
+      ++st.rejected;
+      continue;
+    }
     Id v[4];
     std::copy(&m.tv[4 * t], &m.tv[4 * t] + 4, v);
     bool applied = false;
@@ -222,8 +227,12 @@ long swap_sweep(TetMesh& m, PassStats& st) {
     for (int i = 0; i < 4 && !applied; ++i) {
       if (swap_face(m, 4 * t + i, 1e-3, kSwapMaxLength) == Outcome::kApplied) applied = true;
     }
-    if (applied) ++done;
-    else ++st.rejected;
+    if (applied) {
+      ++done;
+    } else {
+      ++st.rejected;
+      memo.failed(m, t);
+    }
   }
   return done;
 }
@@ -337,15 +346,6 @@ long short_edge_sweep(Remesh3dContext& ctx, PassStats& st, const NeighbourTable&
   return done;
 }
 
-/// Whether v's closed ball (its tets, their vertices' positions and metrics) is as it was when
-/// m's clock read `since`; false when that is not known (v's neighbours not in nbrs).
-bool ball_unchanged(const TetMesh& m, Id v, std::uint32_t since, const NeighbourTable& nbrs) {
-  if (!m.untouched_since(v, since) || !m.unmoved_since(v, since) || !nbrs.known(m, v)) return false;
-  for (const Id x : nbrs.of(v))
-    if (!m.unmoved_since(x, since)) return false;
-  return true;
-}
-
 /// Moves the vertices of the tets below kGoodBall toward their smoothing targets. `since` > 0:
 /// the clock at the start of the previous smoothing sweep; a vertex whose closed ball has not
 /// changed since was refused then (its move depends on nothing else: the ball, the background
@@ -426,7 +426,7 @@ double longest_edge(const Mesh& mesh, std::span<const SymMat3> field) {
 
 /// One pass: splits and collapses, swaps and smoothing, clean-up, sliver removal.
 void run_pass(Remesh3dContext& ctx, const Adapt3dOptions& options, EdgeLists& lists,
-              NeighbourTable& nbrs, PassStats& st) {
+              NeighbourTable& nbrs, SweepMemos& memos, PassStats& st) {
   TetMesh& m = ctx.mesh();
   if (options.insert) {
     st.splits = split_sweeps(ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0, lists);
@@ -434,20 +434,20 @@ void run_pass(Remesh3dContext& ctx, const Adapt3dOptions& options, EdgeLists& li
   }
   std::uint32_t smoothed = 0;  // the clock at the start of the last smoothing sweep
   for (int k = 0; k < 2; ++k) {
-    if (options.swap) st.swaps += swap_sweep(m, st);
+    if (options.swap) st.swaps += swap_sweep(m, st, nbrs, memos.swaps);
     if (options.move) st.moves += smooth_sweep(ctx, st, nbrs, smoothed, smoothed);
   }
   // Clean-up: very short edges, then the worst tets (twice, with swaps in between).
   if (options.insert) st.collapses += short_edge_sweep(ctx, st, nbrs);
   for (int k = 0; k < 2; ++k) {
     if (options.insert) st.collapses += bad_tet_sweep(m, st, nbrs);
-    if (options.swap) st.swaps += swap_sweep(m, st);
+    if (options.swap) st.swaps += swap_sweep(m, st, nbrs, memos.swaps);
   }
   // Last: sliver removal around the tets still below the quality target.
   SliverLimits sl;
   sl.swap = options.swap, sl.move = options.move, sl.collapse = options.insert;
   sl.split_fixed = options.keep_surface && options.insert && options.move;
-  sliver_sweeps(ctx, sl, st);
+  sliver_sweeps(ctx, sl, st, &nbrs, &memos.slivers);
   // Again: the sliver optimiser's moves do not look at lengths.
   if (options.insert) st.collapses += short_edge_sweep(ctx, st, nbrs);
 }
@@ -458,6 +458,7 @@ struct PassLoop {
   const Adapt3dOptions& options;
   EdgeLists& lists;
   NeighbourTable& nbrs;
+  SweepMemos& memos;
   Adapt2dReport& report;
   const PassCallback& on_pass;
 
@@ -476,7 +477,7 @@ struct PassLoop {
       PassStats st;
       st.pass = static_cast<int>(report.passes.size()) + 1;
       st.stage = k, st.stages = n;
-      run_pass(ctx, options, lists, nbrs, st);
+      run_pass(ctx, options, lists, nbrs, memos, st);
       summarize(m, st, lists, options.insert ? &nbrs : nullptr);
       st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       report.passes.push_back(st);
@@ -553,7 +554,8 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   EdgeLists lists;  // the split and collapse candidates of the mesh as it stands
   NeighbourTable nbrs;  // the vertices' neighbours, for the collapses' length test
   NeighbourTable* const nbrs_wanted = options.insert ? &nbrs : nullptr;
-  PassLoop loop{*ctx, options, lists, nbrs, result.report, on_pass};
+  SweepMemos memos;    // the tets on which the swap and sliver sweeps failed
+  PassLoop loop{*ctx, options, lists, nbrs, memos, result.report, on_pass};
   const int n = stages;
   if (approach) {  // the staged approach: a few passes toward each intermediate field
     for (int k = 1; k < n; ++k) {

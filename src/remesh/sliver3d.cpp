@@ -285,8 +285,10 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
   return o;
 }
 
-long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& st) {
+long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& st,
+                   const NeighbourTable* nbrs, FailureMemo* memo) {
   TetMesh& m = ctx.mesh();
+  if (limits.split_fixed || !nbrs) memo = nullptr;
   std::vector<std::pair<double, Id>> bad;
   long total = 0;
   for (int sweep = 0; sweep < limits.sweeps; ++sweep) {
@@ -295,7 +297,7 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
       const Id t = static_cast<Id>(ti);
       if (!m.tet_alive(t)) continue;
       const double q = cached_quality(m, t);
-      if (q < limits.target) bad.emplace_back(q, t);
+      if (q < limits.target && !(memo && memo->known_to_fail(m, t, *nbrs))) bad.emplace_back(q, t);
     }
     std::sort(bad.begin(), bad.end());
     const double cap = std::max(100.0, limits.budget * static_cast<double>(m.num_live_tets()));
@@ -345,8 +347,12 @@ long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& 
             ++st.moves;
         }
       }
-      if (applied) ++done;
-      else ++st.rejected;
+      if (applied) {
+        ++done;
+      } else {
+        ++st.rejected;
+        if (memo) memo->failed(m, t);
+      }
     }
     total += done;
     if (done == 0) break;

@@ -2,6 +2,7 @@
 // Sliver removal for the 3D remesher (internal to remesh/): the final optimisation of every
 // pass, aimed at the tets below a quality target, with bounded sweeps.
 #include "remesh/adapt2d.hpp"
+#include "remesh/edges3d.hpp"
 #include "remesh/remesh3d_context.hpp"
 
 namespace riemesh {
@@ -48,6 +49,14 @@ Outcome star_sliver(Remesh3dContext& ctx, Id t, double floor, Id* created);
 /// whose vertices may move, star_sliver or else split_sliver (the new vertex then optimised,
 /// counted in st.splits). Repeated while something changed, at most limits.sweeps
 /// times. Returns the number of operations applied (swaps, moves and collapses added to st).
-long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& st);
+/// With nbrs and memo (and without split_fixed, whose cavities reach beyond the balls): the tets
+/// on which an attempt failed with their vertices' balls unchanged since are skipped (memo).
+long sliver_sweeps(Remesh3dContext& ctx, const SliverLimits& limits, PassStats& st,
+                   const NeighbourTable* nbrs = nullptr, FailureMemo* memo = nullptr);
+
+/// The failure memos of the 3D sweeps, kept by the driver across its passes.
+struct SweepMemos {
+  FailureMemo swaps, slivers;
+};
 
 }  // namespace riemesh

@@ -78,7 +78,11 @@ Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length, Id
   double old_worst = 1.0;
   for (const Id t : shell) old_worst = std::min(old_worst, cached_quality(m, t));
   // Best triangulation of the ring polygon: maximise the worst tet (dynamic programming), with
-  // no diagonal of the ring longer than max_length.
+  // no diagonal of the ring longer than max_length. A sub-polygon's triangulations at or below
+  // `floor` cannot be part of an accepted one, so their tets are not measured (the measure is
+  // the cost: an exponential per tet where the metric turns); the optimum above floor and its
+  // choice among equals are the same.
+  const double floor = std::max(0.0, old_worst + min_gain);
   bool ok[kMaxShell][kMaxShell];
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
@@ -87,7 +91,7 @@ Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length, Id
   for (int len = 1; len < n; ++len)
     for (int i = 0; i + len < n; ++i) {
       const int j = i + len;
-      r.q[i][j] = len == 1 ? 2.0 : -1.0;
+      r.q[i][j] = len == 1 ? 2.0 : floor;
       for (int k = i + 1; k < j; ++k) {
         if (!ok[i][k] || !ok[k][j]) continue;
         double q = std::min(r.q[i][k], r.q[k][j]);
@@ -99,8 +103,7 @@ Outcome swap_edge(TetMesh& m, Id a, Id b, double min_gain, double max_length, Id
       }
     }
   const double best = r.q[0][n - 1];
-  if (!(best > 0.0)) return Outcome::kRejectedGeometry;
-  if (best <= old_worst + min_gain) return Outcome::kRejectedQuality;
+  if (!(best > floor)) return floor > 0.0 ? Outcome::kRejectedQuality : Outcome::kRejectedGeometry;
   tets.clear();
   emit(r, p, a, b, m.tref[shell[0]], 0, n - 1, tets);
   if (!replace_cavity(m, shell, tets, {})) return Outcome::kRejectedTopology;
