@@ -66,11 +66,57 @@ double to_triangle(const Vec3& p, const Vec3 (&c)[3]) {
   return norm(p - closest_point_on_triangle(p, c[0], c[1], c[2]));
 }
 
-/// The checks of surface_hausdorff.hpp at kCheckMargin × hausd.
-bool keeps_input_close(const State& s, const std::vector<Tri3>& old_t,
-                       const std::vector<Tri3>& new_t) {
-  return riemesh::keeps_input_close(*s.geo, kCheckMargin * s.opt->hausd, old_t, new_t);
+/// Scratch of the A -> B check: the check points that the old triangles answer for and, for
+/// each, the new triangle (index in new_t) that takes it over.
+struct CoverScratch {
+  std::vector<TriangleProbe> probe;
+  std::vector<Id> pts;
+  std::vector<int> by;
+};
+
+/// The A -> B check (State::check_pts): every check point that the triangles `old_ids` answer
+/// for is within kCheckMargin × hausd of a triangle of new_t (the one that answered last tried
+/// first: consecutive points of a list are neighbours). The answers are kept in c for
+/// hand_over. A point the old triangles were close to but do not answer for has another
+/// triangle, unchanged, close to it: it is not tested.
+bool new_triangles_cover(const State& s, std::span<const Id> old_ids, const std::vector<Tri3>& new_t,
+                         CoverScratch& c) {
+  const double h = kCheckMargin * s.opt->hausd, h2 = h * h;
+  c.pts.clear();
+  c.by.clear();
+  c.probe.clear();
+  for (const Tri3& t : new_t) c.probe.emplace_back(t[0], t[1], t[2]);
+  const int nn = static_cast<int>(new_t.size());
+  int last = 0;
+  for (Id t : old_ids)
+    for (Id p = s.cover_head[us(t)]; p != kNoId; p = s.cover_next[us(p)]) {
+      const Vec3& x = s.check_pts[us(p)];
+      int k = last;
+      if (nn == 0 || !c.probe[us(k)].within(x, h, h2)) {
+        for (k = 0; k < nn; ++k)
+          if (k != last && c.probe[us(k)].within(x, h, h2)) break;
+        if (k == nn) return false;
+      }
+      last = k;
+      c.pts.push_back(p);
+      c.by.push_back(k);
+    }
+  return true;
 }
+
+/// After an applied operation: the points of the triangles old_ids go to the new triangles that
+/// new_triangles_cover found (new_ids[k]: the id of new_t[k] in s.tri, possibly just appended).
+void hand_over(State& s, std::span<const Id> old_ids, std::span<const Id> new_ids, const CoverScratch& c) {
+  s.cover_head.resize(s.num_triangles(), kNoId);
+  for (Id t : old_ids) s.cover_head[us(t)] = kNoId;
+  for (std::size_t k = c.pts.size(); k-- > 0;) {  // pushed in reverse: lists keep their order
+    const auto t = us(new_ids[us(c.by[k])]);
+    s.cover_next[us(c.pts[k])] = s.cover_head[t];
+    s.cover_head[t] = c.pts[k];
+  }
+}
+
+/// The B -> A check of surface_hausdorff.hpp at kCheckMargin × hausd.
 bool new_triangles_close(const State& s, const std::vector<Tri3>& new_t, Id hint) {
   return riemesh::new_triangles_close(*s.geo, kCheckMargin * s.opt->hausd, new_t, hint);
 }
@@ -166,6 +212,8 @@ std::size_t split_pass(State& s, double bad_quality) {
   std::sort(cand.begin(), cand.end());
   std::vector<char> done(s.num_triangles(), 0);
   std::size_t count = 0;
+  CoverScratch cover;
+  std::vector<Id> new_ids;
   for (const auto& [neg, e] : cand) {
     const int nt = topo.edge_count[us(e)];
     const Id* et = &topo.edge_tris[2 * us(e)];
@@ -177,11 +225,20 @@ std::size_t split_pass(State& s, double bad_quality) {
     // else the nearest point of the input itself; else no split.
     SurfaceProjection::Placed p;
     bool ok = false;
+    // The ids of the new triangles once applied (below): triangle t keeps the half with the
+    // first corner of its directed edge, the other half is appended.
+    new_ids.clear();
+    for (int k = 0; k < nt; ++k) {
+      const Id appended = static_cast<Id>(s.num_triangles()) + k;
+      const bool a_first = directed(s, et[k], a, b) >= 0;
+      new_ids.push_back(a_first ? appended : et[k]);  // a moved to the midpoint
+      new_ids.push_back(a_first ? et[k] : appended);  // b moved
+    }
     for (const bool smooth : {true, false}) {
       p = feat ? s.geo->on_feature(mid, s.line_hint[us(a)], smooth)
                : s.geo->on_surface(mid, s.surf_hint[us(a)], smooth);
       ok = true;
-      std::vector<Tri3> old_t, new_t;
+      std::vector<Tri3> new_t;
       for (int k = 0; k < nt && ok; ++k) {
         Vec3 c[3];
         corners(s, et[k], a, s.x[us(a)], c);
@@ -192,12 +249,11 @@ std::size_t split_pass(State& s, double bad_quality) {
         // The two halves of each triangle keep its orientation.
         ok = dot(tri_normal(c1[0], c1[1], c1[2]), n) > 0.5 &&
              dot(tri_normal(c2[0], c2[1], c2[2]), n) > 0.5;
-        old_t.push_back({c[0], c[1], c[2]});
         new_t.push_back({c1[0], c1[1], c1[2]});
         new_t.push_back({c2[0], c2[1], c2[2]});
       }
       ok = ok && new_triangles_close(s, new_t, s.surf_hint[us(a)]) &&
-           keeps_input_close(s, old_t, new_t);
+           new_triangles_cover(s, std::span<const Id>(et, us(nt)), new_t, cover);
       if (ok) break;
     }
     if (!ok) continue;
@@ -216,6 +272,7 @@ std::size_t split_pass(State& s, double bad_quality) {
       s.tri.insert(s.tri.end(), {m, qv, rv});
       s.tref.push_back(s.tref[us(t)]);
     }
+    hand_over(s, std::span<const Id>(et, us(nt)), new_ids, cover);
     if (feat) {
       const std::uint64_t key = edge_key(a, b);
       const std::int32_t ref = s.feature[key];
@@ -237,8 +294,9 @@ namespace {
 
 /// Scratch vectors of try_collapse, reused from edge to edge (thousands of tries per pass).
 struct CollapseScratch {
-  std::vector<Id> nv, nw, common;
-  std::vector<Tri3> old_t, new_t, gone_t;
+  std::vector<Id> nv, nw, common, new_ids;
+  std::vector<Tri3> new_t;
+  CoverScratch cover;
 };
 
 /// Tries to collapse v into w (see surface_adapt.hpp); applies it and returns true when allowed.
@@ -270,32 +328,26 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const double qfloor = std::min(0.3, qmin_old);
   const double hausd = kCheckMargin * s.opt->hausd;
   double gap = std::numeric_limits<double>::infinity();
-  std::vector<Tri3>&old_t = scratch.old_t, &new_t = scratch.new_t, &gone_t = scratch.gone_t;
-  old_t.clear();
+  std::vector<Tri3>& new_t = scratch.new_t;
+  std::vector<Id>& new_ids = scratch.new_ids;
   new_t.clear();
-  gone_t.clear();
+  new_ids.clear();
   for (Id t : bv) {
     bool has_w = false;
     for (int i = 0; i < 3; ++i) has_w |= s.tri[3 * us(t) + i] == w;
+    if (has_w) continue;  // removed
     Vec3 c[3], n[3];
     corners(s, t, v, s.x[us(v)], c);
-    if (has_w) {
-      gone_t.push_back({c[0], c[1], c[2]});
-      continue;
-    }
-    old_t.push_back({c[0], c[1], c[2]});
     corners(s, t, v, s.x[us(w)], n);
     new_t.push_back({n[0], n[1], n[2]});
+    new_ids.push_back(t);
     const Vec3 n_old = tri_normal(c[0], c[1], c[2]), n_new = tri_normal(n[0], n[1], n[2]);
     if (dot(n_old, n_new) < kCosTurn || quality(tri_metric(s, t, v, &s.m[us(w)]), n[0], n[1], n[2]) < qfloor)
       return false;
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
-  // The removed triangles last: old_t[i] and new_t[i] are then the same triangle before and
-  // after (keeps_input_close pairs them).
-  old_t.insert(old_t.end(), gone_t.begin(), gone_t.end());
   if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)]) ||
-      !keeps_input_close(s, old_t, new_t))
+      !new_triangles_cover(s, bv, new_t, scratch.cover))
     return false;
   // Apply.
   for (Id t : bv) {
@@ -318,6 +370,7 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
     s.feature.erase(key);
     s.feature_tag.erase(key);
   }
+  hand_over(s, bv, new_ids, scratch.cover);
   mark(bv, dirty);
   mark(bw, dirty);
   return true;
@@ -351,6 +404,7 @@ std::size_t swap_pass(State& s) {
   std::vector<char> dirty(s.num_triangles(), 0);
   std::size_t count = 0;
   const double hausd = kCheckMargin * s.opt->hausd;
+  CoverScratch cover;
   for (std::size_t e = 0; e < topo.adj.num_edges(); ++e) {
     if (topo.edge_count[e] != 2) continue;
     const Id a = topo.adj.edges[2 * e], b = topo.adj.edges[2 * e + 1];
@@ -385,8 +439,8 @@ std::size_t swap_pass(State& s) {
     Id hint = s.surf_hint[us(c)];
     if (!s.geo->within(mid_new, hausd, &hint)) continue;
     const std::vector<Tri3> new_t = {Tri3{pa, pd, pc}, Tri3{pd, pb, pc}};
-    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)]) ||
-        !keeps_input_close(s, {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}}, new_t))
+    const Id ids[2] = {t1, t2};  // before and after: t1 becomes a d c, t2 d b c
+    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)]) || !new_triangles_cover(s, ids, new_t, cover))
       continue;
     s.tri[3 * us(t1)] = a;
     s.tri[3 * us(t1) + 1] = d;
@@ -394,6 +448,7 @@ std::size_t swap_pass(State& s) {
     s.tri[3 * us(t2)] = d;
     s.tri[3 * us(t2) + 1] = b;
     s.tri[3 * us(t2) + 2] = c;
+    hand_over(s, ids, ids, cover);
     dirty[us(t1)] = dirty[us(t2)] = 1;
     ++count;
   }
@@ -405,7 +460,8 @@ std::size_t smooth_pass(State& s) {
   const Topology& topo = topology(s);  // moves change no triangle: stays valid
   std::size_t count = 0;
   std::vector<Id> nb;  // scratch reused from vertex to vertex
-  std::vector<Tri3> old_t, new_t;
+  std::vector<Tri3> new_t;
+  CoverScratch cover;
   // Quality of each triangle, computed when first needed and forgotten when a corner moves
   // (-1: unknown): every triangle is in three balls.
   std::vector<double> tq(s.num_triangles(), -1.0);
@@ -443,13 +499,11 @@ std::size_t smooth_pass(State& s) {
     const double q_old = q_ball;
     double q_new = 1.0;
     bool ok = true;
-    old_t.clear();
     new_t.clear();
     for (Id t : bv) {
       Vec3 c[3], n[3];
       corners(s, t, v, s.x[vi], c);
       corners(s, t, v, p.point, n);
-      old_t.push_back({c[0], c[1], c[2]});
       new_t.push_back({n[0], n[1], n[2]});
       q_new = std::min(q_new, quality(tri_metric(s, t, v, &p.metric), n[0], n[1], n[2]));
       if (dot(tri_normal(c[0], c[1], c[2]), tri_normal(n[0], n[1], n[2])) < kCosTurn) ok = false;
@@ -457,8 +511,9 @@ std::size_t smooth_pass(State& s) {
     }
     // A real gain only: marginal moves would oscillate from pass to pass, each paying the checks.
     if (!ok || !(q_new > 1.02 * q_old) || !new_triangles_close(s, new_t, p.hint) ||
-        !keeps_input_close(s, old_t, new_t))
+        !new_triangles_cover(s, bv, new_t, cover))
       continue;
+    hand_over(s, bv, bv, cover);  // same triangles, moved
     s.x[vi] = p.point;
     s.m[vi] = p.metric;
     for (Id t : bv) tq[us(t)] = -1.0;
@@ -473,9 +528,11 @@ void State::compact() {
   std::vector<Id> new_id(x.size(), kNoId);
   std::vector<Id> t2;
   std::vector<std::int32_t> r2;
+  std::vector<Id> h2;  // cover_head of the kept triangles (a dead one answers for no point)
   Id next = 0;
   for (std::size_t t = 0; t < num_triangles(); ++t) {
     if (tri[3 * t] == kNoId) continue;
+    if (!cover_head.empty()) h2.push_back(cover_head[t]);
     for (int i = 0; i < 3; ++i) {
       const Id v = tri[3 * t + i];
       if (new_id[us(v)] == kNoId) new_id[us(v)] = next++;
@@ -517,8 +574,21 @@ void State::compact() {
   line_hint.swap(lh2);
   tri.swap(t2);
   tref.swap(r2);
+  if (!cover_head.empty()) cover_head.swap(h2);
   feature.swap(f2);
   feature_tag.swap(ft2);
+}
+
+void State::init_cover(const SurfaceProjection& projection) {
+  std::vector<Id> owner;
+  projection.check_points_by_triangle(check_pts, &owner);
+  cover_head.assign(num_triangles(), kNoId);
+  cover_next.assign(check_pts.size(), kNoId);
+  for (std::size_t p = check_pts.size(); p-- > 0;) {  // lists in increasing point order
+    const auto t = us(owner[p]);
+    cover_next[p] = cover_head[t];
+    cover_head[t] = static_cast<Id>(p);
+  }
 }
 
 }  // namespace riemesh::surface_detail

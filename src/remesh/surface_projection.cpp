@@ -69,26 +69,48 @@ SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& fe
   build_grid();
 }
 
-void SurfaceProjection::build_grid() {
+void SurfaceProjection::check_points_by_triangle(std::vector<Vec3>& pts, std::vector<Id>* owner) const {
   // The lattice of order 4 on every input triangle (vertices, 3 points per edge, 3 interior
   // points), each point once: the points `riemesh distance` samples on the input by default, so
   // that the A -> B check of the operators (surface_ops.cpp) bounds exactly what it measures.
+  // Owner: an input triangle the point lies on (a vertex's first, an edge's first by id).
   constexpr int n = 4;
-  std::vector<Vec3> pts;
-  for (std::size_t v = 0; v < mesh_.num_vertices(); ++v)
-    if (!ball(adj_, static_cast<Id>(v)).empty()) pts.push_back(vertex_at(mesh_, static_cast<Id>(v)));
+  pts.clear();
+  if (owner) owner->clear();
+  for (std::size_t v = 0; v < mesh_.num_vertices(); ++v) {
+    const auto b = ball(adj_, static_cast<Id>(v));
+    if (b.empty()) continue;
+    pts.push_back(vertex_at(mesh_, static_cast<Id>(v)));
+    if (owner) owner->push_back(b[0]);
+  }
+  std::vector<Id> edge_owner;
+  if (owner) {
+    edge_owner.assign(adj_.num_edges(), kNoId);
+    for (std::size_t k = adj_.elem2edge.size(); k-- > 0;)
+      edge_owner[static_cast<std::size_t>(adj_.elem2edge[k])] = static_cast<Id>(k / 3);
+  }
   for (std::size_t e = 0; e < adj_.num_edges(); ++e) {
     const Vec3 a = vertex_at(mesh_, adj_.edges[2 * e]), b = vertex_at(mesh_, adj_.edges[2 * e + 1]);
-    for (int i = 1; i < n; ++i) pts.push_back(a + (static_cast<double>(i) / n) * (b - a));
+    for (int i = 1; i < n; ++i) {
+      pts.push_back(a + (static_cast<double>(i) / n) * (b - a));
+      if (owner) owner->push_back(edge_owner[e]);
+    }
   }
   for (std::size_t t = 0; t < mesh_.num_triangles(); ++t) {
     const Vec3 a = vertex_at(mesh_, mesh_.triangles[3 * t]);
     const Vec3 b = vertex_at(mesh_, mesh_.triangles[3 * t + 1]);
     const Vec3 c = vertex_at(mesh_, mesh_.triangles[3 * t + 2]);
     for (int i = 1; i < n; ++i)
-      for (int j = 1; i + j < n; ++j)
+      for (int j = 1; i + j < n; ++j) {
         pts.push_back(a + (static_cast<double>(i) / n) * (b - a) + (static_cast<double>(j) / n) * (c - a));
+        if (owner) owner->push_back(static_cast<Id>(t));
+      }
   }
+}
+
+void SurfaceProjection::build_grid() {
+  std::vector<Vec3> pts;
+  check_points_by_triangle(pts, nullptr);
   Vec3 lo = pts[0], hi = pts[0];
   for (const Vec3& p : pts)
     for (int c = 0; c < 3; ++c) {

@@ -61,6 +61,10 @@ class SurfaceProjection {
   /// [lo, hi], appended to `out` in a fixed order: the points an operator must keep within
   /// hausd of the output when they were within hausd before (surface_ops.cpp).
   void check_points(const Vec3& lo, const Vec3& hi, std::vector<Vec3>& out) const;
+  /// All the check points into `pts` (replaced) and, if `owner`, for each an input triangle it
+  /// lies on: the surface remesher starts from the input and follows which of its triangles
+  /// answers for each point (surface_ops.cpp).
+  void check_points_by_triangle(std::vector<Vec3>& pts, std::vector<Id>* owner) const;
 
   const Mesh& input() const { return mesh_; }
   const Adjacency& adjacency() const { return adj_; }
