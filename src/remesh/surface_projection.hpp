@@ -11,6 +11,7 @@
 // `riemesh distance` reports, and that mmgs does not bound; PEERS.md).
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "core/symmat.hpp"
@@ -85,13 +86,19 @@ class SurfaceProjection {
   std::vector<SymMat3> metric_;
   double max_lift_;
   // Uniform grid of the check points: cell (i, j, k) holds points
-  // grid_points_[grid_offsets_[c] .. grid_offsets_[c + 1]), c = (k ny + j) nx + i.
-  Vec3 grid_lo_{};
-  double cell_ = 1.0;
-  int nx_ = 1, ny_ = 1, nz_ = 1;
-  std::vector<Id> grid_offsets_;
-  std::vector<Vec3> grid_points_;
-  void build_grid();
+  // grid_points_[grid_offsets_[c] .. grid_offsets_[c + 1]), c = (k ny + j) nx + i. Built at the
+  // first check_points (thread-safe): the surface remesher follows its points otherwise
+  // (surface_ops.cpp) and never asks; the curved boundaries of the 3D remesher do.
+  struct Grid {
+    Vec3 lo{};
+    double cell = 1.0;
+    int nx = 1, ny = 1, nz = 1;
+    std::vector<Id> offsets;
+    std::vector<Vec3> points;
+  };
+  mutable Grid grid_;
+  mutable std::once_flag grid_once_;
+  void build_grid() const;
 };
 
 }  // namespace riemesh
