@@ -116,9 +116,12 @@ void hand_over(State& s, std::span<const Id> old_ids, std::span<const Id> new_id
   }
 }
 
-/// The B -> A check of surface_hausdorff.hpp at kCheckMargin × hausd.
-bool new_triangles_close(const State& s, const std::vector<Tri3>& new_t, Id hint) {
-  return riemesh::new_triangles_close(*s.geo, kCheckMargin * s.opt->hausd, new_t, hint);
+/// The B -> A check of surface_hausdorff.hpp at kCheckMargin × hausd. The lattice points of every
+/// triangle of the mesh passed it (or lie on the input, at the start): those of the edges of the
+/// old triangles old_t are not checked again.
+bool new_triangles_close(const State& s, const std::vector<Tri3>& new_t, Id hint,
+                         const std::vector<Tri3>& old_t) {
+  return riemesh::new_triangles_close(*s.geo, kCheckMargin * s.opt->hausd, new_t, hint, &old_t);
 }
 
 /// The metric of triangle t: the mean of its vertex metrics, vertex `moved` (if any) taking `mm`.
@@ -238,7 +241,7 @@ std::size_t split_pass(State& s, double bad_quality) {
       p = feat ? s.geo->on_feature(mid, s.line_hint[us(a)], smooth)
                : s.geo->on_surface(mid, s.surf_hint[us(a)], smooth);
       ok = true;
-      std::vector<Tri3> new_t;
+      std::vector<Tri3> old_t, new_t;
       for (int k = 0; k < nt && ok; ++k) {
         Vec3 c[3];
         corners(s, et[k], a, s.x[us(a)], c);
@@ -249,10 +252,11 @@ std::size_t split_pass(State& s, double bad_quality) {
         // The two halves of each triangle keep its orientation.
         ok = dot(tri_normal(c1[0], c1[1], c1[2]), n) > 0.5 &&
              dot(tri_normal(c2[0], c2[1], c2[2]), n) > 0.5;
+        old_t.push_back({c[0], c[1], c[2]});
         new_t.push_back({c1[0], c1[1], c1[2]});
         new_t.push_back({c2[0], c2[1], c2[2]});
       }
-      ok = ok && new_triangles_close(s, new_t, s.surf_hint[us(a)]) &&
+      ok = ok && new_triangles_close(s, new_t, s.surf_hint[us(a)], old_t) &&
            new_triangles_cover(s, std::span<const Id>(et, us(nt)), new_t, cover);
       if (ok) break;
     }
@@ -295,7 +299,7 @@ namespace {
 /// Scratch vectors of try_collapse, reused from edge to edge (thousands of tries per pass).
 struct CollapseScratch {
   std::vector<Id> nv, nw, common, new_ids;
-  std::vector<Tri3> new_t;
+  std::vector<Tri3> old_t, new_t;
   CoverScratch cover;
 };
 
@@ -328,16 +332,18 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const double qfloor = std::min(0.3, qmin_old);
   const double hausd = kCheckMargin * s.opt->hausd;
   double gap = std::numeric_limits<double>::infinity();
-  std::vector<Tri3>& new_t = scratch.new_t;
+  std::vector<Tri3>&old_t = scratch.old_t, &new_t = scratch.new_t;
   std::vector<Id>& new_ids = scratch.new_ids;
+  old_t.clear();
   new_t.clear();
   new_ids.clear();
   for (Id t : bv) {
     bool has_w = false;
     for (int i = 0; i < 3; ++i) has_w |= s.tri[3 * us(t) + i] == w;
-    if (has_w) continue;  // removed
     Vec3 c[3], n[3];
     corners(s, t, v, s.x[us(v)], c);
+    old_t.push_back({c[0], c[1], c[2]});
+    if (has_w) continue;  // removed
     corners(s, t, v, s.x[us(w)], n);
     new_t.push_back({n[0], n[1], n[2]});
     new_ids.push_back(t);
@@ -346,7 +352,7 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
       return false;
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
-  if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)]) ||
+  if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)], old_t) ||
       !new_triangles_cover(s, bv, new_t, scratch.cover))
     return false;
   // Apply.
@@ -440,7 +446,8 @@ std::size_t swap_pass(State& s) {
     if (!s.geo->within(mid_new, hausd, &hint)) continue;
     const std::vector<Tri3> new_t = {Tri3{pa, pd, pc}, Tri3{pd, pb, pc}};
     const Id ids[2] = {t1, t2};  // before and after: t1 becomes a d c, t2 d b c
-    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)]) || !new_triangles_cover(s, ids, new_t, cover))
+    const std::vector<Tri3> old_t = {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}};
+    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)], old_t) || !new_triangles_cover(s, ids, new_t, cover))
       continue;
     s.tri[3 * us(t1)] = a;
     s.tri[3 * us(t1) + 1] = d;
@@ -460,7 +467,7 @@ std::size_t smooth_pass(State& s) {
   const Topology& topo = topology(s);  // moves change no triangle: stays valid
   std::size_t count = 0;
   std::vector<Id> nb;  // scratch reused from vertex to vertex
-  std::vector<Tri3> new_t;
+  std::vector<Tri3> old_t, new_t;
   CoverScratch cover;
   // Quality of each triangle, computed when first needed and forgotten when a corner moves
   // (-1: unknown): every triangle is in three balls.
@@ -499,18 +506,20 @@ std::size_t smooth_pass(State& s) {
     const double q_old = q_ball;
     double q_new = 1.0;
     bool ok = true;
+    old_t.clear();
     new_t.clear();
     for (Id t : bv) {
       Vec3 c[3], n[3];
       corners(s, t, v, s.x[vi], c);
       corners(s, t, v, p.point, n);
+      old_t.push_back({c[0], c[1], c[2]});
       new_t.push_back({n[0], n[1], n[2]});
       q_new = std::min(q_new, quality(tri_metric(s, t, v, &p.metric), n[0], n[1], n[2]));
       if (dot(tri_normal(c[0], c[1], c[2]), tri_normal(n[0], n[1], n[2])) < kCosTurn) ok = false;
       if (!ok) break;
     }
     // A real gain only: marginal moves would oscillate from pass to pass, each paying the checks.
-    if (!ok || !(q_new > 1.02 * q_old) || !new_triangles_close(s, new_t, p.hint) ||
+    if (!ok || !(q_new > 1.02 * q_old) || !new_triangles_close(s, new_t, p.hint, old_t) ||
         !new_triangles_cover(s, bv, new_t, cover))
       continue;
     hand_over(s, bv, bv, cover);  // same triangles, moved
