@@ -74,6 +74,17 @@ struct CoverScratch {
   std::vector<int> by;
 };
 
+/// TriangleProbe::within without the exact distance: 1 within r, 0 farther, 2 unknown (in the
+/// band along an edge, or a degenerate triangle).
+int quick_within(const TriangleProbe& tp, const Vec3& p, double r) {
+  if (!tp.flat) return 2;
+  const Vec3 pa = p - tp.a;
+  if (std::abs(dot(pa, tp.n)) > r) return 0;
+  const double s0 = dot(pa, tp.inward[0]), s1 = dot(p - tp.b, tp.inward[1]), s2 = dot(p - tp.c, tp.inward[2]);
+  if (s0 < -r || s1 < -r || s2 < -r) return 0;
+  return s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0 ? 1 : 2;
+}
+
 /// The A -> B check (State::check_pts): every check point that the triangles `old_ids` answer
 /// for is within kCheckMargin × hausd of a triangle of new_t (the one that answered last tried
 /// first: consecutive points of a list are neighbours). The answers are kept in c for
@@ -91,12 +102,28 @@ bool new_triangles_cover(const State& s, std::span<const Id> old_ids, const std:
   for (Id t : old_ids)
     for (Id p = s.cover_head[us(t)]; p != kNoId; p = s.cover_next[us(p)]) {
       const Vec3& x = s.check_pts[us(p)];
-      int k = last;
-      if (nn == 0 || !c.probe[us(k)].within(x, h, h2)) {
-        for (k = 0; k < nn; ++k)
-          if (k != last && c.probe[us(k)].within(x, h, h2)) break;
-        if (k == nn) return false;
+      int k = -1;
+      if (nn > 0) {
+        // Cheap answers first (inside a triangle's prism near its plane), the exact distance of
+        // the edge bands only when no triangle says yes cheaply.
+        int maybe = 0;
+        const int a = quick_within(c.probe[us(last)], x, h);
+        if (a == 1) k = last;
+        maybe |= a == 2;
+        for (int j = 0; k < 0 && j < nn; ++j) {
+          if (j == last) continue;
+          const int b = quick_within(c.probe[us(j)], x, h);
+          if (b == 1) k = j;
+          maybe |= b == 2;
+        }
+        if (k < 0 && maybe) {
+          for (int j = 0; k < 0 && j < nn; ++j) {
+            const int jj = j == 0 ? last : (j == last ? 0 : j);
+            if (c.probe[us(jj)].within(x, h, h2)) k = jj;
+          }
+        }
       }
+      if (k < 0) return false;
       last = k;
       c.pts.push_back(p);
       c.by.push_back(k);
