@@ -66,24 +66,46 @@ double to_triangle(const Vec3& p, const Vec3 (&c)[3]) {
   return norm(p - closest_point_on_triangle(p, c[0], c[1], c[2]));
 }
 
+/// A new triangle prepared for the A -> B check: TriangleProbe's plane and edge lines with their
+/// offsets folded in (one dot product each: these tests run millions of times).
+struct CoverProbe {
+  Vec3 n{}, in[3]{};
+  double dn = 0.0, din[3]{};
+  Tri3 t{};
+  bool flat = false;
+
+  explicit CoverProbe(const Tri3& tri) : t(tri) {
+    const TriangleProbe tp(tri[0], tri[1], tri[2]);
+    flat = tp.flat;
+    n = tp.n;
+    dn = dot(n, tri[0]);
+    for (int e = 0; e < 3; ++e) {
+      in[e] = tp.inward[e];
+      din[e] = dot(in[e], tri[e]);  // edge e runs from corner e
+    }
+  }
+  /// Without the exact distance: 1 within r, 0 farther, 2 unknown (in the band along an edge,
+  /// or a degenerate triangle).
+  int quick(const Vec3& p, double r) const {
+    if (!flat) return 2;
+    if (std::abs(dot(p, n) - dn) > r) return 0;
+    const double s0 = dot(p, in[0]) - din[0], s1 = dot(p, in[1]) - din[1], s2 = dot(p, in[2]) - din[2];
+    if (s0 < -r || s1 < -r || s2 < -r) return 0;
+    return s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0 ? 1 : 2;
+  }
+  bool exact(const Vec3& p, double r2) const {
+    const Vec3 d = p - closest_point_on_triangle(p, t[0], t[1], t[2]);
+    return dot(d, d) <= r2;
+  }
+};
+
 /// Scratch of the A -> B check: the check points that the old triangles answer for and, for
 /// each, the new triangle (index in new_t) that takes it over.
 struct CoverScratch {
-  std::vector<TriangleProbe> probe;
+  std::vector<CoverProbe> probe;
   std::vector<Id> pts;
   std::vector<int> by;
 };
-
-/// TriangleProbe::within without the exact distance: 1 within r, 0 farther, 2 unknown (in the
-/// band along an edge, or a degenerate triangle).
-int quick_within(const TriangleProbe& tp, const Vec3& p, double r) {
-  if (!tp.flat) return 2;
-  const Vec3 pa = p - tp.a;
-  if (std::abs(dot(pa, tp.n)) > r) return 0;
-  const double s0 = dot(pa, tp.inward[0]), s1 = dot(p - tp.b, tp.inward[1]), s2 = dot(p - tp.c, tp.inward[2]);
-  if (s0 < -r || s1 < -r || s2 < -r) return 0;
-  return s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0 ? 1 : 2;
-}
 
 /// The A -> B check (State::check_pts): every check point that the triangles `old_ids` answer
 /// for is within kCheckMargin × hausd of a triangle of new_t (the one that answered last tried
@@ -96,7 +118,7 @@ bool new_triangles_cover(const State& s, std::span<const Id> old_ids, const std:
   c.pts.clear();
   c.by.clear();
   c.probe.clear();
-  for (const Tri3& t : new_t) c.probe.emplace_back(t[0], t[1], t[2]);
+  for (const Tri3& t : new_t) c.probe.emplace_back(t);
   const int nn = static_cast<int>(new_t.size());
   int last = 0;
   for (Id t : old_ids)
@@ -107,19 +129,19 @@ bool new_triangles_cover(const State& s, std::span<const Id> old_ids, const std:
         // Cheap answers first (inside a triangle's prism near its plane), the exact distance of
         // the edge bands only when no triangle says yes cheaply.
         int maybe = 0;
-        const int a = quick_within(c.probe[us(last)], x, h);
+        const int a = c.probe[us(last)].quick(x, h);
         if (a == 1) k = last;
         maybe |= a == 2;
         for (int j = 0; k < 0 && j < nn; ++j) {
           if (j == last) continue;
-          const int b = quick_within(c.probe[us(j)], x, h);
+          const int b = c.probe[us(j)].quick(x, h);
           if (b == 1) k = j;
           maybe |= b == 2;
         }
         if (k < 0 && maybe) {
           for (int j = 0; k < 0 && j < nn; ++j) {
             const int jj = j == 0 ? last : (j == last ? 0 : j);
-            if (c.probe[us(jj)].within(x, h, h2)) k = jj;
+            if (c.probe[us(jj)].exact(x, h2)) k = jj;
           }
         }
       }
