@@ -89,7 +89,8 @@ struct CoverProbe {
   int quick(const Vec3& p, double r) const {
     if (!flat) return 2;
     if (std::abs(dot(p, n) - dn) > r) return 0;
-    const double s0 = dot(p, in[0]) - din[0], s1 = dot(p, in[1]) - din[1], s2 = dot(p, in[2]) - din[2];
+    const double s0 = dot(p, in[0]) - din[0], s1 = dot(p, in[1]) - din[1],
+                 s2 = dot(p, in[2]) - din[2];
     if (s0 < -r || s1 < -r || s2 < -r) return 0;
     return s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0 ? 1 : 2;
   }
@@ -112,8 +113,8 @@ struct CoverScratch {
 /// first: consecutive points of a list are neighbours). The answers are kept in c for
 /// hand_over. A point the old triangles were close to but do not answer for has another
 /// triangle, unchanged, close to it: it is not tested.
-bool new_triangles_cover(const State& s, std::span<const Id> old_ids, const std::vector<Tri3>& new_t,
-                         CoverScratch& c) {
+bool new_triangles_cover(const State& s, std::span<const Id> old_ids,
+                         const std::vector<Tri3>& new_t, CoverScratch& c) {
   const double h = kCheckMargin * s.opt->hausd, h2 = h * h;
   c.pts.clear();
   c.by.clear();
@@ -155,7 +156,8 @@ bool new_triangles_cover(const State& s, std::span<const Id> old_ids, const std:
 
 /// After an applied operation: the points of the triangles old_ids go to the new triangles that
 /// new_triangles_cover found (new_ids[k]: the id of new_t[k] in s.tri, possibly just appended).
-void hand_over(State& s, std::span<const Id> old_ids, std::span<const Id> new_ids, const CoverScratch& c) {
+void hand_over(State& s, std::span<const Id> old_ids, std::span<const Id> new_ids,
+               const CoverScratch& c) {
   s.cover_head.resize(s.num_triangles(), kNoId);
   for (Id t : old_ids) s.cover_head[us(t)] = kNoId;
   for (std::size_t k = c.pts.size(); k-- > 0;) {  // pushed in reverse: lists keep their order
@@ -496,7 +498,8 @@ std::size_t swap_pass(State& s) {
     const std::vector<Tri3> new_t = {Tri3{pa, pd, pc}, Tri3{pd, pb, pc}};
     const Id ids[2] = {t1, t2};  // before and after: t1 becomes a d c, t2 d b c
     const std::vector<Tri3> old_t = {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}};
-    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)], old_t) || !new_triangles_cover(s, ids, new_t, cover))
+    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)], old_t) ||
+        !new_triangles_cover(s, ids, new_t, cover))
       continue;
     s.tri[3 * us(t1)] = a;
     s.tri[3 * us(t1) + 1] = d;

@@ -65,10 +65,12 @@ SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& fe
   for (std::size_t e = 0; e < adj_.num_edges(); ++e)
     if (features_.edge_feature[e])
       line_edges_.insert(line_edges_.end(), {adj_.edges[2 * e], adj_.edges[2 * e + 1]});
-  if (!line_edges_.empty()) line_tree_ = std::make_unique<TriangleTree>(line_mesh(mesh_, line_edges_));
+  if (!line_edges_.empty())
+    line_tree_ = std::make_unique<TriangleTree>(line_mesh(mesh_, line_edges_));
 }
 
-void SurfaceProjection::check_points_by_triangle(std::vector<Vec3>& pts, std::vector<Id>* owner) const {
+void SurfaceProjection::check_points_by_triangle(std::vector<Vec3>& pts,
+                                                 std::vector<Id>* owner) const {
   // The lattice of order 4 on every input triangle (vertices, 3 points per edge, 3 interior
   // points), each point once: the points `riemesh distance` samples on the input by default, so
   // that the A -> B check of the operators (surface_ops.cpp) bounds exactly what it measures.
@@ -149,8 +151,10 @@ void SurfaceProjection::check_points(const Vec3& lo, const Vec3& hi, std::vector
   int a[3], b[3];
   const int n[3] = {grid_.nx, grid_.ny, grid_.nz};
   for (int c = 0; c < 3; ++c) {
-    a[c] = std::clamp(static_cast<int>(std::floor((lo[c] - grid_.lo[c]) / grid_.cell)), 0, n[c] - 1);
-    b[c] = std::clamp(static_cast<int>(std::floor((hi[c] - grid_.lo[c]) / grid_.cell)), 0, n[c] - 1);
+    a[c] =
+        std::clamp(static_cast<int>(std::floor((lo[c] - grid_.lo[c]) / grid_.cell)), 0, n[c] - 1);
+    b[c] =
+        std::clamp(static_cast<int>(std::floor((hi[c] - grid_.lo[c]) / grid_.cell)), 0, n[c] - 1);
     if (hi[c] < grid_.lo[c] || lo[c] > grid_.lo[c] + n[c] * grid_.cell) return;
   }
   // The cells i = a[0] .. b[0] of a row (j, k) hold consecutive points: one range per row (most
