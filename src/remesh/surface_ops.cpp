@@ -215,14 +215,66 @@ double quality(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 Topology build_topology(const State& s) {
+  // What build_edge_adjacency gives (balls, edges sorted by (a, b), elem2edge; the passes never
+  // cross faces), built for triangles alone in fewer steps: the half-edges bucketed by their
+  // smaller vertex, each bucket sorted by the larger one then by half-edge (a few entries).
   Topology t;
-  t.adj = build_edge_adjacency(s.tri, 3, s.num_vertices());  // the passes never cross faces
-  t.edge_count.assign(t.adj.num_edges(), 0);
-  t.edge_tris.assign(2 * t.adj.num_edges(), kNoId);
-  for (std::size_t k = 0; k < t.adj.elem2edge.size(); ++k) {
-    const auto e = us(t.adj.elem2edge[k]);
-    if (t.edge_count[e] < 2) t.edge_tris[2 * e + t.edge_count[e]] = static_cast<Id>(k / 3);
-    ++t.edge_count[e];
+  Adjacency& adj = t.adj;
+  const std::size_t nv = s.num_vertices(), nt = s.num_triangles();
+  adj.verts_per_simplex = 3;
+  adj.num_vertices = nv;
+  adj.vert2elem_offsets.assign(nv + 1, 0);
+  for (Id v : s.tri) ++adj.vert2elem_offsets[us(v) + 1];
+  for (std::size_t v = 0; v < nv; ++v) adj.vert2elem_offsets[v + 1] += adj.vert2elem_offsets[v];
+  adj.vert2elem.resize(s.tri.size());
+  std::vector<Id> fill(adj.vert2elem_offsets.begin(), adj.vert2elem_offsets.end() - 1);
+  for (std::size_t k = 0; k < s.tri.size(); ++k)
+    adj.vert2elem[us(fill[us(s.tri[k])]++)] = static_cast<Id>(k / 3);
+  // Half-edge h = 3 t + j (local edge j = kTriEdge[j]) as (larger vertex << 32 | h), in the
+  // bucket of its smaller vertex.
+  std::vector<Id> start(nv + 1, 0);
+  for (std::size_t tr = 0; tr < nt; ++tr)
+    for (int j = 0; j < 3; ++j) {
+      const Id p = s.tri[3 * tr + kTriEdge[j][0]], q = s.tri[3 * tr + kTriEdge[j][1]];
+      if (p != q) ++start[us(std::min(p, q)) + 1];
+    }
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::uint64_t> half(us(start[nv]));
+  std::copy(start.begin(), start.end() - 1, fill.begin());
+  for (std::size_t tr = 0; tr < nt; ++tr)
+    for (int j = 0; j < 3; ++j) {
+      const Id p = s.tri[3 * tr + kTriEdge[j][0]], q = s.tri[3 * tr + kTriEdge[j][1]];
+      if (p == q) continue;
+      half[us(fill[us(std::min(p, q))]++)] =
+          (static_cast<std::uint64_t>(std::max(p, q)) << 32) | (3 * tr + static_cast<std::size_t>(j));
+    }
+  adj.elem2edge.assign(3 * nt, kNoId);
+  adj.edges.clear();
+  adj.edges.reserve(2 * (half.size() / 2 + 1));
+  t.edge_count.clear();
+  t.edge_tris.clear();
+  for (std::size_t a = 0; a < nv; ++a) {
+    std::uint64_t* const b = half.data() + start[a];
+    std::uint64_t* const e = half.data() + start[a + 1];
+    for (std::uint64_t* i = b + 1; i < e; ++i) {  // insertion sort: a handful of entries
+      const std::uint64_t x = *i;
+      std::uint64_t* j = i;
+      for (; j > b && x < *(j - 1); --j) *j = *(j - 1);
+      *j = x;
+    }
+    for (std::uint64_t* i = b; i < e; ++i) {
+      const auto other = static_cast<Id>(*i >> 32);
+      const auto h = static_cast<std::size_t>(*i & 0xffffffffu);
+      if (i == b || (*(i - 1) >> 32) != (*i >> 32)) {  // a new edge (a, other)
+        adj.edges.insert(adj.edges.end(), {static_cast<Id>(a), other});
+        t.edge_count.push_back(0);
+        t.edge_tris.insert(t.edge_tris.end(), {kNoId, kNoId});
+      }
+      const std::size_t edge = t.edge_count.size() - 1;
+      adj.elem2edge[h] = static_cast<Id>(edge);
+      if (t.edge_count[edge] < 2) t.edge_tris[2 * edge + us(t.edge_count[edge])] = static_cast<Id>(h / 3);
+      ++t.edge_count[edge];
+    }
   }
   return t;
 }
