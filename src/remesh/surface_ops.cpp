@@ -248,11 +248,7 @@ Topology build_topology(const State& s) {
       half[us(fill[us(std::min(p, q))]++)] =
           (static_cast<std::uint64_t>(std::max(p, q)) << 32) | (3 * tr + static_cast<std::size_t>(j));
     }
-  adj.elem2edge.assign(3 * nt, kNoId);
-  adj.edges.clear();
-  adj.edges.reserve(2 * (half.size() / 2 + 1));
-  t.edge_count.clear();
-  t.edge_tris.clear();
+  std::size_t ne = 0;
   for (std::size_t a = 0; a < nv; ++a) {
     std::uint64_t* const b = half.data() + start[a];
     std::uint64_t* const e = half.data() + start[a + 1];
@@ -262,20 +258,29 @@ Topology build_topology(const State& s) {
       for (; j > b && x < *(j - 1); --j) *j = *(j - 1);
       *j = x;
     }
-    for (std::uint64_t* i = b; i < e; ++i) {
-      const auto other = static_cast<Id>(*i >> 32);
-      const auto h = static_cast<std::size_t>(*i & 0xffffffffu);
-      if (i == b || (*(i - 1) >> 32) != (*i >> 32)) {  // a new edge (a, other)
-        adj.edges.insert(adj.edges.end(), {static_cast<Id>(a), other});
-        t.edge_count.push_back(0);
-        t.edge_tris.insert(t.edge_tris.end(), {kNoId, kNoId});
-      }
-      const std::size_t edge = t.edge_count.size() - 1;
-      adj.elem2edge[h] = static_cast<Id>(edge);
-      if (t.edge_count[edge] < 2) t.edge_tris[2 * edge + us(t.edge_count[edge])] = static_cast<Id>(h / 3);
-      ++t.edge_count[edge];
-    }
+    for (std::uint64_t* i = b; i < e; ++i) ne += i == b || (*(i - 1) >> 32) != (*i >> 32);
   }
+  adj.elem2edge.assign(3 * nt, kNoId);
+  adj.edges.resize(2 * ne);
+  t.edge_count.assign(ne, 0);
+  t.edge_tris.assign(2 * ne, kNoId);
+  std::size_t edge = 0;
+  for (std::size_t a = 0; a < nv; ++a)
+    for (std::size_t k = us(start[a]); k < us(start[a + 1]); ++k) {
+      const std::uint64_t x = half[k];
+      if (k > us(start[a]) && (half[k - 1] >> 32) == (x >> 32)) {
+        --edge;  // the same edge as the previous half-edge
+      } else {
+        adj.edges[2 * edge] = static_cast<Id>(a);
+        adj.edges[2 * edge + 1] = static_cast<Id>(x >> 32);
+      }
+      const auto h = static_cast<std::size_t>(x & 0xffffffffu);
+      adj.elem2edge[h] = static_cast<Id>(edge);
+      int& count = t.edge_count[edge];
+      if (count < 2) t.edge_tris[2 * edge + us(count)] = static_cast<Id>(h / 3);
+      ++count;
+      ++edge;
+    }
   return t;
 }
 
