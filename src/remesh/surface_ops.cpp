@@ -245,8 +245,8 @@ Topology build_topology(const State& s) {
     for (int j = 0; j < 3; ++j) {
       const Id p = s.tri[3 * tr + kTriEdge[j][0]], q = s.tri[3 * tr + kTriEdge[j][1]];
       if (p == q) continue;
-      half[us(fill[us(std::min(p, q))]++)] =
-          (static_cast<std::uint64_t>(std::max(p, q)) << 32) | (3 * tr + static_cast<std::size_t>(j));
+      half[us(fill[us(std::min(p, q))]++)] = (static_cast<std::uint64_t>(std::max(p, q)) << 32) |
+                                             (3 * tr + static_cast<std::size_t>(j));
     }
   std::size_t ne = 0;
   for (std::size_t a = 0; a < nv; ++a) {
@@ -264,22 +264,20 @@ Topology build_topology(const State& s) {
   adj.edges.resize(2 * ne);
   t.edge_count.assign(ne, 0);
   t.edge_tris.assign(2 * ne, kNoId);
-  std::size_t edge = 0;
+  std::size_t found = 0;  // edges so far: the current one is found - 1
   for (std::size_t a = 0; a < nv; ++a)
     for (std::size_t k = us(start[a]); k < us(start[a + 1]); ++k) {
       const std::uint64_t x = half[k];
-      if (k > us(start[a]) && (half[k - 1] >> 32) == (x >> 32)) {
-        --edge;  // the same edge as the previous half-edge
-      } else {
-        adj.edges[2 * edge] = static_cast<Id>(a);
-        adj.edges[2 * edge + 1] = static_cast<Id>(x >> 32);
+      if (k == us(start[a]) || (half[k - 1] >> 32) != (x >> 32)) {  // a new edge (a, x >> 32)
+        adj.edges[2 * found] = static_cast<Id>(a);
+        adj.edges[2 * found + 1] = static_cast<Id>(x >> 32);
+        ++found;
       }
-      const auto h = static_cast<std::size_t>(x & 0xffffffffu);
+      const std::size_t edge = found - 1, h = static_cast<std::size_t>(x & 0xffffffffu);
       adj.elem2edge[h] = static_cast<Id>(edge);
       int& count = t.edge_count[edge];
       if (count < 2) t.edge_tris[2 * edge + us(count)] = static_cast<Id>(h / 3);
       ++count;
-      ++edge;
     }
   return t;
 }
