@@ -162,6 +162,18 @@ int TriangleTree::build(int first, int count, std::vector<double>& centroid) {
 
 void TriangleTree::consider(const Vec3& p, Id t, Nearest& best) const {
   const TriangleProbe& tp = tri_[static_cast<std::size_t>(t)];
+  if (tp.flat && best.distance < kInf) {
+    // A lower bound first: the distance to the plane and to each edge's outer half-space. Far
+    // enough above the best so far (a margin far above the rounding of these dot products, so
+    // that not even a tie, which the lower id wins, is missed), the exact distance could not
+    // win: most triangles of a leaf are rejected so.
+    const Vec3 pa = p - tp.a, pb = p - tp.b, pc = p - tp.c;
+    const double lb = std::max({std::abs(dot(pa, tp.n)), -dot(pa, tp.inward[0]),
+                                -dot(pb, tp.inward[1]), -dot(pc, tp.inward[2])});
+    double scale = best.distance;
+    for (int c = 0; c < 3; ++c) scale += std::abs(pa[c]) + std::abs(pb[c]) + std::abs(pc[c]);
+    if (lb > best.distance + 1e-9 * scale) return;
+  }
   const Vec3 q = closest_point_on_triangle(p, tp.a, tp.b, tp.c);
   const double d = std::sqrt(dist2(p, q));
   if (d < best.distance || (d == best.distance && t < best.triangle)) {

@@ -131,6 +131,7 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
       },
       0.5 * options.hausd);
   State s = initial_state(input, geo);
+  s.init_cover(geo);  // the state's triangles are the input's (compact keeps their order)
   s.geo = &geo;
   s.opt = &options;
   SurfaceAdaptReport r;

@@ -43,6 +43,16 @@ struct State {
   Topology topo;
   bool topo_valid = false;
 
+  /// The input's check points (SurfaceProjection::check_points_by_triangle) and which current
+  /// triangle answers for each: one within kCheckMargin × hausd of it (at the start, the input
+  /// triangle it lies on). An operation must find a new triangle close enough for every point
+  /// its old triangles answer for, and hands them over: every check point then stays within
+  /// hausd of the mesh (the A -> B half of the Hausdorff distance), and an operation tests only
+  /// the points of its own triangles. Per triangle a list: cover_head[t], then cover_next.
+  std::vector<Vec3> check_pts;
+  std::vector<Id> cover_head;  // per triangle: its first check point, kNoId if none
+  std::vector<Id> cover_next;  // per check point: the next one of the same triangle
+
   const SurfaceProjection* geo = nullptr;
   const SurfaceAdaptOptions* opt = nullptr;
 
@@ -65,6 +75,8 @@ struct State {
   }
   /// Drops dead triangles and unused vertices (renumbering, order kept).
   void compact();
+  /// The check points and their triangles for a state whose triangles are the input's.
+  void init_cover(const SurfaceProjection& projection);
 };
 
 Topology build_topology(const State& s);

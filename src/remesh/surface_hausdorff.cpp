@@ -106,20 +106,23 @@ bool keeps_input_close(const SurfaceProjection& geo, double hausd, const std::ve
 }
 
 bool new_triangles_close(const SurfaceProjection& geo, double hausd, const std::vector<Tri3>& new_t,
-                         Id hint) {
+                         Id hint, const std::vector<Tri3>* old_t) {
   auto has_corner = [](const Tri3& t, const Vec3& p) { return t[0] == p || t[1] == p || t[2] == p; };
   for (std::size_t k = 0; k < new_t.size(); ++k) {
     const Tri3& t = new_t[k];
-    // The points of an edge shared with an earlier new triangle were checked with it (the same
-    // points up to rounding): edges t0 t1 (j = 0), t0 t2 (i = 0), t1 t2 (i + j = order).
+    // The points of an edge shared with an earlier new triangle were checked with it, those of
+    // an edge of an old triangle when it was made (the same points up to rounding): edges t0 t1
+    // (j = 0), t0 t2 (i = 0), t1 t2 (i + j = order).
     bool done[3] = {false, false, false};
-    for (std::size_t m = 0; m < k; ++m) {
-      const bool h0 = has_corner(new_t[m], t[0]), h1 = has_corner(new_t[m], t[1]),
-                 h2 = has_corner(new_t[m], t[2]);
+    auto mark_shared = [&](const Tri3& u) {
+      const bool h0 = has_corner(u, t[0]), h1 = has_corner(u, t[1]), h2 = has_corner(u, t[2]);
       done[0] = done[0] || (h0 && h1);
       done[1] = done[1] || (h0 && h2);
       done[2] = done[2] || (h1 && h2);
-    }
+    };
+    for (std::size_t m = 0; m < k; ++m) mark_shared(new_t[m]);
+    if (old_t)
+      for (const Tri3& u : *old_t) mark_shared(u);
     // Row by row, alternately forward and backward: each point next to the previous one, so
     // that the walk of SurfaceProjection::within from the last answer has few steps to make.
     for (int i = 0; i <= kProbeOrder; ++i)

@@ -22,8 +22,10 @@ bool keeps_input_close(const SurfaceProjection& geo, double hausd, const std::ve
                        const std::vector<Tri3>& new_t);
 
 /// The B -> A half: the points of the order-4 lattice of each new triangle (corners excluded)
-/// within hausd of the input polyhedron (`hint`: a nearby input triangle, or kNoId).
+/// within hausd of the input polyhedron (`hint`: a nearby input triangle, or kNoId). `old_t`
+/// (optional): the triangles replaced, when the caller knows that their lattice points passed
+/// this check (or lie on the input): the points of an edge of theirs are not checked again.
 bool new_triangles_close(const SurfaceProjection& geo, double hausd, const std::vector<Tri3>& new_t,
-                         Id hint);
+                         Id hint, const std::vector<Tri3>* old_t = nullptr);
 
 }  // namespace riemesh

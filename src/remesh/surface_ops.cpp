@@ -66,13 +66,113 @@ double to_triangle(const Vec3& p, const Vec3 (&c)[3]) {
   return norm(p - closest_point_on_triangle(p, c[0], c[1], c[2]));
 }
 
-/// The checks of surface_hausdorff.hpp at kCheckMargin × hausd.
-bool keeps_input_close(const State& s, const std::vector<Tri3>& old_t,
-                       const std::vector<Tri3>& new_t) {
-  return riemesh::keeps_input_close(*s.geo, kCheckMargin * s.opt->hausd, old_t, new_t);
+/// A new triangle prepared for the A -> B check: TriangleProbe's plane and edge lines with their
+/// offsets folded in (one dot product each: these tests run millions of times).
+struct CoverProbe {
+  Vec3 n{}, in[3]{};
+  double dn = 0.0, din[3]{};
+  Tri3 t{};
+  bool flat = false;
+
+  explicit CoverProbe(const Tri3& tri) : t(tri) {
+    const TriangleProbe tp(tri[0], tri[1], tri[2]);
+    flat = tp.flat;
+    n = tp.n;
+    dn = dot(n, tri[0]);
+    for (int e = 0; e < 3; ++e) {
+      in[e] = tp.inward[e];
+      din[e] = dot(in[e], tri[e]);  // edge e runs from corner e
+    }
+  }
+  /// Without the exact distance: 1 within r, 0 farther, 2 unknown (in the band along an edge,
+  /// or a degenerate triangle).
+  int quick(const Vec3& p, double r) const {
+    if (!flat) return 2;
+    if (std::abs(dot(p, n) - dn) > r) return 0;
+    const double s0 = dot(p, in[0]) - din[0], s1 = dot(p, in[1]) - din[1],
+                 s2 = dot(p, in[2]) - din[2];
+    if (s0 < -r || s1 < -r || s2 < -r) return 0;
+    return s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0 ? 1 : 2;
+  }
+  bool exact(const Vec3& p, double r2) const {
+    const Vec3 d = p - closest_point_on_triangle(p, t[0], t[1], t[2]);
+    return dot(d, d) <= r2;
+  }
+};
+
+/// Scratch of the A -> B check: the check points that the old triangles answer for and, for
+/// each, the new triangle (index in new_t) that takes it over.
+struct CoverScratch {
+  std::vector<CoverProbe> probe;
+  std::vector<Id> pts;
+  std::vector<int> by;
+};
+
+/// The A -> B check (State::check_pts): every check point that the triangles `old_ids` answer
+/// for is within kCheckMargin × hausd of a triangle of new_t (the one that answered last tried
+/// first: consecutive points of a list are neighbours). The answers are kept in c for
+/// hand_over. A point the old triangles were close to but do not answer for has another
+/// triangle, unchanged, close to it: it is not tested.
+bool new_triangles_cover(const State& s, std::span<const Id> old_ids,
+                         const std::vector<Tri3>& new_t, CoverScratch& c) {
+  const double h = kCheckMargin * s.opt->hausd, h2 = h * h;
+  c.pts.clear();
+  c.by.clear();
+  c.probe.clear();
+  for (const Tri3& t : new_t) c.probe.emplace_back(t);
+  const int nn = static_cast<int>(new_t.size());
+  int last = 0;
+  for (Id t : old_ids)
+    for (Id p = s.cover_head[us(t)]; p != kNoId; p = s.cover_next[us(p)]) {
+      const Vec3& x = s.check_pts[us(p)];
+      int k = -1;
+      if (nn > 0) {
+        // Cheap answers first (inside a triangle's prism near its plane), the exact distance of
+        // the edge bands only when no triangle says yes cheaply.
+        int maybe = 0;
+        const int a = c.probe[us(last)].quick(x, h);
+        if (a == 1) k = last;
+        maybe |= a == 2;
+        for (int j = 0; k < 0 && j < nn; ++j) {
+          if (j == last) continue;
+          const int b = c.probe[us(j)].quick(x, h);
+          if (b == 1) k = j;
+          maybe |= b == 2;
+        }
+        if (k < 0 && maybe) {
+          for (int j = 0; k < 0 && j < nn; ++j) {
+            const int jj = j == 0 ? last : (j == last ? 0 : j);
+            if (c.probe[us(jj)].exact(x, h2)) k = jj;
+          }
+        }
+      }
+      if (k < 0) return false;
+      last = k;
+      c.pts.push_back(p);
+      c.by.push_back(k);
+    }
+  return true;
 }
-bool new_triangles_close(const State& s, const std::vector<Tri3>& new_t, Id hint) {
-  return riemesh::new_triangles_close(*s.geo, kCheckMargin * s.opt->hausd, new_t, hint);
+
+/// After an applied operation: the points of the triangles old_ids go to the new triangles that
+/// new_triangles_cover found (new_ids[k]: the id of new_t[k] in s.tri, possibly just appended).
+void hand_over(State& s, std::span<const Id> old_ids, std::span<const Id> new_ids,
+               const CoverScratch& c) {
+  s.cover_head.resize(s.num_triangles(), kNoId);
+  for (Id t : old_ids) s.cover_head[us(t)] = kNoId;
+  for (std::size_t k = c.pts.size(); k-- > 0;) {  // pushed in reverse: lists keep their order
+    const auto t = us(new_ids[us(c.by[k])]);
+    s.cover_next[us(c.pts[k])] = s.cover_head[t];
+    s.cover_head[t] = c.pts[k];
+  }
+}
+
+/// The B -> A check of surface_hausdorff.hpp at kCheckMargin × hausd. The lattice points of every
+/// triangle of the mesh passed it (or lie on the input, at the start): those of the edges of the
+/// old triangles old_t are not checked again.
+bool new_triangles_close(const State& s, const std::vector<Tri3>& new_t, Id hint,
+                         const std::vector<Tri3>& old_t) {
+  return riemesh::new_triangles_close(*s.geo, kCheckMargin * s.opt->hausd, new_t, hint, &old_t);
 }
 
 /// The metric of triangle t: the mean of its vertex metrics, vertex `moved` (if any) taking `mm`.
@@ -115,15 +215,70 @@ double quality(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 Topology build_topology(const State& s) {
+  // What build_edge_adjacency gives (balls, edges sorted by (a, b), elem2edge; the passes never
+  // cross faces), built for triangles alone in fewer steps: the half-edges bucketed by their
+  // smaller vertex, each bucket sorted by the larger one then by half-edge (a few entries).
   Topology t;
-  t.adj = build_edge_adjacency(s.tri, 3, s.num_vertices());  // the passes never cross faces
-  t.edge_count.assign(t.adj.num_edges(), 0);
-  t.edge_tris.assign(2 * t.adj.num_edges(), kNoId);
-  for (std::size_t k = 0; k < t.adj.elem2edge.size(); ++k) {
-    const auto e = us(t.adj.elem2edge[k]);
-    if (t.edge_count[e] < 2) t.edge_tris[2 * e + t.edge_count[e]] = static_cast<Id>(k / 3);
-    ++t.edge_count[e];
+  Adjacency& adj = t.adj;
+  const std::size_t nv = s.num_vertices(), nt = s.num_triangles();
+  adj.verts_per_simplex = 3;
+  adj.num_vertices = nv;
+  adj.vert2elem_offsets.assign(nv + 1, 0);
+  for (Id v : s.tri) ++adj.vert2elem_offsets[us(v) + 1];
+  for (std::size_t v = 0; v < nv; ++v) adj.vert2elem_offsets[v + 1] += adj.vert2elem_offsets[v];
+  adj.vert2elem.resize(s.tri.size());
+  std::vector<Id> fill(adj.vert2elem_offsets.begin(), adj.vert2elem_offsets.end() - 1);
+  for (std::size_t k = 0; k < s.tri.size(); ++k)
+    adj.vert2elem[us(fill[us(s.tri[k])]++)] = static_cast<Id>(k / 3);
+  // Half-edge h = 3 t + j (local edge j = kTriEdge[j]) as (larger vertex << 32 | h), in the
+  // bucket of its smaller vertex.
+  std::vector<Id> start(nv + 1, 0);
+  for (std::size_t tr = 0; tr < nt; ++tr)
+    for (int j = 0; j < 3; ++j) {
+      const Id p = s.tri[3 * tr + kTriEdge[j][0]], q = s.tri[3 * tr + kTriEdge[j][1]];
+      if (p != q) ++start[us(std::min(p, q)) + 1];
+    }
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::uint64_t> half(us(start[nv]));
+  std::copy(start.begin(), start.end() - 1, fill.begin());
+  for (std::size_t tr = 0; tr < nt; ++tr)
+    for (int j = 0; j < 3; ++j) {
+      const Id p = s.tri[3 * tr + kTriEdge[j][0]], q = s.tri[3 * tr + kTriEdge[j][1]];
+      if (p == q) continue;
+      half[us(fill[us(std::min(p, q))]++)] = (static_cast<std::uint64_t>(std::max(p, q)) << 32) |
+                                             (3 * tr + static_cast<std::size_t>(j));
+    }
+  std::size_t ne = 0;
+  for (std::size_t a = 0; a < nv; ++a) {
+    std::uint64_t* const b = half.data() + start[a];
+    std::uint64_t* const e = half.data() + start[a + 1];
+    for (std::uint64_t* i = b + 1; i < e; ++i) {  // insertion sort: a handful of entries
+      const std::uint64_t x = *i;
+      std::uint64_t* j = i;
+      for (; j > b && x < *(j - 1); --j) *j = *(j - 1);
+      *j = x;
+    }
+    for (std::uint64_t* i = b; i < e; ++i) ne += i == b || (*(i - 1) >> 32) != (*i >> 32);
   }
+  adj.elem2edge.assign(3 * nt, kNoId);
+  adj.edges.resize(2 * ne);
+  t.edge_count.assign(ne, 0);
+  t.edge_tris.assign(2 * ne, kNoId);
+  std::size_t found = 0;  // edges so far: the current one is found - 1
+  for (std::size_t a = 0; a < nv; ++a)
+    for (std::size_t k = us(start[a]); k < us(start[a + 1]); ++k) {
+      const std::uint64_t x = half[k];
+      if (k == us(start[a]) || (half[k - 1] >> 32) != (x >> 32)) {  // a new edge (a, x >> 32)
+        adj.edges[2 * found] = static_cast<Id>(a);
+        adj.edges[2 * found + 1] = static_cast<Id>(x >> 32);
+        ++found;
+      }
+      const std::size_t edge = found - 1, h = static_cast<std::size_t>(x & 0xffffffffu);
+      adj.elem2edge[h] = static_cast<Id>(edge);
+      int& count = t.edge_count[edge];
+      if (count < 2) t.edge_tris[2 * edge + us(count)] = static_cast<Id>(h / 3);
+      ++count;
+    }
   return t;
 }
 
@@ -166,6 +321,8 @@ std::size_t split_pass(State& s, double bad_quality) {
   std::sort(cand.begin(), cand.end());
   std::vector<char> done(s.num_triangles(), 0);
   std::size_t count = 0;
+  CoverScratch cover;
+  std::vector<Id> new_ids;
   for (const auto& [neg, e] : cand) {
     const int nt = topo.edge_count[us(e)];
     const Id* et = &topo.edge_tris[2 * us(e)];
@@ -177,6 +334,15 @@ std::size_t split_pass(State& s, double bad_quality) {
     // else the nearest point of the input itself; else no split.
     SurfaceProjection::Placed p;
     bool ok = false;
+    // The ids of the new triangles once applied (below): triangle t keeps the half with the
+    // first corner of its directed edge, the other half is appended.
+    new_ids.clear();
+    for (int k = 0; k < nt; ++k) {
+      const Id appended = static_cast<Id>(s.num_triangles()) + k;
+      const bool a_first = directed(s, et[k], a, b) >= 0;
+      new_ids.push_back(a_first ? appended : et[k]);  // a moved to the midpoint
+      new_ids.push_back(a_first ? et[k] : appended);  // b moved
+    }
     for (const bool smooth : {true, false}) {
       p = feat ? s.geo->on_feature(mid, s.line_hint[us(a)], smooth)
                : s.geo->on_surface(mid, s.surf_hint[us(a)], smooth);
@@ -196,8 +362,8 @@ std::size_t split_pass(State& s, double bad_quality) {
         new_t.push_back({c1[0], c1[1], c1[2]});
         new_t.push_back({c2[0], c2[1], c2[2]});
       }
-      ok = ok && new_triangles_close(s, new_t, s.surf_hint[us(a)]) &&
-           keeps_input_close(s, old_t, new_t);
+      ok = ok && new_triangles_close(s, new_t, s.surf_hint[us(a)], old_t) &&
+           new_triangles_cover(s, std::span<const Id>(et, us(nt)), new_t, cover);
       if (ok) break;
     }
     if (!ok) continue;
@@ -216,6 +382,7 @@ std::size_t split_pass(State& s, double bad_quality) {
       s.tri.insert(s.tri.end(), {m, qv, rv});
       s.tref.push_back(s.tref[us(t)]);
     }
+    hand_over(s, std::span<const Id>(et, us(nt)), new_ids, cover);
     if (feat) {
       const std::uint64_t key = edge_key(a, b);
       const std::int32_t ref = s.feature[key];
@@ -237,8 +404,9 @@ namespace {
 
 /// Scratch vectors of try_collapse, reused from edge to edge (thousands of tries per pass).
 struct CollapseScratch {
-  std::vector<Id> nv, nw, common;
-  std::vector<Tri3> old_t, new_t, gone_t;
+  std::vector<Id> nv, nw, common, new_ids;
+  std::vector<Tri3> old_t, new_t;
+  CoverScratch cover;
 };
 
 /// Tries to collapse v into w (see surface_adapt.hpp); applies it and returns true when allowed.
@@ -270,32 +438,28 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
   const double qfloor = std::min(0.3, qmin_old);
   const double hausd = kCheckMargin * s.opt->hausd;
   double gap = std::numeric_limits<double>::infinity();
-  std::vector<Tri3>&old_t = scratch.old_t, &new_t = scratch.new_t, &gone_t = scratch.gone_t;
+  std::vector<Tri3>&old_t = scratch.old_t, &new_t = scratch.new_t;
+  std::vector<Id>& new_ids = scratch.new_ids;
   old_t.clear();
   new_t.clear();
-  gone_t.clear();
+  new_ids.clear();
   for (Id t : bv) {
     bool has_w = false;
     for (int i = 0; i < 3; ++i) has_w |= s.tri[3 * us(t) + i] == w;
     Vec3 c[3], n[3];
     corners(s, t, v, s.x[us(v)], c);
-    if (has_w) {
-      gone_t.push_back({c[0], c[1], c[2]});
-      continue;
-    }
     old_t.push_back({c[0], c[1], c[2]});
+    if (has_w) continue;  // removed
     corners(s, t, v, s.x[us(w)], n);
     new_t.push_back({n[0], n[1], n[2]});
+    new_ids.push_back(t);
     const Vec3 n_old = tri_normal(c[0], c[1], c[2]), n_new = tri_normal(n[0], n[1], n[2]);
     if (dot(n_old, n_new) < kCosTurn || quality(tri_metric(s, t, v, &s.m[us(w)]), n[0], n[1], n[2]) < qfloor)
       return false;
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
-  // The removed triangles last: old_t[i] and new_t[i] are then the same triangle before and
-  // after (keeps_input_close pairs them).
-  old_t.insert(old_t.end(), gone_t.begin(), gone_t.end());
-  if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)]) ||
-      !keeps_input_close(s, old_t, new_t))
+  if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)], old_t) ||
+      !new_triangles_cover(s, bv, new_t, scratch.cover))
     return false;
   // Apply.
   for (Id t : bv) {
@@ -318,6 +482,7 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
     s.feature.erase(key);
     s.feature_tag.erase(key);
   }
+  hand_over(s, bv, new_ids, scratch.cover);
   mark(bv, dirty);
   mark(bw, dirty);
   return true;
@@ -351,6 +516,7 @@ std::size_t swap_pass(State& s) {
   std::vector<char> dirty(s.num_triangles(), 0);
   std::size_t count = 0;
   const double hausd = kCheckMargin * s.opt->hausd;
+  CoverScratch cover;
   for (std::size_t e = 0; e < topo.adj.num_edges(); ++e) {
     if (topo.edge_count[e] != 2) continue;
     const Id a = topo.adj.edges[2 * e], b = topo.adj.edges[2 * e + 1];
@@ -385,8 +551,10 @@ std::size_t swap_pass(State& s) {
     Id hint = s.surf_hint[us(c)];
     if (!s.geo->within(mid_new, hausd, &hint)) continue;
     const std::vector<Tri3> new_t = {Tri3{pa, pd, pc}, Tri3{pd, pb, pc}};
-    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)]) ||
-        !keeps_input_close(s, {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}}, new_t))
+    const Id ids[2] = {t1, t2};  // before and after: t1 becomes a d c, t2 d b c
+    const std::vector<Tri3> old_t = {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}};
+    if (!new_triangles_close(s, new_t, s.surf_hint[us(c)], old_t) ||
+        !new_triangles_cover(s, ids, new_t, cover))
       continue;
     s.tri[3 * us(t1)] = a;
     s.tri[3 * us(t1) + 1] = d;
@@ -394,6 +562,7 @@ std::size_t swap_pass(State& s) {
     s.tri[3 * us(t2)] = d;
     s.tri[3 * us(t2) + 1] = b;
     s.tri[3 * us(t2) + 2] = c;
+    hand_over(s, ids, ids, cover);
     dirty[us(t1)] = dirty[us(t2)] = 1;
     ++count;
   }
@@ -406,6 +575,7 @@ std::size_t smooth_pass(State& s) {
   std::size_t count = 0;
   std::vector<Id> nb;  // scratch reused from vertex to vertex
   std::vector<Tri3> old_t, new_t;
+  CoverScratch cover;
   // Quality of each triangle, computed when first needed and forgotten when a corner moves
   // (-1: unknown): every triangle is in three balls.
   std::vector<double> tq(s.num_triangles(), -1.0);
@@ -456,9 +626,10 @@ std::size_t smooth_pass(State& s) {
       if (!ok) break;
     }
     // A real gain only: marginal moves would oscillate from pass to pass, each paying the checks.
-    if (!ok || !(q_new > 1.02 * q_old) || !new_triangles_close(s, new_t, p.hint) ||
-        !keeps_input_close(s, old_t, new_t))
+    if (!ok || !(q_new > 1.02 * q_old) || !new_triangles_close(s, new_t, p.hint, old_t) ||
+        !new_triangles_cover(s, bv, new_t, cover))
       continue;
+    hand_over(s, bv, bv, cover);  // same triangles, moved
     s.x[vi] = p.point;
     s.m[vi] = p.metric;
     for (Id t : bv) tq[us(t)] = -1.0;
@@ -473,9 +644,11 @@ void State::compact() {
   std::vector<Id> new_id(x.size(), kNoId);
   std::vector<Id> t2;
   std::vector<std::int32_t> r2;
+  std::vector<Id> h2;  // cover_head of the kept triangles (a dead one answers for no point)
   Id next = 0;
   for (std::size_t t = 0; t < num_triangles(); ++t) {
     if (tri[3 * t] == kNoId) continue;
+    if (!cover_head.empty()) h2.push_back(cover_head[t]);
     for (int i = 0; i < 3; ++i) {
       const Id v = tri[3 * t + i];
       if (new_id[us(v)] == kNoId) new_id[us(v)] = next++;
@@ -517,8 +690,21 @@ void State::compact() {
   line_hint.swap(lh2);
   tri.swap(t2);
   tref.swap(r2);
+  if (!cover_head.empty()) cover_head.swap(h2);
   feature.swap(f2);
   feature_tag.swap(ft2);
+}
+
+void State::init_cover(const SurfaceProjection& projection) {
+  std::vector<Id> owner;
+  projection.check_points_by_triangle(check_pts, &owner);
+  cover_head.assign(num_triangles(), kNoId);
+  cover_next.assign(check_pts.size(), kNoId);
+  for (std::size_t p = check_pts.size(); p-- > 0;) {  // lists in increasing point order
+    const auto t = us(owner[p]);
+    cover_next[p] = cover_head[t];
+    cover_head[t] = static_cast<Id>(p);
+  }
 }
 
 }  // namespace riemesh::surface_detail

@@ -65,30 +65,53 @@ SurfaceProjection::SurfaceProjection(const Mesh& input, const FeatureOptions& fe
   for (std::size_t e = 0; e < adj_.num_edges(); ++e)
     if (features_.edge_feature[e])
       line_edges_.insert(line_edges_.end(), {adj_.edges[2 * e], adj_.edges[2 * e + 1]});
-  if (!line_edges_.empty()) line_tree_ = std::make_unique<TriangleTree>(line_mesh(mesh_, line_edges_));
-  build_grid();
+  if (!line_edges_.empty())
+    line_tree_ = std::make_unique<TriangleTree>(line_mesh(mesh_, line_edges_));
 }
 
-void SurfaceProjection::build_grid() {
+void SurfaceProjection::check_points_by_triangle(std::vector<Vec3>& pts,
+                                                 std::vector<Id>* owner) const {
   // The lattice of order 4 on every input triangle (vertices, 3 points per edge, 3 interior
   // points), each point once: the points `riemesh distance` samples on the input by default, so
   // that the A -> B check of the operators (surface_ops.cpp) bounds exactly what it measures.
+  // Owner: an input triangle the point lies on (a vertex's first, an edge's first by id).
   constexpr int n = 4;
-  std::vector<Vec3> pts;
-  for (std::size_t v = 0; v < mesh_.num_vertices(); ++v)
-    if (!ball(adj_, static_cast<Id>(v)).empty()) pts.push_back(vertex_at(mesh_, static_cast<Id>(v)));
+  pts.clear();
+  if (owner) owner->clear();
+  for (std::size_t v = 0; v < mesh_.num_vertices(); ++v) {
+    const auto b = ball(adj_, static_cast<Id>(v));
+    if (b.empty()) continue;
+    pts.push_back(vertex_at(mesh_, static_cast<Id>(v)));
+    if (owner) owner->push_back(b[0]);
+  }
+  std::vector<Id> edge_owner;
+  if (owner) {
+    edge_owner.assign(adj_.num_edges(), kNoId);
+    for (std::size_t k = adj_.elem2edge.size(); k-- > 0;)
+      edge_owner[static_cast<std::size_t>(adj_.elem2edge[k])] = static_cast<Id>(k / 3);
+  }
   for (std::size_t e = 0; e < adj_.num_edges(); ++e) {
     const Vec3 a = vertex_at(mesh_, adj_.edges[2 * e]), b = vertex_at(mesh_, adj_.edges[2 * e + 1]);
-    for (int i = 1; i < n; ++i) pts.push_back(a + (static_cast<double>(i) / n) * (b - a));
+    for (int i = 1; i < n; ++i) {
+      pts.push_back(a + (static_cast<double>(i) / n) * (b - a));
+      if (owner) owner->push_back(edge_owner[e]);
+    }
   }
   for (std::size_t t = 0; t < mesh_.num_triangles(); ++t) {
     const Vec3 a = vertex_at(mesh_, mesh_.triangles[3 * t]);
     const Vec3 b = vertex_at(mesh_, mesh_.triangles[3 * t + 1]);
     const Vec3 c = vertex_at(mesh_, mesh_.triangles[3 * t + 2]);
     for (int i = 1; i < n; ++i)
-      for (int j = 1; i + j < n; ++j)
+      for (int j = 1; i + j < n; ++j) {
         pts.push_back(a + (static_cast<double>(i) / n) * (b - a) + (static_cast<double>(j) / n) * (c - a));
+        if (owner) owner->push_back(static_cast<Id>(t));
+      }
   }
+}
+
+void SurfaceProjection::build_grid() const {
+  std::vector<Vec3> pts;
+  check_points_by_triangle(pts, nullptr);
   Vec3 lo = pts[0], hi = pts[0];
   for (const Vec3& p : pts)
     for (int c = 0; c < 3; ++c) {
@@ -103,42 +126,45 @@ void SurfaceProjection::build_grid() {
                              vertex_at(mesh_, mesh_.triangles[3 * t + 2]) - a));
   }
   const double ext = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300});
-  cell_ = std::max(2.0 * std::sqrt(area / static_cast<double>(pts.size())), ext / 256.0);
-  grid_lo_ = lo;
-  nx_ = static_cast<int>((hi[0] - lo[0]) / cell_) + 1;
-  ny_ = static_cast<int>((hi[1] - lo[1]) / cell_) + 1;
-  nz_ = static_cast<int>((hi[2] - lo[2]) / cell_) + 1;
-  const std::size_t ncell = static_cast<std::size_t>(nx_) * ny_ * nz_;
+  grid_.cell = std::max(2.0 * std::sqrt(area / static_cast<double>(pts.size())), ext / 256.0);
+  grid_.lo = lo;
+  grid_.nx = static_cast<int>((hi[0] - lo[0]) / grid_.cell) + 1;
+  grid_.ny = static_cast<int>((hi[1] - lo[1]) / grid_.cell) + 1;
+  grid_.nz = static_cast<int>((hi[2] - lo[2]) / grid_.cell) + 1;
+  const std::size_t ncell = static_cast<std::size_t>(grid_.nx) * grid_.ny * grid_.nz;
   auto cell_of = [&](const Vec3& p) {
-    const int i = std::min(nx_ - 1, static_cast<int>((p[0] - lo[0]) / cell_));
-    const int j = std::min(ny_ - 1, static_cast<int>((p[1] - lo[1]) / cell_));
-    const int k = std::min(nz_ - 1, static_cast<int>((p[2] - lo[2]) / cell_));
-    return (static_cast<std::size_t>(k) * ny_ + j) * nx_ + i;
+    const int i = std::min(grid_.nx - 1, static_cast<int>((p[0] - lo[0]) / grid_.cell));
+    const int j = std::min(grid_.ny - 1, static_cast<int>((p[1] - lo[1]) / grid_.cell));
+    const int k = std::min(grid_.nz - 1, static_cast<int>((p[2] - lo[2]) / grid_.cell));
+    return (static_cast<std::size_t>(k) * grid_.ny + j) * grid_.nx + i;
   };
-  grid_offsets_.assign(ncell + 1, 0);
-  for (const Vec3& p : pts) ++grid_offsets_[cell_of(p) + 1];
-  for (std::size_t c = 0; c < ncell; ++c) grid_offsets_[c + 1] += grid_offsets_[c];
-  grid_points_.resize(pts.size());
-  std::vector<Id> fill(grid_offsets_.begin(), grid_offsets_.end() - 1);
-  for (const Vec3& p : pts) grid_points_[static_cast<std::size_t>(fill[cell_of(p)]++)] = p;
+  grid_.offsets.assign(ncell + 1, 0);
+  for (const Vec3& p : pts) ++grid_.offsets[cell_of(p) + 1];
+  for (std::size_t c = 0; c < ncell; ++c) grid_.offsets[c + 1] += grid_.offsets[c];
+  grid_.points.resize(pts.size());
+  std::vector<Id> fill(grid_.offsets.begin(), grid_.offsets.end() - 1);
+  for (const Vec3& p : pts) grid_.points[static_cast<std::size_t>(fill[cell_of(p)]++)] = p;
 }
 
 void SurfaceProjection::check_points(const Vec3& lo, const Vec3& hi, std::vector<Vec3>& out) const {
+  std::call_once(grid_once_, [this] { build_grid(); });
   int a[3], b[3];
-  const int n[3] = {nx_, ny_, nz_};
+  const int n[3] = {grid_.nx, grid_.ny, grid_.nz};
   for (int c = 0; c < 3; ++c) {
-    a[c] = std::clamp(static_cast<int>(std::floor((lo[c] - grid_lo_[c]) / cell_)), 0, n[c] - 1);
-    b[c] = std::clamp(static_cast<int>(std::floor((hi[c] - grid_lo_[c]) / cell_)), 0, n[c] - 1);
-    if (hi[c] < grid_lo_[c] || lo[c] > grid_lo_[c] + n[c] * cell_) return;
+    a[c] =
+        std::clamp(static_cast<int>(std::floor((lo[c] - grid_.lo[c]) / grid_.cell)), 0, n[c] - 1);
+    b[c] =
+        std::clamp(static_cast<int>(std::floor((hi[c] - grid_.lo[c]) / grid_.cell)), 0, n[c] - 1);
+    if (hi[c] < grid_.lo[c] || lo[c] > grid_.lo[c] + n[c] * grid_.cell) return;
   }
   // The cells i = a[0] .. b[0] of a row (j, k) hold consecutive points: one range per row (most
   // cells of a box around a piece of surface are empty).
   for (int k = a[2]; k <= b[2]; ++k)
     for (int j = a[1]; j <= b[1]; ++j) {
-      const std::size_t row = (static_cast<std::size_t>(k) * ny_ + j) * nx_;
-      const Id end = grid_offsets_[row + b[0] + 1];
-      for (Id q = grid_offsets_[row + a[0]]; q < end; ++q) {
-        const Vec3& p = grid_points_[static_cast<std::size_t>(q)];
+      const std::size_t row = (static_cast<std::size_t>(k) * grid_.ny + j) * grid_.nx;
+      const Id end = grid_.offsets[row + b[0] + 1];
+      for (Id q = grid_.offsets[row + a[0]]; q < end; ++q) {
+        const Vec3& p = grid_.points[static_cast<std::size_t>(q)];
         if (p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] &&
             p[2] <= hi[2])
           out.push_back(p);

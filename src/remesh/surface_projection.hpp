@@ -11,6 +11,7 @@
 // `riemesh distance` reports, and that mmgs does not bound; PEERS.md).
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "core/symmat.hpp"
@@ -61,6 +62,10 @@ class SurfaceProjection {
   /// [lo, hi], appended to `out` in a fixed order: the points an operator must keep within
   /// hausd of the output when they were within hausd before (surface_ops.cpp).
   void check_points(const Vec3& lo, const Vec3& hi, std::vector<Vec3>& out) const;
+  /// All the check points into `pts` (replaced) and, if `owner`, for each an input triangle it
+  /// lies on: the surface remesher starts from the input and follows which of its triangles
+  /// answers for each point (surface_ops.cpp).
+  void check_points_by_triangle(std::vector<Vec3>& pts, std::vector<Id>* owner) const;
 
   const Mesh& input() const { return mesh_; }
   const Adjacency& adjacency() const { return adj_; }
@@ -81,13 +86,19 @@ class SurfaceProjection {
   std::vector<SymMat3> metric_;
   double max_lift_;
   // Uniform grid of the check points: cell (i, j, k) holds points
-  // grid_points_[grid_offsets_[c] .. grid_offsets_[c + 1]), c = (k ny + j) nx + i.
-  Vec3 grid_lo_{};
-  double cell_ = 1.0;
-  int nx_ = 1, ny_ = 1, nz_ = 1;
-  std::vector<Id> grid_offsets_;
-  std::vector<Vec3> grid_points_;
-  void build_grid();
+  // grid_points_[grid_offsets_[c] .. grid_offsets_[c + 1]), c = (k ny + j) nx + i. Built at the
+  // first check_points (thread-safe): the surface remesher follows its points otherwise
+  // (surface_ops.cpp) and never asks; the curved boundaries of the 3D remesher do.
+  struct Grid {
+    Vec3 lo{};
+    double cell = 1.0;
+    int nx = 1, ny = 1, nz = 1;
+    std::vector<Id> offsets;
+    std::vector<Vec3> points;
+  };
+  mutable Grid grid_;
+  mutable std::once_flag grid_once_;
+  void build_grid() const;
 };
 
 }  // namespace riemesh

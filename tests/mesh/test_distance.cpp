@@ -77,6 +77,32 @@ TEST(Distance, TreeMatchesBruteForce) {
   }
 }
 
+TEST(Distance, TiesGoToTheLowestTriangle) {
+  // A vertex is at distance 0 of every triangle of its ball: the lowest id wins, whatever the
+  // hint (the highest of the ball, tried first) and the lower bounds that skip triangles.
+  Mesh m = sphere(3, 1.0);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> bump(-0.05, 0.05);
+  for (double& c : m.coords) c += bump(rng);
+  const TriangleTree tree(m);
+  std::vector<Id> lowest(m.num_vertices(), kNoId), highest(m.num_vertices(), kNoId);
+  for (std::size_t t = 0; t < m.num_triangles(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const auto v = static_cast<std::size_t>(m.triangles[3 * t + i]);
+      if (lowest[v] == kNoId) lowest[v] = static_cast<Id>(t);
+      highest[v] = static_cast<Id>(t);
+    }
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    if (lowest[v] == kNoId) continue;
+    const Vec3 p{{m.coords[3 * v], m.coords[3 * v + 1], m.coords[3 * v + 2]}};
+    for (const Id hint : {kNoId, highest[v]}) {
+      const auto q = tree.nearest(p, hint);
+      EXPECT_EQ(q.distance, 0.0) << v;
+      EXPECT_EQ(q.triangle, lowest[v]) << v;
+    }
+  }
+}
+
 TEST(Distance, ProbeAgreesWithTheClosestPoint) {
   // TriangleProbe::within (plane and edge-band rejections, inside shortcut) answers as the exact
   // distance does, on random triangles (some needle-like or degenerate) and points near them.
