@@ -38,6 +38,13 @@ class Remesh2dContext {
   bool smoothing_target(Id v, NewVertex& out, double min_move = 0.0,
                         const Ball* ball = nullptr) const;
 
+  /// Where v (inside, not on a curve) gives its ball the best worst quality: a pattern search
+  /// from v's position in steps measured in v's metric (each candidate with its metric from the
+  /// background). False when no candidate raises the ball's worst quality `worst` by more than
+  /// 1e-3. For balls the length-driven smoothing_target leaves poor: where the metric turns
+  /// across a thin curved layer, unit lengths and good shapes pull apart.
+  bool quality_target(Id v, const Ball& ball, double worst, NewVertex& out) const;
+
   /// For a collapse of `from` (on a curve) into `to`: true when the chord that replaces the two
   /// curve edges at `from` stays within hausd of the curve.
   bool collapse_keeps_hausd(Id from, Id to) const;
