@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
@@ -228,7 +229,8 @@ bool Remesh2dContext::smoothing_target(Id v, NewVertex& out, double min_move,
   return true;
 }
 
-bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVertex& out) const {
+bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVertex& out,
+                                     double length_floor) const {
   const std::int32_t curve = mesh_.vcurve[v];
   if (mesh_.frozen(v) || (curve == kNoCurve && !ball.closed)) return false;
   // Only where the metric turns across the ball: elsewhere (isotropic or axis-aligned fields)
@@ -238,17 +240,26 @@ bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVe
   for (const Id t : ball.tris)
     for (int i = 0; i < 3 && !turns; ++i) turns = !commute(mesh_.metric[v], mesh_.metric[mesh_.tv[3 * t + i]]);
   if (!turns) return false;
-  // The ball's worst quality with v at p (on the curve at parameter s), or −1 when it is not
-  // above `beat`, when a triangle would not be positive, or when one of v's edges would leave
-  // [1/√2, √2] or, outside, get further from it than it is now (`before[k]`: ball triangle k's
-  // edge from v). Cheapest tests first: areas, then the metric at p, then the qualities (from
-  // the triangle that was worst last time), then the lengths.
+  // The score of v at p (on the curve at parameter s): the ball's worst quality, or with
+  // `length_floor` the opposite of how far v's edges are outside [1/√2, √2] in all (their
+  // length_badness beyond √2). −inf when not above `beat` (scores), when a triangle would not be
+  // positive, when one of v's edges would leave the band or, outside, get further from it than
+  // it is now (`before[k]`: ball triangle k's edge from v), or with `length_floor` when a
+  // triangle would fall below min(worst, length_floor). Cheapest tests first: areas, then the
+  // metric at p, then the qualities (from the triangle that was worst last time), then lengths.
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  const bool lengths = length_floor > 0.0;
+  const double q_floor = std::min(worst, length_floor);
   thread_local std::vector<double> before;
   before.clear();
+  double excess_now = 0.0;
   for (const Id t : ball.tris) {
     const Id a = mesh_.tv[3 * t + (vertex_index(mesh_, t, v) + 1) % 3];
-    before.push_back(std::max(kBandBadness, length_badness(edge_length(mesh_, v, a))));
+    const double bad = length_badness(edge_length(mesh_, v, a));
+    before.push_back(std::max(kBandBadness, bad));
+    excess_now += std::max(0.0, bad - kBandBadness);
   }
+  if (lengths && !(excess_now > 0.0)) return false;
   const std::size_t n = ball.tris.size();
   std::size_t first = 0;
   const auto ball_worst = [&](const Vec2& p, double s, double beat) {
@@ -257,7 +268,7 @@ bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVe
       const Id a = mesh_.tv[3 * t + (i + 1) % 3], b = mesh_.tv[3 * t + (i + 2) % 3];
       if (!(signed_area(p, mesh_.xy[a], mesh_.xy[b]) >
             1e-6 * std::abs(signed_area(mesh_.xy[v], mesh_.xy[a], mesh_.xy[b]))))
-        return -1.0;
+        return kNone;
     }
     const SymMat2 mp = metric_for(p, curve, s, v);
     const SymMat2 lp = log_spd(mp);
@@ -270,22 +281,26 @@ bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVe
       const SymMat2 mm = tri_metric(mp, &lp, mesh_.metric[a], log_of(mesh_.log_metric, a),
                                     mesh_.metric[b], log_of(mesh_.log_metric, b));
       const double qk = quality_in(mm, p, mesh_.xy[a], mesh_.xy[b]);
-      if (!(qk > beat)) {
+      if (lengths ? !(qk >= q_floor) : !(qk > beat)) {
         first = k;
-        return -1.0;
+        return kNone;
       }
       q = std::min(q, qk);
     }
+    double excess = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
       const Id t = ball.tris[k];
       const Id a = mesh_.tv[3 * t + (vertex_index(mesh_, t, v) + 1) % 3];
-      if (length_badness(edge_length_simpson(mp, mesh_.metric[a], mesh_.xy[a] - p, &lp,
-                                             log_of(mesh_.log_metric, a))) > before[k])
-        return -1.0;
+      const double bad = length_badness(edge_length_simpson(
+          mp, mesh_.metric[a], mesh_.xy[a] - p, &lp, log_of(mesh_.log_metric, a)));
+      if (bad > before[k]) return kNone;
+      excess += std::max(0.0, bad - kBandBadness);
     }
-    return q;
+    if (!lengths) return q;
+    return -excess > beat ? -excess : kNone;
   };
-  double best = worst;
+  const double start = lengths ? -excess_now : worst;
+  double best = start;
   if (curve != kNoCurve) {
     // On a curve: along it between v's two curve neighbours, by the fraction f of the arc
     // length from the previous one (steps of 0.1 halved down to 0.005; f within [0.1, 0.9]).
@@ -311,7 +326,7 @@ bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVe
     }
     // Sliding lengthens one of the two chords: both must stay within hausd (tested once, at
     // the end: the sampled deviation costs more than the search).
-    if (!(best > worst + 1e-3) ||
+    if (!(best > start + 1e-3) ||
         (options_.hausd > 0.0 && (chord_deviation(c, sp, best_s) > options_.hausd ||
                                   chord_deviation(c, best_s, sn) > options_.hausd)))
       return false;
@@ -341,7 +356,7 @@ bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVe
     if (pick_q > best) p = pick_p, best = pick_q;
     else step *= 0.5;
   }
-  if (!(best > worst + 1e-3)) return false;
+  if (!(best > start + 1e-3)) return false;
   out.p = p;
   out.metric = metric_for(p, kNoCurve, 0.0, v);  // also leaves last_found_ for inherit_hint
   out.curve = kNoCurve;

@@ -43,7 +43,11 @@ class Remesh2dContext {
   /// background). False when no candidate raises the ball's worst quality `worst` by more than
   /// 1e-3. For balls the length-driven smoothing_target leaves poor: where the metric turns
   /// across a thin curved layer, unit lengths and good shapes pull apart.
-  bool quality_target(Id v, const Ball& ball, double worst, NewVertex& out) const;
+  /// With `length_floor` > 0: the position where v's edges are least outside [1/√2, √2] (none
+  /// further out, none leaving it), no ball triangle below min(worst, length_floor); false when
+  /// none is better by 1e-3 in the sum of their length_badness beyond √2.
+  bool quality_target(Id v, const Ball& ball, double worst, NewVertex& out,
+                      double length_floor = 0.0) const;
 
   /// For a collapse of `from` (on a curve) into `to`: true when the chord that replaces the two
   /// curve edges at `from` stays within hausd of the curve.
