@@ -29,8 +29,8 @@ constexpr double kLongEdge = 1.4142135623730951;   // √2
 // element count comes within a few per cent of (4/√3) C(M) (measured on the PEERS.md cases).
 constexpr double kCollapseBelow = 0.9;
 // Balls whose worst quality stays below this after the passes get a quality-driven relocation
-// (0.6 and 0.55 gave slightly better worst qualities but cost 33% and 23% more instructions on
-// a polar2d run, 0.5 13%).
+// (with two sweeps of it, 0.6 and 0.55 gave slightly better worst qualities on polar2d but cost
+// 33% and 23% more instructions in a run, 0.5 13%).
 constexpr double kPoorBall = 0.5;
 
 std::string num(double v) {

@@ -180,11 +180,11 @@ TEST(Adapt2d, PolarLayerRelocatedAfterThePasses) {
   // polar2d itself (radial size 0.001: 100:1), 5 runs. The tangential edges of the layer cannot
   // be unit (a chord of 0.1 has a sagitta of 2.5 radial sizes), and splits, collapses and the
   // length-driven smoothing left poor balls and edges out of band there (96.9% in band, q min
-  // 0.358). After the passes, the quality-driven relocation of the poor balls lifts the worst
-  // (0.358 -> 0.450, 96.6% in band) and the length-driven one of the ends of the edges out of
-  // band brings them in (96.6 -> 97.35%, q min 0.433; q mean 0.837 throughout).
+  // 0.358). After the passes: the quality-driven relocation of the poor balls alone gives
+  // 97.2%, q min 0.419; the length-driven one of the ends of the edges out of band alone 97.6%,
+  // 0.369; both 98.2%, 0.410 (q mean 0.837-0.838 throughout).
   const PolarFigures f = polar_run(0.001, 5);
-  EXPECT_GE(f.in_band, 0.97);
+  EXPECT_GE(f.in_band, 0.975);
   EXPECT_GE(f.q_min, 0.40);
   EXPECT_GE(f.q_mean, 0.80);
 }
