@@ -2,14 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "core/eigen.hpp"
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
+#include "remesh/pass_summary.hpp"
 #include "remesh/tri_mesh_io.hpp"
 #include "remesh/vertex_logs.hpp"
 
 namespace riemesh {
 namespace {
+
+constexpr double kBandBadness = 1.4142135623730951;  // length_badness at both ends of the band
 
 /// The background mesh of the input, its arrays built straight in their final form (no flat
 /// metric copy, no zero fill before the copy): 1.76 M triangles, ~0.1 s less.
@@ -221,6 +226,148 @@ bool Remesh2dContext::smoothing_target(Id v, NewVertex& out, double min_move,
   out.curve = c;
   out.param = wrap_param(curve, snew);
   out.metric = metric_for(out.p, c, snew, v);
+  return true;
+}
+
+bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVertex& out,
+                                     double length_floor) const {
+  const std::int32_t curve = mesh_.vcurve[v];
+  if (mesh_.frozen(v) || (curve == kNoCurve && !ball.closed)) return false;
+  // Only where the metric turns across the ball: elsewhere (isotropic or axis-aligned fields)
+  // the length-driven smoothing already gives good shapes, and their outputs stay as they were
+  // (linear2d h0 = 1e-5 lost 0.14 of q min through a different path from the coarse start).
+  // Its neighbours (on a curve the ball is open: one more than its triangles).
+  thread_local std::vector<Id> around;
+  around.clear();
+  bool turns = false;
+  for (const Id t : ball.tris) {
+    const int i = vertex_index(mesh_, t, v);
+    for (const Id x : {mesh_.tv[3 * t + (i + 1) % 3], mesh_.tv[3 * t + (i + 2) % 3]}) {
+      if (std::find(around.begin(), around.end(), x) != around.end()) continue;
+      around.push_back(x);
+      turns = turns || !commute(mesh_.metric[v], mesh_.metric[x]);
+    }
+  }
+  if (!turns) return false;
+  // The score of v at p (on the curve at parameter s): the ball's worst quality, or with
+  // `length_floor` the opposite of how far v's edges are outside [1/√2, √2] in all (their
+  // length_badness beyond √2). −inf when not above `beat` (scores), when a triangle would not be
+  // positive, when one of v's edges would leave the band or, outside, get further from it than
+  // it is now (`before[k]`: the edge to around[k]), or with `length_floor` when a
+  // triangle would fall below min(worst, length_floor). Cheapest tests first: areas, then the
+  // metric at p, then the qualities (from the triangle that was worst last time), then lengths.
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  const bool lengths = length_floor > 0.0;
+  const double q_floor = std::min(worst, length_floor);
+  thread_local std::vector<double> before;
+  before.clear();
+  double excess_now = 0.0;
+  for (const Id a : around) {
+    const double bad = length_badness(edge_length(mesh_, v, a));
+    before.push_back(std::max(kBandBadness, bad));
+    excess_now += std::max(0.0, bad - kBandBadness);
+  }
+  if (lengths && !(excess_now > 0.0)) return false;
+  const std::size_t n = ball.tris.size();
+  std::size_t first = 0;
+  const auto ball_worst = [&](const Vec2& p, double s, double beat) {
+    for (const Id t : ball.tris) {
+      const int i = vertex_index(mesh_, t, v);
+      const Id a = mesh_.tv[3 * t + (i + 1) % 3], b = mesh_.tv[3 * t + (i + 2) % 3];
+      if (!(signed_area(p, mesh_.xy[a], mesh_.xy[b]) >
+            1e-6 * std::abs(signed_area(mesh_.xy[v], mesh_.xy[a], mesh_.xy[b]))))
+        return kNone;
+    }
+    const SymMat2 mp = metric_for(p, curve, s, v);
+    const SymMat2 lp = log_spd(mp);
+    double q = 2.0;
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t k = (first + j) % n;
+      const Id t = ball.tris[k];
+      const int i = vertex_index(mesh_, t, v);
+      const Id a = mesh_.tv[3 * t + (i + 1) % 3], b = mesh_.tv[3 * t + (i + 2) % 3];
+      const SymMat2 mm = tri_metric(mp, &lp, mesh_.metric[a], log_of(mesh_.log_metric, a),
+                                    mesh_.metric[b], log_of(mesh_.log_metric, b));
+      const double qk = quality_in(mm, p, mesh_.xy[a], mesh_.xy[b]);
+      if (lengths ? !(qk >= q_floor) : !(qk > beat)) {
+        first = k;
+        return kNone;
+      }
+      q = std::min(q, qk);
+    }
+    double excess = 0.0;
+    for (std::size_t k = 0; k < around.size(); ++k) {
+      const Id a = around[k];
+      const double bad = length_badness(edge_length_simpson(
+          mp, mesh_.metric[a], mesh_.xy[a] - p, &lp, log_of(mesh_.log_metric, a)));
+      if (bad > before[k]) return kNone;
+      excess += std::max(0.0, bad - kBandBadness);
+    }
+    if (!lengths) return q;
+    return -excess > beat ? -excess : kNone;
+  };
+  const double start = lengths ? -excess_now : worst;
+  double best = start;
+  if (curve != kNoCurve) {
+    // On a curve: along it between v's two curve neighbours, by the fraction f of the arc
+    // length from the previous one (steps of 0.1 halved down to 0.005; f within [0.1, 0.9]).
+    Id prev, next;
+    curve_neighbours(v, prev, next, &ball);
+    if (prev == kNoId) return false;
+    const BoundaryCurve& c = curves_.curves[curve];
+    const double s = mesh_.vparam[v];
+    const double sp = param_on(prev, curve, s), sn = param_on(next, curve, s);
+    const double a1 = length(c, sp, s), a2 = length(c, s, sn);
+    if (!(a1 > 0.0 && a2 > 0.0)) return false;
+    double f = a1 / (a1 + a2), best_s = s;
+    for (double step = 0.1; step > 0.005;) {
+      double pick_f = f, pick_s = best_s, pick_q = best;
+      for (const double fc : {f - step, f + step}) {
+        if (!(fc >= 0.1 && fc <= 0.9)) continue;
+        const double sc = param_at_fraction(c, sp, sn, fc);
+        const double q = ball_worst(point(c, sc), sc, pick_q);
+        if (q > pick_q) pick_f = fc, pick_s = sc, pick_q = q;
+      }
+      if (pick_q > best) f = pick_f, best_s = pick_s, best = pick_q;
+      else step *= 0.5;
+    }
+    // Sliding lengthens one of the two chords: both must stay within hausd (tested once, at
+    // the end: the sampled deviation costs more than the search).
+    if (!(best > start + 1e-3) ||
+        (options_.hausd > 0.0 && (chord_deviation(c, sp, best_s) > options_.hausd ||
+                                  chord_deviation(c, best_s, sn) > options_.hausd)))
+      return false;
+    out.p = point(c, best_s);
+    out.curve = curve;
+    out.param = wrap_param(c, best_s);
+    out.metric = metric_for(out.p, curve, best_s, v);  // also leaves last_found_ for inherit_hint
+    return true;
+  }
+  // Inside: unit metric steps along v's principal directions, 0.25 halved down to 0.01 (their
+  // diagonals too cost 20% more instructions for no better result on polar2d).
+  const SymEigen<2> e = eigen(mesh_.metric[v]);
+  const double h0 = 1.0 / std::sqrt(e.values[0]), h1 = 1.0 / std::sqrt(e.values[1]);
+  const Vec2 u0{{e.vectors(0, 0) * h0, e.vectors(1, 0) * h0}};
+  const Vec2 u1{{e.vectors(0, 1) * h1, e.vectors(1, 1) * h1}};
+  const Vec2 dirs[4] = {u0, u1, -1.0 * u0, -1.0 * u1};
+  Vec2 p = mesh_.xy[v];
+  double step = 0.25;
+  for (int round = 0; round < 12 && step > 0.01; ++round) {
+    Vec2 pick_p = p;
+    double pick_q = best;
+    for (int k = 0; k < 4; ++k) {
+      const Vec2 c = p + step * dirs[k];
+      const double q = ball_worst(c, 0.0, pick_q);
+      if (q > pick_q) pick_p = c, pick_q = q;
+    }
+    if (pick_q > best) p = pick_p, best = pick_q;
+    else step *= 0.5;
+  }
+  if (!(best > start + 1e-3)) return false;
+  out.p = p;
+  out.metric = metric_for(p, kNoCurve, 0.0, v);  // also leaves last_found_ for inherit_hint
+  out.curve = kNoCurve;
+  out.param = 0.0;
   return true;
 }
 

@@ -38,6 +38,18 @@ class Remesh2dContext {
   bool smoothing_target(Id v, NewVertex& out, double min_move = 0.0,
                         const Ball* ball = nullptr) const;
 
+  /// Where v gives its ball the best worst quality, where the metric turns across the ball
+  /// (a thin curved layer: there unit lengths and good shapes pull apart, and the length-driven
+  /// smoothing_target leaves poor balls): a pattern search from v's position in steps measured
+  /// in v's metric, or along its curve, each candidate with its metric from the background; no
+  /// edge of v may leave [1/√2, √2] or get further from it. False when the metrics of the ball
+  /// commute or when no candidate raises the ball's worst quality `worst` by more than 1e-3.
+  /// With `length_floor` > 0: the position where v's edges are least outside [1/√2, √2], no
+  /// ball triangle below min(worst, length_floor); false when none is better by 1e-3 in the sum
+  /// of their length_badness beyond √2.
+  bool quality_target(Id v, const Ball& ball, double worst, NewVertex& out,
+                      double length_floor = 0.0) const;
+
   /// For a collapse of `from` (on a curve) into `to`: true when the chord that replaces the two
   /// curve edges at `from` stays within hausd of the curve.
   bool collapse_keeps_hausd(Id from, Id to) const;

@@ -122,44 +122,71 @@ SymMat2 polar_metric(const Vec2& p, double h0) {
   return SymMat2{{a * c * c + b * s * s, (a - b) * c * s, a * s * s + b * c * c}};
 }
 
-TEST(Adapt2d, PolarLayerLengthsAlongTheEdges) {
-  // A thin layer along the circle r = 0.5 (radial size 0.002, tangential 0.1: 50:1), iterated
-  // as the UGAWG benchmark does. Measured as the harness measures (../shared/bench): lengths
-  // integrated along each edge in the analytic field, quality in the analytic metric at the
-  // centroid. Across the curved layer the metric turns along a tangential edge: measured from its
-  // end metrics alone the edge looks twice as long, and the remesher made those edges too short
-  // (90.5% in band, q min 0.395 with the closed form and the plain mean; 98.8%, 0.483 now).
+/// A polar layer of radial size h0 adapted from unit_square(20, 20) over `runs` runs, the metric
+/// re-evaluated at the vertices before each, measured as the harness measures (../shared/bench):
+/// lengths integrated along each edge in the analytic field, quality in the analytic metric at
+/// the centroid.
+struct PolarFigures {
+  double in_band = 0, q_min = 1, q_mean = 0;
+};
+PolarFigures polar_run(double h0, int runs) {
   Mesh m = unit_square(20, 20);
   Adapt2dOptions o;
   o.hgrad = 0.0;
-  const auto field = [](const Mesh& mesh) {
+  const auto field = [h0](const Mesh& mesh) {
     std::vector<SymMat2> out;
     for (std::size_t v = 0; v < mesh.num_vertices(); ++v)
-      out.push_back(polar_metric(Vec2{{mesh.coords[2 * v], mesh.coords[2 * v + 1]}}, 0.002));
+      out.push_back(polar_metric(Vec2{{mesh.coords[2 * v], mesh.coords[2 * v + 1]}}, h0));
     return out;
   };
-  for (int pass = 0; pass < 4; ++pass) m = adapt2d(m, field(m), o).mesh;
+  for (int run = 0; run < runs; ++run) m = adapt2d(m, field(m), o).mesh;
   EXPECT_TRUE(check_mesh(m).valid());
   const auto point = [&](Id v) { return Vec2{{m.coords[2 * v], m.coords[2 * v + 1]}}; };
   std::set<std::pair<Id, Id>> edges;
-  double q_min = 1.0;
+  PolarFigures f;
   for (std::size_t t = 0; t < m.num_triangles(); ++t) {
     const Id* v = &m.triangles[3 * t];
     for (int i = 0; i < 3; ++i) edges.insert({std::min(v[i], v[(i + 1) % 3]), std::max(v[i], v[(i + 1) % 3])});
     const Vec2 pa = point(v[0]), pb = point(v[1]), pc = point(v[2]);
-    const SymMat2 mc = polar_metric((1.0 / 3.0) * (pa + pb + pc), 0.002);
+    const SymMat2 mc = polar_metric((1.0 / 3.0) * (pa + pb + pc), h0);
     const double l2 = quadratic(mc, pb - pa) + quadratic(mc, pc - pb) + quadratic(mc, pa - pc);
-    q_min = std::min(q_min, 4.0 * std::sqrt(3.0) * std::sqrt(det(mc)) * 0.5 * cross(pb - pa, pc - pa) / l2);
+    const double q = 4.0 * std::sqrt(3.0) * std::sqrt(det(mc)) * 0.5 * cross(pb - pa, pc - pa) / l2;
+    f.q_min = std::min(f.q_min, q);
+    f.q_mean += q / static_cast<double>(m.num_triangles());
   }
   int in = 0;
   for (const auto& [a, b] : edges) {
     const Vec2 pa = point(a), ab = point(b) - pa;
     double l = 0.0;  // composite midpoint rule, 200 pieces
-    for (int k = 0; k < 200; ++k) l += length(polar_metric(pa + ((k + 0.5) / 200) * ab, 0.002), ab) / 200;
+    for (int k = 0; k < 200; ++k) l += length(polar_metric(pa + ((k + 0.5) / 200) * ab, h0), ab) / 200;
     in += l >= std::sqrt(0.5) && l <= std::sqrt(2.0);
   }
-  EXPECT_GE(in / static_cast<double>(edges.size()), 0.97);
-  EXPECT_GE(q_min, 0.45);
+  f.in_band = in / static_cast<double>(edges.size());
+  return f;
+}
+
+TEST(Adapt2d, PolarLayerLengthsAlongTheEdges) {
+  // A thin layer along the circle r = 0.5 (radial size 0.002, tangential 0.1: 50:1), iterated
+  // as the UGAWG benchmark does. Across the curved layer the metric turns along a tangential
+  // edge: measured from its end metrics alone the edge looks twice as long, and the remesher
+  // made those edges too short (90.5% in band, q min 0.395 with the closed form and the plain
+  // mean; 98.8%, 0.483 with the measures where the metric turns).
+  const PolarFigures f = polar_run(0.002, 4);
+  EXPECT_GE(f.in_band, 0.97);
+  EXPECT_GE(f.q_min, 0.45);
+}
+
+TEST(Adapt2d, PolarLayerRelocatedAfterThePasses) {
+  // polar2d itself (radial size 0.001: 100:1), 5 runs. The tangential edges of the layer cannot
+  // be unit (a chord of 0.1 has a sagitta of 2.5 radial sizes), and splits, collapses and the
+  // length-driven smoothing left poor balls and edges out of band there (96.9% in band, q min
+  // 0.358). After the passes: the quality-driven relocation of the poor balls alone gives
+  // 97.2%, q min 0.419; the length-driven one of the ends of the edges out of band alone 97.6%,
+  // 0.369; both 98.2%, 0.410 (q mean 0.837-0.838 throughout).
+  const PolarFigures f = polar_run(0.001, 5);
+  EXPECT_GE(f.in_band, 0.975);
+  EXPECT_GE(f.q_min, 0.40);
+  EXPECT_GE(f.q_mean, 0.80);
 }
 
 TEST(Adapt2d, Deterministic) {
