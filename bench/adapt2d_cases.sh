@@ -3,11 +3,11 @@
 # ../shared/bench (metric re-evaluated analytically on each new mesh, measured by evaluate.py),
 # with `riemesh adapt` as the remesher. Prints the harness's table of the last pass per case.
 #   bench/adapt2d_cases.sh [PASSES] [CASE ...]      (default: 5 passes, the cases below)
-# Needs build/riemesh (scripts/build.sh) and Debian's python3-numpy and time.
+# Needs build/riemesh (scripts/build.sh; RIEMESH=path: another binary) and Debian's python3-numpy and time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 H=$(cd ../shared/bench && pwd)
-R=$PWD/build/riemesh
+R=${RIEMESH:-$PWD/build/riemesh}
 passes=${1:-5}
 shift || true
 cases=("$@")
