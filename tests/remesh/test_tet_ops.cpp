@@ -38,6 +38,14 @@ NewVertex3 at(const TetMesh& m, const Vec3& p) {
   return nv;
 }
 
+/// The metric with eigenvalues `eig` on the axes turned by `angle` about z.
+SymMat3 turned_about_z(double angle, const Vec3& eig) {
+  Mat3 r = Mat3::identity();
+  r(0, 0) = std::cos(angle), r(0, 1) = -std::sin(angle);
+  r(1, 0) = std::sin(angle), r(1, 1) = std::cos(angle);
+  return compose(r, eig);
+}
+
 }  // namespace
 
 TEST(TetOps, SplitInteriorEdgeThenCollapseBack) {
@@ -220,12 +228,7 @@ TEST(TetOps, EdgeLengthSeesTheMetricTurn) {
   // A stiff axis turned by ±0.05 rad between the two ends of an edge along y: about 10 |ab| long
   // at its middle (in the log-Euclidean mean), and sqrt(1e6 sin²(0.05) + 100 cos²(0.05)) |ab|
   // ≈ 51 |ab| at its ends; Simpson's rule: (2 ends + 4 middle) / 6.
-  const auto turned = [](double angle) {
-    Mat3 r = Mat3::identity();
-    r(0, 0) = std::cos(angle), r(0, 1) = -std::sin(angle);
-    r(1, 0) = std::sin(angle), r(1, 1) = std::cos(angle);
-    return compose(r, Vec3{{1e6, 100.0, 100.0}});
-  };
+  const auto turned = [](double angle) { return turned_about_z(angle, Vec3{{1e6, 100.0, 100.0}}); };
   m.set_metric(0, turned(0.05)), m.set_metric(1, turned(-0.05));
   m.xyz[0] = Vec3{{0, 0, 0}}, m.xyz[1] = Vec3{{0, 0.01, 0}};
   const SymMat3 mid_metric = exp_sym(0.5 * (log_spd(turned(0.05)) + log_spd(turned(-0.05))));
@@ -263,12 +266,7 @@ TEST(TetOps, TetQualityInTheLogEuclideanMeanWhereTheMetricTurns) {
   // Where the vertex metrics do not commute, a tet is measured in exp(Σ log M_i / 4): the plain
   // mean would add up the turned stiff directions and rate the tet far better than it is.
   TetMesh m = bipyramid();
-  const auto turned = [](double angle) {
-    Mat3 r = Mat3::identity();
-    r(0, 0) = std::cos(angle), r(0, 1) = -std::sin(angle);
-    r(1, 0) = std::sin(angle), r(1, 1) = std::cos(angle);
-    return compose(r, Vec3{{400.0, 1.0, 1.0}});
-  };
+  const auto turned = [](double angle) { return turned_about_z(angle, Vec3{{400.0, 1.0, 1.0}}); };
   const Id* v = &m.tv[0];
   const double angles[4] = {0.3, -0.3, 0.1, -0.1};
   SymMat3 log_sum = SymMat3::zero(), sum = SymMat3::zero();
