@@ -32,14 +32,16 @@ struct CairoApi {
 
 namespace {
 
-/// Loads libcairo.so.2 (kept loaded: RTLD_NODELETE) and resolves the functions above.
+/// Loads libcairo.so.2 (kept loaded: RTLD_NODELETE) and resolves the functions above. A missing
+/// or too old library is something the user must fix on the machine, not a fault of the program:
+/// InputError (the CLI reports it as an error, exit 2), naming the package to install.
 std::unique_ptr<const CairoApi> load_cairo() {
   void* lib = dlopen("libcairo.so.2", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
   if (lib == nullptr) {
     const char* why = dlerror();
     std::string msg = "pictures need the cairo library (Debian package libcairo2): ";
     msg += why != nullptr ? why : "libcairo.so.2 not found";
-    throw Error(msg);
+    throw InputError(msg);
   }
   auto api = std::make_unique<CairoApi>();
   bool missing = false;
@@ -52,7 +54,7 @@ std::unique_ptr<const CairoApi> load_cairo() {
   RIEMESH_CAIRO_FUNCTIONS(RIEMESH_CAIRO_RESOLVE)
 #undef RIEMESH_CAIRO_RESOLVE
   dlclose(lib);  // NODELETE: stays loaded, the pointers stay valid
-  if (missing) throw Error("libcairo.so.2 lacks" + names + " (cairo too old?)");
+  if (missing) throw InputError("libcairo.so.2 lacks" + names + " (cairo too old?)");
   return api;
 }
 

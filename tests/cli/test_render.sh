@@ -55,4 +55,35 @@ expect_error render-bad-width render "$TMP/two.mesh" --width 5 -o "$TMP/x8.png"
 expect_error render-no-output render "$TMP/two.mesh"
 expect_no_file render-bad-no-file "$TMP/x8.png"
 
+# Without cairo (dlopen of libcairo.so.2 refused by a preloaded shim): a picture (PNG or SVG: both
+# are drawn by cairo) fails with one line naming the package, exit 2, and leaves no file.
+cat >"$TMP/no_cairo.c" <<'C'
+#define _GNU_SOURCE
+#include <dlfcn.h>
+#include <string.h>
+void* dlopen(const char* name, int flags) {
+  static void* (*real)(const char*, int);
+  if (name && strstr(name, "libcairo")) return NULL;
+  if (!real) real = (void* (*)(const char*, int))dlsym(RTLD_NEXT, "dlopen");
+  return real(name, flags);
+}
+C
+if cc -shared -fPIC -o "$TMP/no_cairo.so" "$TMP/no_cairo.c" -ldl 2>"$TMP/cc.err"; then
+  export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0"
+  for ext in png svg; do
+    out=$(LD_PRELOAD="$TMP/no_cairo.so" "$R" render "$TMP/two.mesh" -o "$TMP/nc.$ext" 2>"$TMP/nc.err")
+    code=$?
+    err=$(cat "$TMP/nc.err")
+    if [ "$code" -eq 2 ] && [ -z "$out" ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] &&
+       [[ "$err" == "riemesh: error: "*"libcairo2"* ]]; then
+      ok "render-$ext-without-cairo ($err)"
+    else
+      ko "render-$ext-without-cairo: exit $code, stderr '$err'"
+    fi
+    expect_no_file "render-$ext-without-cairo-no-file" "$TMP/nc.$ext"
+  done
+else
+  ko "render-without-cairo: cannot build the dlopen shim: $(head -1 "$TMP/cc.err")"
+fi
+
 exit $fail
