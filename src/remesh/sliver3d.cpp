@@ -7,6 +7,7 @@
 #include <limits>
 #include <span>
 
+#include "core/eigen.hpp"
 #include "mesh/adjacency.hpp"
 
 namespace riemesh {
@@ -15,6 +16,12 @@ namespace {
 // Tets on fixed vertices only get a new interior vertex (star_sliver, split_sliver) below this
 // quality: the kept surface's slivers (rotor), not the ordinary bad tets of the surface layer.
 constexpr double kSplitBelow = 0.1;
+
+// optimise_vertex refines its best candidate by a compass search when the ball is worse than this.
+constexpr double kCompassBelow = 0.5;
+
+// The band of unit lengths [1/sqrt 2, sqrt 2].
+constexpr double kBandLow = 0.70710678118654752, kBandHigh = 1.4142135623730951;
 
 /// The point that makes (p, a, b, c) a regular tet in the metric mm, on v's side of face
 /// (a, b, c) (`side`: v's current position).
@@ -41,6 +48,90 @@ double worst_at(TetMesh& m, Id v, const std::vector<Id>& ball, const Vec3& p, do
   m.xyz[v] = old;
   return worst;
 }
+
+/// v's ball frozen for a search over v's position (v's metric unchanged, as worst_at): each
+/// tet's metric and other vertices, each edge at v with its end metrics (and Simpson's midpoint
+/// metric where they do not commute) and its allowed length range.
+struct BallModel {
+  struct Tet {
+    SymMat3 metric;
+    double scale;  // 3 sqrt(det metric)
+    Vec3 p[4];
+    int at;  // v's index
+  };
+  struct Edge {
+    Vec3 w;
+    SymMat3 mw, mid;
+    bool turning;
+    double lo, hi;
+  };
+  SymMat3 mv;
+  std::vector<Tet> tets;
+  std::vector<Edge> edges;
+
+  void build(const TetMesh& m, Id v, const std::vector<Id>& ball) {
+    mv = m.metric[v];
+    tets.clear(), edges.clear();
+    std::vector<Id> seen;
+    for (const Id t : ball) {
+      const Id* tv = &m.tv[4 * t];
+      Tet x{tet_metric(m, tv[0], tv[1], tv[2], tv[3]), 0.0, {}, 0};
+      x.scale = 3.0 * std::sqrt(det(x.metric));
+      for (int i = 0; i < 4; ++i) {
+        x.p[i] = m.xyz[tv[i]];
+        if (tv[i] == v) {
+          x.at = i;
+        } else if (std::find(seen.begin(), seen.end(), tv[i]) == seen.end()) {
+          seen.push_back(tv[i]);
+          const Id w = tv[i];
+          Edge e{m.xyz[w], m.metric[w], {}, !commute(mv, m.metric[w]), 0.0, 0.0};
+          if (e.turning) e.mid = exp_sym_series(0.5 * (log_at(m, v) + log_at(m, w)));
+          const double l = length_to(e, m.xyz[v]);
+          e.lo = std::min(l, kBandLow), e.hi = std::max(l, kBandHigh);
+          edges.push_back(e);
+        }
+      }
+      tets.push_back(x);
+    }
+  }
+  /// v's log metric, kept by the mesh once some metric turns.
+  static SymMat3 log_at(const TetMesh& m, Id v) {
+    const SymMat3* l = log_of(m.log_metric, v);
+    return l ? *l : log_spd(m.metric[v]);
+  }
+  /// edge_length_simpson of the edge from p.
+  double length_to(const Edge& e, const Vec3& p) const {
+    const Vec3 d = e.w - p;
+    if (!e.turning) return edge_length_geometric(mv, e.mw, d);
+    return (length(mv, d) + 4.0 * length(e.mid, d) + length(e.mw, d)) / 6.0;
+  }
+  /// The worst quality with v at p (quality_in, by its cube: no cube root per tet), or some
+  /// value <= floor once known not to exceed it.
+  double worst(const Vec3& p, double floor) {
+    const double floor3 = floor > 0.0 ? floor * floor * floor : 0.0;
+    double out3 = 1.0;
+    for (Tet& t : tets) {
+      t.p[t.at] = p;
+      const Vec3 e[6] = {t.p[1] - t.p[0], t.p[2] - t.p[0], t.p[3] - t.p[0],
+                         t.p[2] - t.p[1], t.p[3] - t.p[1], t.p[3] - t.p[2]};
+      double l2 = 0.0, longest = 0.0;
+      for (const Vec3& x : e) l2 += quadratic(t.metric, x), longest = std::max(longest, dot(x, x));
+      const double vol = tet_volume(t.p[0], t.p[1], t.p[2], t.p[3]);
+      if (!(vol > kMinRelativeVolume * longest * std::sqrt(longest))) return std::min(vol, 0.0);
+      const double c3 = t.scale * vol;  // 3 sqrt(det M) |K|, the cube of quality_in's c
+      out3 = std::min(out3, 1728.0 * c3 * c3 / (l2 * l2 * l2));
+      if (!(out3 > floor3)) break;
+    }
+    return std::cbrt(out3);
+  }
+  bool lengths_ok(const Vec3& p) const {
+    for (const Edge& e : edges) {
+      const double l = length_to(e, p);
+      if (!(l >= e.lo && l <= e.hi)) return false;
+    }
+    return true;
+  }
+};
 
 /// Whether the edge (a, b) of the closed shell `shell` lies in no listed face.
 bool interior_edge(const TetMesh& m, std::span<const Id> shell, Id a, Id b) {
@@ -244,6 +335,36 @@ Outcome star_sliver(Remesh3dContext& ctx, Id t, double floor, Id* created) {
   return Outcome::kApplied;
 }
 
+double compass_search(Remesh3dContext& ctx, Id v, const std::vector<Id>& ball, Vec3& p,
+                      double best) {
+  const TetMesh& m = ctx.mesh();
+  thread_local BallModel model;
+  model.build(m, v, ball);
+  const SymEigen<3> e = eigen(m.metric[v]);
+  Vec3 dir[3];
+  for (int i = 0; i < 3; ++i) {
+    const double h = 1.0 / std::sqrt(std::max(e.values[i], 1e-300));
+    dir[i] = Vec3{{h * e.vectors(0, i), h * e.vectors(1, i), h * e.vectors(2, i)}};
+  }
+  int moves = 0;
+  for (double step = 0.2; step > 0.02 && moves < 12;) {
+    Vec3 next = p;
+    double next_q = best;
+    for (int i = 0; i < 6; ++i) {
+      Vec3 q = p + ((i & 1) ? -step : step) * dir[i / 2];
+      if (!ctx.constrain(v, q)) return best;
+      const double w = model.worst(q, next_q);
+      if (w > next_q && model.lengths_ok(q)) next_q = w, next = q;
+    }
+    if (next_q > best + 1e-6) {
+      p = next, best = next_q, ++moves;
+    } else {
+      step *= 0.5;
+    }
+  }
+  return best;
+}
+
 Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
   TetMesh& m = ctx.mesh();
   if (m.vkind[v] == VertexKind::kFixed) return Outcome::kRejectedTopology;
@@ -278,6 +399,7 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
       const double q = worst_at(m, v, ball, p, best, worst_index);
       if (q > best) best = q, best_p = p;
     }
+  if (worst < kCompassBelow) best = compass_search(ctx, v, ball, best_p, best);
   if (!(best > worst + 1e-4)) return Outcome::kRejectedQuality;
   cache.v = v, cache.worst = std::min(worst, 1.0), cache.first = worst_index;  // as move_vertex
   const Outcome o = move_vertex(m, v, best_p, ctx.metric_for(best_p, v), &cache);

@@ -25,6 +25,16 @@ struct SliverLimits {
 /// ball's worst quality went up.
 Outcome optimise_vertex(Remesh3dContext& ctx, Id v);
 
+/// Refines a position p of vertex v (its ball's worst quality `best` there, ball: v's tets) by a
+/// compass search along the principal directions of v's metric: steps of 0.2 metric units halved
+/// down to 0.025, moving to the best of the six neighbours while that raises the worst quality
+/// (v's metric and the mesh unchanged) and no edge at v leaves the band [1/sqrt 2, sqrt 2] or
+/// gets further out of it (at most 12 moves). Boundary vertices stay on their plane, line or
+/// curve (Remesh3dContext::constrain). Returns the worst quality at the final p; the mesh is not
+/// changed. optimise_vertex refines its best candidate so when the ball is below 0.5.
+double compass_search(Remesh3dContext& ctx, Id v, const std::vector<Id>& ball, Vec3& p,
+                      double best);
+
 /// Cuts tet t by a new interior vertex off one of its interior edges (no listed face on it):
 /// every tet of that edge's shell is cut in two, as split_edge, at the point found for each
 /// interior edge of t (from the middle, moves toward the ideal apexes of the new tets) that

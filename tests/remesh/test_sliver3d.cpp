@@ -116,3 +116,46 @@ TEST(Sliver3d, SweepsAreBoundedAndDeterministic) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(a.mesh().xyz[v][k], b.mesh().xyz[v][k]);
   EXPECT_EQ(check_tet_mesh(a.mesh()), "");
 }
+
+// The compass search from a vertex pushed off its place in a regular grid: it climbs back to
+// nearly the grid's quality, its figure is the mesh's own measure (tet_quality) at the point it
+// returns, no edge at the vertex leaves the band, and the mesh is not changed.
+TEST(Sliver3d, CompassSearchClimbsBackToTheGridPlace) {
+  const Mesh cube = perturbed_unit_cube(4, 0.0, 7);
+  // Size 0.31 on the 0.25 grid: its edges (0.81, 1.14, 1.40) in the band.
+  Remesh3dContext ctx(cube, std::vector<SymMat3>(cube.num_vertices(), isotropic_metric<3>(0.31)),
+                      Adapt3dOptions{});
+  TetMesh& m = ctx.mesh();
+  Id v = kNoId;
+  for (std::size_t i = 0; i < m.vertex_capacity(); ++i)
+    if (std::abs(m.xyz[i][0] - 0.5) + std::abs(m.xyz[i][1] - 0.5) + std::abs(m.xyz[i][2] - 0.5) < 1e-9)
+      v = static_cast<Id>(i);
+  ASSERT_NE(v, kNoId);
+  const Vec3 grid_p = m.xyz[v];
+  const double grid = ball_worst(m, v);
+  const auto worst_with_v_at = [&](const Vec3& p) {
+    m.xyz[v] = p;
+    const double q = ball_worst(m, v);
+    m.xyz[v] = grid_p;
+    return q;
+  };
+  std::vector<Id> ball;
+  collect_ball(m, v, ball);
+  Vec3 p = grid_p + Vec3{{0.03, -0.02, 0.025}};
+  const double pushed = worst_with_v_at(p);
+  ASSERT_LT(pushed, 0.9 * grid);
+  const double found = compass_search(ctx, v, ball, p, pushed);
+  EXPECT_GT(found, 0.97 * grid) << "grid " << grid << ", pushed " << pushed;
+  EXPECT_NEAR(found, worst_with_v_at(p), 1e-12);
+  EXPECT_EQ(m.xyz[v][0], grid_p[0]);
+  EXPECT_EQ(m.xyz[v][1], grid_p[1]);
+  EXPECT_EQ(m.xyz[v][2], grid_p[2]);
+  m.xyz[v] = p;
+  for (const Id t : ball)
+    for (int i = 0; i < 4; ++i)
+      if (m.tv[4 * t + i] != v) {
+        EXPECT_GE(edge_length(m, v, m.tv[4 * t + i]), 0.70710678118654752);
+        EXPECT_LE(edge_length(m, v, m.tv[4 * t + i]), 1.4142135623730951);
+      }
+  EXPECT_EQ(check_tet_mesh(m), "");
+}
