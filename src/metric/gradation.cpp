@@ -78,11 +78,13 @@ std::vector<EdgeGeom<D>> edge_geometry(std::span<const double> coords,
   std::vector<EdgeGeom<D>> out(edges.size() / 2);
   for (std::size_t e = 0; e < out.size(); ++e) {
     const int32_t a = edges[2 * e], b = edges[2 * e + 1];
-    const std::string what = "gradation: edge " + std::to_string(e);
-    if (a < 0 || b < 0 || a >= nv || b >= nv) throw InputError(what + ": vertex id out of range");
+    const auto fail = [e](const char* why) {  // the message built only on failure
+      return InputError("gradation: edge " + std::to_string(e) + why);
+    };
+    if (a < 0 || b < 0 || a >= nv || b >= nv) throw fail(": vertex id out of range");
     const Vec<D> ab = vertex<D>(coords, b) - vertex<D>(coords, a);
     const double len = norm(ab);
-    if (!(len > 0.0) || !std::isfinite(len)) throw InputError(what + ": zero or non-finite length");
+    if (!(len > 0.0) || !std::isfinite(len)) throw fail(": zero or non-finite length");
     out[e] = {a, b, ab / len, len};
   }
   return out;
@@ -93,6 +95,12 @@ template <int D>
 double mean_size(const SymMat<D>& m) {
   return std::pow(det(m), -0.5 / D);
 }
+
+/// The gradation rule of the corrections: its mode and threshold β, and ln β computed once.
+struct Rule {
+  GradationMode mode;
+  double threshold, log_beta;
+};
 
 struct Shock {
   double log_c;   // ln c, c the H-shock
@@ -111,18 +119,17 @@ Shock h_shock(double hs, double hl, double len) {
 
 /// The largest size the larger end (size hl) may keep given the smaller end's size hs (hs <= hl):
 /// Hv: hs + α|AB|; Hc: hs β^L = η hl with η = (β/c)^L; isotropic growth: hs(1 + (|AB|/hs) ln β).
-double graded_size(const GradationOptions& o, double hs, double hl, double len) {
+double graded_size(const Rule& o, double hs, double hl, double len) {
   switch (o.mode) {
     case GradationMode::kHVariation:
       return std::min(hl, hs + o.threshold * len);
     case GradationMode::kHShock: {
       const Shock s = h_shock(hs, hl, len);
-      const double log_beta = std::log(o.threshold);
-      return s.log_c > log_beta ? hs * std::exp(s.length * log_beta) : hl;
+      return s.log_c > o.log_beta ? hs * std::exp(s.length * o.log_beta) : hl;
     }
     case GradationMode::kGrowth:
     case GradationMode::kGrowthPhysical:
-      return std::min(hl, hs + len * std::log(o.threshold));
+      return std::min(hl, hs + len * o.log_beta);
   }
   return hl;
 }
@@ -131,7 +138,7 @@ double graded_size(const GradationOptions& o, double hs, double hl, double len) 
 /// uniformly, which keeps its directions and anisotropy and sets its mean size exactly.
 template <int D>
 bool correct_isotropic(const EdgeGeom<D>& e, std::span<SymMat<D>> m, std::vector<double>& h,
-                       const GradationOptions& o, Marks& touched) {
+                       const Rule& o, Marks& touched) {
   const int32_t s = h[e.a] <= h[e.b] ? e.a : e.b, l = (s == e.a) ? e.b : e.a;
   const double target = graded_size(o, h[s], h[l], e.len);
   if (!(target < h[l] * (1.0 - kRelTol))) return false;
@@ -186,7 +193,7 @@ double floored_eta(const Vec<D>& w, const Vec<D>& h, double h_iso, double target
 /// hᵢ ← max(η hᵢ, h*_iso) (never above hᵢ) with the principal directions kept; η as in
 /// floored_eta (equal to target/h_AB when the floor is not reached).
 template <int D>
-bool correct_anisotropic(const EdgeGeom<D>& e, std::span<SymMat<D>> m, const GradationOptions& o,
+bool correct_anisotropic(const EdgeGeom<D>& e, std::span<SymMat<D>> m, const Rule& o,
                          Marks& touched) {
   const double ha = 1.0 / length(m[e.a], e.u), hb = 1.0 / length(m[e.b], e.u);
   const int32_t s = ha <= hb ? e.a : e.b, l = (s == e.a) ? e.b : e.a;
@@ -257,11 +264,10 @@ bool intersect_grown_both_ways(const EdgeGeom<D>& e, std::span<SymMat<D>> m,
 /// Metric-space growth (Alauzet 2010): M_B grown to A is η² M_B with η = (1 + ℓ_{M_B}(AB) ln β)⁻¹
 /// (sizes grow linearly in the metric length of the edge).
 template <int D>
-bool correct_growth(const EdgeGeom<D>& e, std::span<SymMat<D>> m, const GradationOptions& o,
+bool correct_growth(const EdgeGeom<D>& e, std::span<SymMat<D>> m, const Rule& o,
                     Marks& touched) {
-  const double log_beta = std::log(o.threshold);
   return intersect_grown_both_ways<D>(e, m, touched, [&](const SymMat<D>& from) {
-    const double eta = 1.0 / (1.0 + e.len * length(from, e.u) * log_beta);
+    const double eta = 1.0 / (1.0 + e.len * length(from, e.u) * o.log_beta);
     return (eta * eta) * from;
   });
 }
@@ -270,8 +276,8 @@ bool correct_growth(const EdgeGeom<D>& e, std::span<SymMat<D>> m, const Gradatio
 /// η_i = (1 + |AB| ln β / h_i)⁻² per principal direction.
 template <int D>
 bool correct_growth_physical(const EdgeGeom<D>& e, std::span<SymMat<D>> m,
-                             const GradationOptions& o, Marks& touched) {
-  const double add = e.len * std::log(o.threshold);
+                             const Rule& o, Marks& touched) {
+  const double add = e.len * o.log_beta;
   return intersect_grown_both_ways<D>(e, m, touched, [add](const SymMat<D>& from) {
     MetricSizes<D> s = sizes(from);
     for (int i = 0; i < D; ++i) s.sizes[i] += add;
@@ -308,7 +314,8 @@ GradationReport gradate(std::span<const double> coords, std::span<const int32_t>
   options.validate();
   const std::vector<EdgeGeom<D>> geom = edge_geometry<D>(coords, edges, metrics.size());
   for (std::size_t v = 0; v < metrics.size(); ++v)
-    require_metric(metrics[v], "gradation: vertex " + std::to_string(v));
+    if (!is_finite(metrics[v]) || !is_spd(metrics[v]))  // the message built only on failure
+      require_metric(metrics[v], "gradation: vertex " + std::to_string(v));
   const bool hv = options.mode == GradationMode::kHVariation;
   const std::span<const SymMat<D>> view(metrics.data(), metrics.size());
   GradationReport r;
@@ -322,6 +329,7 @@ GradationReport gradate(std::span<const double> coords, std::span<const int32_t>
   // Every counted correction shrinks a size by more than kRelTol, and no size drops below the
   // smallest initial size (the h*_iso floor, the intersection keeps the smaller size), so the
   // sizes decrease to a limit; max_passes bounds the cost at O(edges × passes).
+  const Rule rule{options.mode, options.threshold, std::log(options.threshold)};
   for (int pass = 1; pass <= options.max_passes; ++pass) {
     bool changed = false;
     touched.pass = pass;
@@ -329,13 +337,13 @@ GradationReport gradate(std::span<const double> coords, std::span<const int32_t>
       if (!touched.active(e.a, e.b)) continue;
       bool c;
       if (!options.anisotropic)
-        c = correct_isotropic(e, metrics, h, options, touched);
+        c = correct_isotropic(e, metrics, h, rule, touched);
       else if (options.mode == GradationMode::kGrowth)
-        c = correct_growth(e, metrics, options, touched);
+        c = correct_growth(e, metrics, rule, touched);
       else if (options.mode == GradationMode::kGrowthPhysical)
-        c = correct_growth_physical(e, metrics, options, touched);
+        c = correct_growth_physical(e, metrics, rule, touched);
       else
-        c = correct_anisotropic(e, metrics, options, touched);
+        c = correct_anisotropic(e, metrics, rule, touched);
       changed = changed || c;
     }
     r.passes = pass;
