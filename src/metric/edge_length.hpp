@@ -127,9 +127,10 @@ inline double edge_length_simpson(const SymMat<D>& ma, const SymMat<D>& mb, cons
 /// Edge length by the 3-point Gauss–Legendre rule on the log-Euclidean interpolated field where
 /// the end metrics do not commute (else the closed form, as edge_length_simpson); the logarithms
 /// of the end metrics when the caller keeps them. Three exponentials instead of Simpson's one:
-/// across polar2d's layer (a chord of r = 0.5 whose length density is V-shaped) Simpson's rule
-/// reads 8–12% short of the analytic length, this rule within 1% (the interpolated field itself
-/// reads ~3% long there, the rule ~3% short of it). Used by the relocations after the passes.
+/// across polar2d's layer (chords 0.03–0.06 long near r = 0.5, whose length density is
+/// V-shaped) Simpson's rule on the vertex metrics reads 6–19% short of the analytic length, this
+/// rule 2% long to 9% short (within 1% where the chord stays on one side of r = 0.5, where the
+/// field's radial size has its kink). Used by the relocations after the passes.
 template <int D>
 inline double edge_length_gauss3(const SymMat<D>& ma, const SymMat<D>& mb, const Vec<D>& ab,
                                  const SymMat<D>* log_a = nullptr,
