@@ -124,6 +124,25 @@ inline double edge_length_simpson(const SymMat<D>& ma, const SymMat<D>& mb, cons
   return (la + 4.0 * length(mid, ab) + lb) / 6.0;
 }
 
+/// Edge length by the 3-point Gauss–Legendre rule on the log-Euclidean interpolated field where
+/// the end metrics do not commute (else the closed form, as edge_length_simpson); the logarithms
+/// of the end metrics when the caller keeps them. Three exponentials instead of Simpson's one:
+/// across polar2d's layer (chords 0.03–0.06 long near r = 0.5, whose length density is
+/// V-shaped) Simpson's rule on the vertex metrics reads 6–19% short of the analytic length, this
+/// rule 2% long to 9% short (within 1% where the chord stays on one side of r = 0.5, where the
+/// field's radial size has its kink). Used by the relocations after the passes.
+template <int D>
+inline double edge_length_gauss3(const SymMat<D>& ma, const SymMat<D>& mb, const Vec<D>& ab,
+                                 const SymMat<D>* log_a = nullptr,
+                                 const SymMat<D>* log_b = nullptr) {
+  if (commute(ma, mb)) return edge_length_geometric(ma, mb, ab);
+  const SymMat<D> la = log_a ? *log_a : log_spd(ma), lb = log_b ? *log_b : log_spd(mb);
+  constexpr double kOff = 0.3872983346207417;  // nodes 1/2 ∓ √(3/5)/2, weights 5/18, 8/18, 5/18
+  return (5.0 / 18.0) * (length(exp_sym_series((0.5 + kOff) * la + (0.5 - kOff) * lb), ab) +
+                         length(exp_sym_series((0.5 - kOff) * la + (0.5 + kOff) * lb), ab)) +
+         (8.0 / 18.0) * length(exp_sym_series(0.5 * (la + lb)), ab);
+}
+
 /// The sign of edge_length_simpson(ma, mb, ab, ...) − limit (0 only when equal); for commuting
 /// metrics the logarithm only when needed (compare_edge_length_geometric).
 template <int D>

@@ -20,6 +20,14 @@ inline double edge_length(const TriMesh& m, Id a, Id b) {
                              log_of(m.log_metric, b));
 }
 
+/// Metric length of edge (a, b) by the 3-point Gauss–Legendre rule where the end metrics do not
+/// commute (edge_length_gauss3: closer to the field's length than Simpson's rule across a curved
+/// layer), else the closed form. The relocations after the passes measure the band with it.
+inline double edge_length_gauss3(const TriMesh& m, Id a, Id b) {
+  return edge_length_gauss3(m.metric[a], m.metric[b], m.xy[b] - m.xy[a], log_of(m.log_metric, a),
+                            log_of(m.log_metric, b));
+}
+
 /// The sign of edge_length(m, a, b) − limit (0 only when equal); for commuting end metrics the
 /// logarithm only when needed (compare_edge_length_geometric).
 inline int compare_edge_length(const TriMesh& m, Id a, Id b, double limit) {

@@ -263,7 +263,7 @@ bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVe
   before.clear();
   double excess_now = 0.0;
   for (const Id a : around) {
-    const double bad = length_badness(edge_length(mesh_, v, a));
+    const double bad = length_badness(edge_length_gauss3(mesh_, v, a));
     before.push_back(std::max(kBandBadness, bad));
     excess_now += std::max(0.0, bad - kBandBadness);
   }
@@ -298,7 +298,7 @@ bool Remesh2dContext::quality_target(Id v, const Ball& ball, double worst, NewVe
     double excess = 0.0;
     for (std::size_t k = 0; k < around.size(); ++k) {
       const Id a = around[k];
-      const double bad = length_badness(edge_length_simpson(
+      const double bad = length_badness(edge_length_gauss3(
           mp, mesh_.metric[a], mesh_.xy[a] - p, &lp, log_of(mesh_.log_metric, a)));
       if (bad > before[k]) return kNone;
       excess += std::max(0.0, bad - kBandBadness);

@@ -42,8 +42,10 @@ class Remesh2dContext {
   /// (a thin curved layer: there unit lengths and good shapes pull apart, and the length-driven
   /// smoothing_target leaves poor balls): a pattern search from v's position in steps measured
   /// in v's metric, or along its curve, each candidate with its metric from the background; no
-  /// edge of v may leave [1/√2, √2] or get further from it. False when the metrics of the ball
-  /// commute or when no candidate raises the ball's worst quality `worst` by more than 1e-3.
+  /// edge of v may leave [1/√2, √2] or get further from it, lengths by the 3-point Gauss rule
+  /// (edge_length_gauss3: Simpson's rule reads the layer's tangential chords 6–19% short, and
+  /// moves kept in its band pushed them out of the field's). False when the metrics of the
+  /// ball commute or when no candidate raises the ball's worst quality `worst` by more than 1e-3.
   /// With `length_floor` > 0: the position where v's edges are least outside [1/√2, √2], no
   /// ball triangle below min(worst, length_floor); false when none is better by 1e-3 in the sum
   /// of their length_badness beyond √2.

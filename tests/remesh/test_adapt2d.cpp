@@ -182,10 +182,12 @@ TEST(Adapt2d, PolarLayerRelocatedAfterThePasses) {
   // length-driven smoothing left poor balls and edges out of band there (96.9% in band, q min
   // 0.358). After the passes: the quality-driven relocation of the poor balls alone gives
   // 97.2%, q min 0.419; the length-driven one of the ends of the edges out of band alone 97.6%,
-  // 0.369; both 98.2%, 0.410 (q mean 0.837-0.838 throughout).
+  // 0.369; both 98.2%, 0.410 (q mean 0.837-0.838 throughout); 97.8%, 0.418 by the code of
+  // 2026-12-04. With the band measured by the 3-point Gauss rule, poor balls below 0.55 and two
+  // rounds of both: 97.7%, 0.445 (q mean 0.835).
   const PolarFigures f = polar_run(0.001, 5);
   EXPECT_GE(f.in_band, 0.975);
-  EXPECT_GE(f.q_min, 0.40);
+  EXPECT_GE(f.q_min, 0.43);
   EXPECT_GE(f.q_mean, 0.80);
 }
 
