@@ -17,6 +17,15 @@ constexpr InterpScheme kAll[] = {
     InterpScheme::kIsoHarmonic,     InterpScheme::kSimredLinear, InterpScheme::kSimredGeometric,
     InterpScheme::kPower,           InterpScheme::kLogEuclidean, InterpScheme::kCholesky,
     InterpScheme::kCholeskyGeometric};
+
+/// A thin layer's metric (size hr across, ht along) with its stiff axis turned by `angle` from x.
+SymMat2 turned_layer_metric(double hr, double ht, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  Mat2 r;
+  r(0, 0) = c, r(0, 1) = -s, r(1, 0) = s, r(1, 1) = c;
+  return compose(r, Vec2{{1 / (hr * hr), 1 / (ht * ht)}});
+}
+
 }  // namespace
 
 TEST(EdgeLength, GaussLegendreTablesAreExactToDegree2nMinus1) {
@@ -130,12 +139,7 @@ TEST(EdgeLength, SimpsonSeesTheMetricTurnAlongAChord) {
   // l_M² = |ab|² exp((α + β)/2 − (α − β)/2 cos(2 phi)).
   const double hr = 0.001, ht = 0.1, phi = 0.045, len = 0.045;
   const double alpha = std::log(1 / (hr * hr)), beta = std::log(1 / (ht * ht));
-  const auto metric = [&](double angle) {
-    const double c = std::cos(angle), s = std::sin(angle);
-    Mat2 r;
-    r(0, 0) = c, r(0, 1) = -s, r(1, 0) = s, r(1, 1) = c;
-    return compose(r, Vec2{{1 / (hr * hr), 1 / (ht * ht)}});
-  };
+  const auto metric = [&](double angle) { return turned_layer_metric(hr, ht, angle); };
   const SymMat2 ma = metric(phi), mb = metric(-phi);
   const Vec2 ab{{0.0, len}};
   const double l_end = len * std::sqrt(std::sin(phi) * std::sin(phi) / (hr * hr) +
@@ -200,12 +204,7 @@ TEST(EdgeLength, Gauss3ReadsTheTurningChordCloserThanSimpson) {
   // The chord of SimpsonSeesTheMetricTurnAlongAChord: the 8-point rule on the interpolated field
   // gives 1.147, Simpson's rule 0.994 (13% short), the 3-point rule 1.106 (3.6% short).
   const double hr = 0.001, ht = 0.1, phi = 0.045, len = 0.045;
-  const auto metric = [&](double angle) {
-    const double c = std::cos(angle), s = std::sin(angle);
-    Mat2 r;
-    r(0, 0) = c, r(0, 1) = -s, r(1, 0) = s, r(1, 1) = c;
-    return compose(r, Vec2{{1 / (hr * hr), 1 / (ht * ht)}});
-  };
+  const auto metric = [&](double angle) { return turned_layer_metric(hr, ht, angle); };
   const SymMat2 ma = metric(phi), mb = metric(-phi);
   const Vec2 ab{{0.0, len}};
   const double gauss8 = edge_length_quadrature(ma, mb, ab, InterpScheme::kLogEuclidean, 8);
