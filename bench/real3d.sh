@@ -8,7 +8,7 @@
 # the two-sided Hausdorff distance of the boundary to that of the run's input and to the original
 # (riemesh distance; each run keeps its own input within --hausd, so the original drifts over
 # runs); whether the boundary and tet refs are those of the input; CPU time and peak memory of the
-# last run.
+# last run. GEOMETRY=1: every run with --geometry ORIGINAL (no drift from the original).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 R=${RIEMESH:-$PWD/build/riemesh}  # RIEMESH=path: another binary
@@ -28,7 +28,7 @@ P = medit.read_mesh('$orig')['vertices']; print('%.3g' % (np.linalg.norm(P.max(0
         -o "$out/${c}_$((k - 1)).sol"
       /usr/bin/time -f "%U %M" -o "$out/time" "$R" adapt "$out/${c}_$((k - 1)).mesh" \
         --metric "$out/${c}_$((k - 1)).sol" -o "$out/${c}_$k.mesh" -q --hausd "$hausd" \
-        --out-metric "$out/${c}_$k.used.sol"
+        --out-metric "$out/${c}_$k.used.sol" ${GEOMETRY:+--geometry "$orig"}
     done
     last=$out/${c}_$runs
     /usr/bin/python3 bench/real3d_metrics.py "$field" "$last.mesh" --box "$orig" -o "$last.sol"

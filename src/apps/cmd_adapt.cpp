@@ -29,7 +29,7 @@ namespace {
 
 struct AdaptArgs {
   std::string input, output, metric, out_metric, fields, out_fields, interp = "log";
-  std::string field, field_name, norm = "2", recovery = "lsq";
+  std::string field, field_name, norm = "2", recovery = "lsq", geometry;
   double hsiz = 0.0, complexity = 0.0, aniso_max = std::numeric_limits<double>::infinity();
   bool optim = false, noinsert = false, noswap = false, nomove = false, nr = false;
   bool quiet = false, aniso = false, nosurf = false;
@@ -187,6 +187,15 @@ void run3d(const AdaptArgs& a, Mesh&& mesh) {
   if (!(a.approach == 0.0 || a.approach > 1.0) || !std::isfinite(a.approach))
     throw InputError("--approach must be 0 (the metric at once) or a size ratio > 1");
   opt.approach_growth = a.approach;
+  Mesh geometry;
+  if (!a.geometry.empty()) {
+    if (a.nosurf) throw InputError("--geometry and --nosurf contradict: the surface is kept as given");
+    geometry = read_mesh(a.geometry);
+    if (geometry.dim != 3 || geometry.num_triangles() == 0)
+      throw InputError(a.geometry + ": no triangles in 3D: --geometry takes the original volume "
+                       "(its listed boundary triangles) or surface");
+    opt.geometry = &geometry;
+  }
   const auto progress = [&](const PassStats& s) {
     if (!a.quiet) print_pass(s, a.verbosity, "tetrahedra");
   };
@@ -227,6 +236,8 @@ void run(AdaptArgs& a) {
   }
   if (!a.fields.empty() && a.out_fields.empty())
     throw InputError("--fields needs --out-fields OUT.sol for the transferred fields");
+  if (!a.geometry.empty() && mesh.kind() != MeshKind::kVolume)
+    throw InputError("--geometry applies to tetrahedral volumes");
   if (surface) return run_surface(a, mesh);
   if (sources == 0)
     throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");
@@ -292,6 +303,10 @@ void register_adapt(CLI::App& app) {
   cmd->add_flag("--nr", a->nr, "No corner detection by angle");
   cmd->add_flag("--aniso", a->aniso, "Surfaces: anisotropic geometric metric (BOOK.md §1)");
   cmd->add_flag("--nosurf", a->nosurf, "3D: keep the boundary surface untouched");
+  cmd->add_option("--geometry", a->geometry,
+                  "3D: the original geometry (volume or surface mesh): curved patches are placed on "
+                  "and kept within --hausd of its triangles of the same refs, not of the input's "
+                  "boundary (adaptation loops: no drift from run to run)");
   cmd->add_option("--approach", a->approach,
                   "3D: largest size ratio asked from one stage to the next when the mesh is far "
                   "from the metric (stages toward it from the mesh's own sizes; 0: at once)")

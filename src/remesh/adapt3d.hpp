@@ -30,6 +30,12 @@ struct Adapt3dOptions : Adapt2dOptions {
   /// mesh from one stage to the next; 0: the target at once. A mesh already near its target
   /// (no input edge longer than this in the target metric) has one stage.
   double approach_growth = 4.0;
+  /// The original geometry (not owned; null: the input's): its listed triangles with the refs of
+  /// the input's curved patches are the surface those patches are reconstructed from, placed on
+  /// and kept within hausd of, instead of the input's own boundary. For adaptation loops: each
+  /// run then stays within hausd of the original, not of the previous run's boundary. The input's
+  /// boundary should lie within hausd of it (a previous run with the same geometry does).
+  const Mesh* geometry = nullptr;
 };
 
 struct Adapt3dResult {

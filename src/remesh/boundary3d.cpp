@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
 
 #include "core/error.hpp"
 #include "metric/intersection.hpp"
@@ -83,7 +84,40 @@ Boundary3d::Boundary3d(const TetMesh& m, std::vector<std::int32_t> curved_refs,
   }
   geo_ = std::make_unique<SurfaceProjection>(s, feature_options(options), std::move(metric),
                                              kLift * hausd_);
-  tag_ = geo_->features().vert_tag;
+  tag_ = geo_->features().vert_tag;  // the kinds: the input's features
+  if (options.geometry) geo_ = geometry_projection(*options.geometry, options);
+}
+
+std::unique_ptr<SurfaceProjection> Boundary3d::geometry_projection(const Mesh& g,
+                                                                   const Adapt3dOptions& options) const {
+  Mesh s;
+  s.dim = 3;
+  std::vector<Id> sid(g.num_vertices(), kNoId);
+  std::string refs;
+  for (std::size_t t = 0; t < g.num_triangles(); ++t) {
+    if (!curved(g.tri_ref[t])) continue;
+    for (int k = 0; k < 3; ++k) {
+      const Id v = g.triangles[3 * t + static_cast<std::size_t>(k)];
+      if (sid[v] == kNoId) {
+        sid[v] = static_cast<Id>(s.num_vertices());
+        s.coords.insert(s.coords.end(), {g.coords[3 * v], g.coords[3 * v + 1], g.coords[3 * v + 2]});
+        s.vert_ref.push_back(g.vert_ref.empty() ? 0 : g.vert_ref[v]);
+        s.vert_tag.push_back(g.vert_tag.empty() ? 0 : g.vert_tag[v]);
+      }
+      s.triangles.push_back(sid[v]);
+    }
+    s.tri_ref.push_back(g.tri_ref[t]);
+  }
+  if (s.triangles.empty()) {
+    for (const std::int32_t r : curved_refs_) refs += (refs.empty() ? "" : ", ") + std::to_string(r);
+    throw InputError("geometry: no triangle with the ref of a curved boundary patch of the input (" +
+                     refs + ")");
+  }
+  // The metric the projection interpolates at placed points is not used here (place() keeps
+  // the point only).
+  std::vector<SymMat3> metric(s.num_vertices(), SymMat3::identity());
+  return std::make_unique<SurfaceProjection>(s, feature_options(options), std::move(metric),
+                                             kLift * hausd_);
 }
 
 bool Boundary3d::curved(std::int32_t ref) const {

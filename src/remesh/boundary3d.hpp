@@ -38,7 +38,8 @@ inline bool on_curved_boundary(VertexKind k) {
 class Boundary3d {
  public:
   /// Builds the reconstruction of the listed domain-boundary faces of m whose ref is in
-  /// `curved_refs` (sorted).
+  /// `curved_refs` (sorted), or of options.geometry's triangles with those refs when given (the
+  /// vertex kinds still from m's faces). Throws InputError when the geometry has none.
   Boundary3d(const TetMesh& m, std::vector<std::int32_t> curved_refs, const Adapt3dOptions& options);
   Boundary3d(const Boundary3d&) = delete;
   Boundary3d& operator=(const Boundary3d&) = delete;
@@ -57,6 +58,10 @@ class Boundary3d {
                const std::vector<Tri3>& new_t) const;
 
  private:
+  /// The reconstruction of Adapt3dOptions::geometry's triangles with curved refs.
+  std::unique_ptr<SurfaceProjection> geometry_projection(const Mesh& g,
+                                                         const Adapt3dOptions& options) const;
+
   std::vector<std::int32_t> curved_refs_;
   std::vector<Id> surf_id_;         // per tet-mesh vertex: its surface vertex, or kNoId
   std::vector<std::uint8_t> tag_;   // per surface vertex: feature tags
