@@ -399,7 +399,8 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v) {
       const double q = worst_at(m, v, ball, p, best, worst_index);
       if (q > best) best = q, best_p = p;
     }
-  if (worst < kCompassBelow) best = compass_search(ctx, v, ball, best_p, best);
+  if (worst < kCompassBelow && m.vkind[v] == VertexKind::kInterior)
+    best = compass_search(ctx, v, ball, best_p, best);
   if (!(best > worst + 1e-4)) return Outcome::kRejectedQuality;
   cache.v = v, cache.worst = std::min(worst, 1.0), cache.first = worst_index;  // as move_vertex
   const Outcome o = move_vertex(m, v, best_p, ctx.metric_for(best_p, v), &cache);

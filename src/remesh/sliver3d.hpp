@@ -31,7 +31,8 @@ Outcome optimise_vertex(Remesh3dContext& ctx, Id v);
 /// (v's metric and the mesh unchanged) and no edge at v leaves the band [1/sqrt 2, sqrt 2] or
 /// gets further out of it (at most 12 moves). Boundary vertices stay on their plane, line or
 /// curve (Remesh3dContext::constrain). Returns the worst quality at the final p; the mesh is not
-/// changed. optimise_vertex refines its best candidate so when the ball is below 0.5.
+/// changed. optimise_vertex refines its best candidate so when the ball is below 0.5 and v is
+/// interior (on the bunny's curved boundary the boundary moves lowered the worst tet: README).
 double compass_search(Remesh3dContext& ctx, Id v, const std::vector<Id>& ball, Vec3& p,
                       double best);
 
