@@ -13,7 +13,9 @@ namespace riemesh {
 std::string read_file_bytes(const std::string& path);
 
 /// A file being written atomically: write(), then commit() to rename it into place. Destroying
-/// it without commit() removes the temporary file. I/O failures throw riemesh::Error.
+/// it without commit() removes the temporary file. I/O failures (a missing or read-only folder, a
+/// folder of the target's name, a full disk) throw InputError naming the path: they are the
+/// user's to fix, not bugs; misuse (write after commit) throws riemesh::Error.
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path, bool sync = false);
