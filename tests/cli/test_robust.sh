@@ -18,4 +18,16 @@ expect_no_file convert-unwritable-no-temporary "$TMP/file/o.mesh"
 expect_error render-unwritable render "$AILE" -o "$TMP/taken.svg"
 expect_error hessian-unwritable metric hessian "$LSHAPE" "$D/formats/lshape.sol" --complexity 100 \
   -o "$TMP/taken.sol"
+
+# A metric asking for more vertices than ids hold: one tensor of 1e308 crashed adapt (SIGSEGV), a
+# complexity of 1e12 ran for hours. Now refused at once.
+write_metric_rows() {  # PATH ROW: lshape_metric.sol with its sixth tensor replaced by ROW
+  awk -v row="$2" 'done == 0 && seen >= 1 { n++; if (n == 6) { print row; done = 1; next } }
+    /^1 3$/ { seen = 1 } { print }' "$MET" >"$1"
+}
+write_metric_rows "$TMP/huge.sol" "1e308 0 1e308"
+expect_error adapt-huge-tensor adapt "$LSHAPE" --metric "$TMP/huge.sol" -o "$TMP/h.mesh" -q
+expect_no_file adapt-huge-tensor-no-file "$TMP/h.mesh"
+expect_error adapt-complexity-1e12 adapt "$LSHAPE" --field "$D/formats/lshape.sol" --complexity 1e12 \
+  -o "$TMP/c.mesh" -q
 exit $fail

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 #include "core/error.hpp"
 #include "mesh/check.hpp"
@@ -243,6 +244,25 @@ TEST(Adapt2d, BoundaryStaysOnTheSquare) {
       const double d = std::min({x, y, 1.0 - x, 1.0 - y});
       EXPECT_LT(std::abs(d), 1e-14) << "boundary vertex off the square at " << x << ", " << y;
     }
+}
+
+// A metric whose unit mesh cannot be built: one tensor of 1e308 (sizes 1e-154) made adapt2d
+// crash (boundary curve parameter NaN), a complexity of 1e12 ran for hours. The count of vertices
+// asked for, (2/√3) C, over the 2^31 - 1 ids is an InputError naming the finest place.
+TEST(Adapt2d, MetricAskingTooManyVertices) {
+  const Mesh in = unit_square(4, 4);
+  std::vector<SymMat2> met(in.num_vertices(), SymMat2::identity());
+  met[6] = SymMat2{{1e308, 0.0, 1e308}};
+  try {
+    adapt2d(in, met, {});
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    // unit_square(4, 4) numbers vertices row by row: vertex 6 is (0.25, 0.25).
+    EXPECT_NE(std::string(e.what()).find("near (0.25, 0.25)"), std::string::npos) << e.what();
+  }
+  // Complexity 1e12 on the unit square: sizes 1e-6.
+  met.assign(in.num_vertices(), isotropic_metric<2>(1e-6));
+  EXPECT_THROW(adapt2d(in, met, {}), InputError);
 }
 
 TEST(Adapt2d, BadInput) {

@@ -250,6 +250,10 @@ TEST(Adapt3d, BadInputIsRefused) {
   std::swap(inverted.tets[0], inverted.tets[1]);
   EXPECT_THROW(adapt3d(inverted, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()), {}),
                InputError);
+  // Sizes 1e-102 at one vertex: the metric asks for more vertices than 32-bit ids hold.
+  metrics.assign(cube.num_vertices(), SymMat3::identity());
+  metrics[5] = SymMat3::diagonal(1e204);
+  EXPECT_THROW(adapt3d(cube, metrics, {}), InputError);
   const Mesh square = unit_square(2, 2);
   EXPECT_THROW(adapt3d(square, std::vector<SymMat3>(square.num_vertices(), SymMat3::identity()), {}),
                InputError);
