@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <sys/resource.h>
 
@@ -14,6 +15,7 @@
 #include "apps/commands.hpp"
 #include "apps/field_args.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
 #include "metric/element.hpp"
@@ -200,6 +202,24 @@ void run3d(const AdaptArgs& a, Mesh&& mesh) {
   if (a.verbosity > 0 && !a.quiet) print_peak_memory(r.mesh.num_tets());
 }
 
+/// Every output is named right, distinct and writable before the run: a bad second output
+/// once failed after the first was written (`-o o.mesh --out-fields o.mesh` left o.mesh).
+void require_outputs(const AdaptArgs& a) {
+  mesh_format(a.output);
+  std::vector<std::string> done{a.output};
+  for (const std::string& sol : {a.fields.empty() ? std::string() : a.out_fields, a.out_metric}) {
+    if (sol.empty()) continue;
+    if (!sol.ends_with(".sol") && !sol.ends_with(".solb"))
+      throw InputError(sol + ": not a Medit solution file name (.sol or .solb expected)");
+    for (const std::string& other : done)
+      if (std::filesystem::path(sol).lexically_normal() ==
+          std::filesystem::path(other).lexically_normal())
+        throw InputError(sol + ": named for two outputs");
+    done.push_back(sol);
+  }
+  for (const std::string& path : done) require_writable(path);
+}
+
 void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
   if (!(a.hsiz >= 0.0) || !std::isfinite(a.hsiz))
@@ -227,6 +247,7 @@ void run(AdaptArgs& a) {
   }
   if (!a.fields.empty() && a.out_fields.empty())
     throw InputError("--fields needs --out-fields OUT.sol for the transferred fields");
+  require_outputs(a);
   if (surface) return run_surface(a, mesh);
   if (sources == 0)
     throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");

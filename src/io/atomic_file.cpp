@@ -109,6 +109,13 @@ void AtomicFile::commit() {
   }
 }
 
+void require_writable(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw InputError(path + ": is a folder, not a file name for the output");
+  AtomicFile probe(path);  // creates a temporary beside the target; removed, uncommitted
+}
+
 void write_file_atomically(const std::string& path, std::string_view contents, bool sync) {
   AtomicFile file(path, sync);
   file.write(contents);

@@ -41,6 +41,11 @@ class AtomicFile {
   bool sync_ = false;
 };
 
+/// Throws InputError naming the path unless a file can be written there: its folder exists and
+/// takes new files, and no folder has its name. Commands with several outputs call it for each
+/// before any work, so that the last output cannot fail after the first is written.
+void require_writable(const std::string& path);
+
 /// Writes `contents` to `path` atomically.
 void write_file_atomically(const std::string& path, std::string_view contents, bool sync = false);
 

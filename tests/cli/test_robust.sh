@@ -30,4 +30,16 @@ expect_error adapt-huge-tensor adapt "$LSHAPE" --metric "$TMP/huge.sol" -o "$TMP
 expect_no_file adapt-huge-tensor-no-file "$TMP/h.mesh"
 expect_error adapt-complexity-1e12 adapt "$LSHAPE" --field "$D/formats/lshape.sol" --complexity 1e12 \
   -o "$TMP/c.mesh" -q
+
+# Several outputs: all checked before the run, so that a bad second one cannot fail after the
+# first is written.
+expect_error adapt-out-metric-unwritable adapt "$LSHAPE" --metric "$MET" -o "$TMP/m1.mesh" \
+  --out-metric /nonexistent/m.sol -q
+expect_no_file adapt-out-metric-unwritable-no-mesh "$TMP/m1.mesh"
+expect_error adapt-out-fields-is-output adapt "$LSHAPE" --metric "$MET" --fields "$D/formats/lshape.sol" \
+  -o "$TMP/m2.mesh" --out-fields "$TMP/m2.mesh" -q
+expect_no_file adapt-out-fields-is-output-no-mesh "$TMP/m2.mesh"
+expect_error adapt-out-fields-not-sol adapt "$LSHAPE" --field "$D/formats/lshape.sol" --complexity 200 \
+  -o "$TMP/m3.mesh" --out-fields "$TMP/m3.txt" -q
+expect_no_file adapt-out-fields-not-sol-no-mesh "$TMP/m3.mesh"
 exit $fail

@@ -72,6 +72,14 @@ TEST(AtomicFile, FolderInTheWayIsAnInputErrorAndLeavesNothing) {
             1);
 }
 
+TEST(AtomicFile, RequireWritable) {
+  test::ScratchDir dir;
+  EXPECT_NO_THROW(require_writable(dir.file("out.mesh")));
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));  // the probe left nothing
+  EXPECT_THROW(require_writable(dir.path()), InputError);
+  EXPECT_THROW(require_writable("/nonexistent-dir/x.mesh"), InputError);
+}
+
 TEST(AtomicFile, ReadFileBytes) {
   test::ScratchDir dir;
   const std::string bytes("a\0b\nc", 5);
