@@ -42,4 +42,9 @@ expect_no_file adapt-out-fields-is-output-no-mesh "$TMP/m2.mesh"
 expect_error adapt-out-fields-not-sol adapt "$LSHAPE" --field "$D/formats/lshape.sol" --complexity 200 \
   -o "$TMP/m3.mesh" --out-fields "$TMP/m3.txt" -q
 expect_no_file adapt-out-fields-not-sol-no-mesh "$TMP/m3.mesh"
+# metric combine --mode lp: one output per sub-interval, the second unwritable.
+SOL=$MET  # SPD tensors, as Hessian samples
+expect_error combine-lp-second-unwritable metric combine "$SOL" "$SOL" --mode lp --complexity 300 \
+  --intervals 2 --mesh "$LSHAPE" -o "$TMP/lp1.sol,/nonexistent/lp2.sol"
+expect_no_file combine-lp-second-unwritable-no-first "$TMP/lp1.sol"
 exit $fail
