@@ -14,6 +14,7 @@
 #include "apps/adapt_surface.hpp"
 #include "apps/commands.hpp"
 #include "apps/field_args.hpp"
+#include "apps/mesh_args.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/mesh_file.hpp"
@@ -105,7 +106,7 @@ std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
   if (!a.metric.empty()) return read_metric_file<2>(a.metric, mesh);
   if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
   if (!a.field.empty()) return metric_from_field<2>(a, mesh);
-  return implied_metric_of_used(mesh);
+  return naming_file(a.input, [&] { return implied_metric_of_used(mesh); });
 }
 
 void print_pass(const PassStats& s, int verbosity, const char* elements = "triangles") {
@@ -175,7 +176,7 @@ std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
   if (!a.field.empty()) return metric_from_field<3>(a, mesh);
   if (!a.metric.empty()) return read_metric_file<3>(a.metric, mesh);
   if (a.hsiz > 0.0) return std::vector<SymMat3>(nv, isotropic_metric<3>(a.hsiz));
-  return implied_metric<3>(mesh.coords, mesh.tets);
+  return naming_file(a.input, [&] { return implied_metric<3>(mesh.coords, mesh.tets); });
 }
 
 /// A tetrahedral mesh: adapt3d (planar boundary patches in their planes, curved ones on the
@@ -195,9 +196,10 @@ void run3d(const AdaptArgs& a, Mesh&& mesh) {
   // Without fields to transfer the input is needed no more: the remesher takes it and the
   // metrics over instead of copying them (memory, issue #7); finish() reads the input only to
   // transfer fields.
-  const Adapt3dResult r = fields.empty()
-                              ? adapt3d(std::move(mesh), std::move(metrics), opt, progress)
-                              : adapt3d(mesh, metrics, opt, progress);
+  const Adapt3dResult r = naming_file(a.input, [&] {
+    return fields.empty() ? adapt3d(std::move(mesh), std::move(metrics), opt, progress)
+                          : adapt3d(mesh, metrics, opt, progress);
+  });
   finish<3>(a, mesh, fields, r);
   if (a.verbosity > 0 && !a.quiet) print_peak_memory(r.mesh.num_tets());
 }
@@ -265,8 +267,10 @@ void run(AdaptArgs& a) {
   const std::vector<SymMat2> metrics = load_metric(a, mesh);
   const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
   const bool progress = !a.quiet;
-  const Adapt2dResult r = adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
-    if (progress) print_pass(s, a.verbosity);
+  const Adapt2dResult r = naming_file(a.input, [&] {
+    return adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
+      if (progress) print_pass(s, a.verbosity);
+    });
   });
   finish<2>(a, mesh, fields, r);
 }
