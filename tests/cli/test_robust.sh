@@ -47,4 +47,19 @@ SOL=$MET  # SPD tensors, as Hessian samples
 expect_error combine-lp-second-unwritable metric combine "$SOL" "$SOL" --mode lp --complexity 300 \
   --intervals 2 --mesh "$LSHAPE" -o "$TMP/lp1.sol,/nonexistent/lp2.sol"
 expect_no_file combine-lp-second-unwritable-no-first "$TMP/lp1.sol"
+
+# What the library finds inside a mesh names the file: a clockwise triangle (adapt), no elements
+# (render, adapt), a degenerate tetrahedron (adapt --optim).
+write_two_triangles "$TMP/cw.mesh"
+sed -i 's/^1 2 3 1$/1 3 2 1/' "$TMP/cw.mesh"
+sed 's/^Triangles$/Triangels/' "$AILE" >"$TMP/notri.mesh"
+for args in "adapt $TMP/cw.mesh --hsiz 0.2 -o $TMP/n.mesh -q" "adapt $TMP/notri.mesh --hsiz 0.2 -o $TMP/n.mesh -q" \
+            "render $TMP/notri.mesh -o $TMP/n.svg"; do
+  file=$(echo "$args" | cut -d' ' -f2)
+  err=$("$R" $args 2>&1 >/dev/null)
+  [[ "$err" == "riemesh: error: $file: "* ]] && ok "names-file ($err)" || ko "names-file: $args: $err"
+done
+err=$("$R" adapt "$TMP/cw.mesh" --hsiz 0.2 -o "$TMP/n.mesh" -q 2>&1)
+[ "$err" = "riemesh: error: $TMP/cw.mesh: triangle 1 is clockwise or degenerate" ] &&
+  ok "names-the-file's-triangle" || ko "names-the-file's-triangle: $err"
 exit $fail

@@ -265,6 +265,23 @@ TEST(Adapt2d, MetricAskingTooManyVertices) {
   EXPECT_THROW(adapt2d(in, met, {}), InputError);
 }
 
+// The remesher works on a Hilbert-renumbered copy: errors about the input name its own ids (a
+// clockwise triangle was reported under its renumbered id, another triangle of the file).
+TEST(Adapt2d, ClockwiseTriangleNamedByItsInputId) {
+  Mesh in = unit_square(4, 4);
+  for (const std::size_t t : {std::size_t{5}, std::size_t{30}}) {
+    Mesh flipped = in;
+    std::swap(flipped.triangles[3 * t], flipped.triangles[3 * t + 1]);
+    try {
+      adapt2d(flipped, std::vector<SymMat2>(in.num_vertices(), SymMat2::identity()), {});
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), "triangle " + std::to_string(t + 1) +
+                                           " is clockwise or degenerate");
+    }
+  }
+}
+
 TEST(Adapt2d, BadInput) {
   const Mesh in = unit_square(2, 2);
   std::vector<SymMat2> met(in.num_vertices(), SymMat2::identity());

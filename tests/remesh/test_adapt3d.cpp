@@ -239,6 +239,22 @@ TEST(Adapt3d, RidgeEdgesKeepTheirRefs) {
   EXPECT_GT(r.mesh.num_edges(), cube.num_edges());
 }
 
+// Errors about the input name its own ids, not those of the renumbered copy the remesher uses.
+TEST(Adapt3d, InvertedTetNamedByItsInputId) {
+  const Mesh cube = unit_cube(3);
+  for (const std::size_t t : {std::size_t{7}, std::size_t{100}}) {
+    Mesh inverted = cube;
+    std::swap(inverted.tets[4 * t], inverted.tets[4 * t + 1]);
+    try {
+      adapt3d(inverted, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()), {});
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("tetrahedron " + std::to_string(t + 1) + " ", 0), 0u)
+          << e.what();
+    }
+  }
+}
+
 TEST(Adapt3d, BadInputIsRefused) {
   const Mesh cube = unit_cube(2);
   std::vector<SymMat3> metrics(cube.num_vertices(), SymMat3::identity());
