@@ -62,4 +62,7 @@ done
 err=$("$R" adapt "$TMP/cw.mesh" --hsiz 0.2 -o "$TMP/n.mesh" -q 2>&1)
 [ "$err" = "riemesh: error: $TMP/cw.mesh: triangle 1 is clockwise or degenerate" ] &&
   ok "names-the-file's-triangle" || ko "names-the-file's-triangle: $err"
+# --hsiz 1e-300: 1/h² overflows; the error named an infinite metric coefficient, not the option.
+err=$("$R" adapt "$AILE" --hsiz 1e-300 -o "$TMP/s.mesh" 2>&1)
+[[ "$err" == "riemesh: error: --hsiz "* ]] && ok "adapt-hsiz-1e-300 ($err)" || ko "adapt-hsiz-1e-300: $err"
 exit $fail
