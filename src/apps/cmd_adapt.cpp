@@ -225,7 +225,8 @@ void require_outputs(const AdaptArgs& a) {
 void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
   // 1 / hsiz² must be finite too: --hsiz 1e-300 failed as "metric has an infinite coefficient".
-  if (!(a.hsiz >= 0.0) || !std::isfinite(a.hsiz) || !std::isfinite(1.0 / (a.hsiz * a.hsiz)))
+  if (!(a.hsiz >= 0.0) || !std::isfinite(a.hsiz) ||
+      (a.hsiz > 0.0 && !std::isfinite(1.0 / (a.hsiz * a.hsiz))))
     throw InputError("--hsiz must be a size > 0 (and over 1e-154)");
   Mesh mesh = read_mesh(a.input);
   const bool surface = mesh.kind() == MeshKind::kSurface;
