@@ -460,6 +460,11 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   if (input.dim != 2) throw InputError("2D remeshing needs a planar mesh (Dimension 2)");
   if (input.num_triangles() == 0) throw InputError("the mesh has no triangles");
   require_counter_clockwise(input);
+  // Named by the input's vertex ids here (prepare_metrics sees the renumbered copy); the name
+  // only for the error: building it for every vertex cost more than the test.
+  for (std::size_t v = 0; v < metrics.size(); ++v)
+    if (!is_spd(metrics[v]) || !std::isfinite(det(metrics[v])))
+      require_metric(metrics[v], "vertex " + std::to_string(v + 1));
   Adapt2dResult result;
   // Work on a Hilbert-ordered copy (every adjacency build and walk below is cache-friendly),
   // unless the input is already numbered coherently (e.g. the output of a previous run): then

@@ -532,6 +532,11 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   if (input.dim != 3 || input.num_tets() == 0)
     throw InputError("3D remeshing needs a tetrahedral mesh");
   require_positive_tets(input);
+  // Named by the input's vertex ids here (prepare_metrics sees the renumbered copy); the name
+  // only for the error: building it for every vertex cost more than the test.
+  for (std::size_t v = 0; v < metrics.size(); ++v)
+    if (!is_spd(metrics[v]) || !std::isfinite(det(metrics[v])))
+      require_metric(metrics[v], "vertex " + std::to_string(v + 1));
   Adapt3dResult result;
   // Memory (issue #7): the renumbered copy of the input, its adjacency and the metric copies
   // are only needed to build the context; they go before the passes, as the context (background

@@ -252,7 +252,14 @@ TEST(Adapt2d, BoundaryStaysOnTheSquare) {
 TEST(Adapt2d, MetricAskingTooManyVertices) {
   const Mesh in = unit_square(4, 4);
   std::vector<SymMat2> met(in.num_vertices(), SymMat2::identity());
-  met[6] = SymMat2{{1e308, 0.0, 1e308}};
+  met[6] = SymMat2{{1e308, 0.0, 1e308}};  // determinant overflows: refused as a tensor
+  try {
+    adapt2d(in, met, {});
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("vertex 7: ", 0), 0u) << e.what();
+  }
+  met[6] = SymMat2{{1e150, 0.0, 1e150}};  // finite, but sizes 1e-75: ~1e148 vertices
   try {
     adapt2d(in, met, {});
     ADD_FAILURE();
@@ -278,6 +285,21 @@ TEST(Adapt2d, ClockwiseTriangleNamedByItsInputId) {
     } catch (const InputError& e) {
       EXPECT_EQ(std::string(e.what()), "triangle " + std::to_string(t + 1) +
                                            " is clockwise or degenerate");
+    }
+  }
+}
+
+TEST(Adapt2d, BadMetricNamedByItsInputVertex) {
+  const Mesh in = unit_square(4, 4);
+  for (const std::size_t v : {std::size_t{6}, std::size_t{17}}) {
+    std::vector<SymMat2> met(in.num_vertices(), SymMat2::identity());
+    met[v] = SymMat2{{1.0, 2.0, 1.0}};  // not positive definite
+    try {
+      adapt2d(in, met, {});
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("vertex " + std::to_string(v + 1) + ":", 0), 0u)
+          << e.what();
     }
   }
 }

@@ -255,6 +255,21 @@ TEST(Adapt3d, InvertedTetNamedByItsInputId) {
   }
 }
 
+TEST(Adapt3d, BadMetricNamedByItsInputVertex) {
+  const Mesh cube = unit_cube(3);
+  for (const std::size_t v : {std::size_t{5}, std::size_t{40}}) {
+    std::vector<SymMat3> metrics(cube.num_vertices(), SymMat3::identity());
+    metrics[v].at(2, 2) = -1.0;
+    try {
+      adapt3d(cube, metrics, {});
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("vertex " + std::to_string(v + 1) + ":", 0), 0u)
+          << e.what();
+    }
+  }
+}
+
 TEST(Adapt3d, BadInputIsRefused) {
   const Mesh cube = unit_cube(2);
   std::vector<SymMat3> metrics(cube.num_vertices(), SymMat3::identity());
