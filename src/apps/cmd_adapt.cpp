@@ -7,13 +7,16 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <sys/resource.h>
 
 #include "apps/adapt_surface.hpp"
 #include "apps/commands.hpp"
 #include "apps/field_args.hpp"
+#include "apps/mesh_args.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
 #include "metric/element.hpp"
@@ -103,7 +106,7 @@ std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
   if (!a.metric.empty()) return read_metric_file<2>(a.metric, mesh);
   if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
   if (!a.field.empty()) return metric_from_field<2>(a, mesh);
-  return implied_metric_of_used(mesh);
+  return naming_file(a.input, [&] { return implied_metric_of_used(mesh); });
 }
 
 void print_pass(const PassStats& s, int verbosity, const char* elements = "triangles") {
@@ -173,7 +176,7 @@ std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
   if (!a.field.empty()) return metric_from_field<3>(a, mesh);
   if (!a.metric.empty()) return read_metric_file<3>(a.metric, mesh);
   if (a.hsiz > 0.0) return std::vector<SymMat3>(nv, isotropic_metric<3>(a.hsiz));
-  return implied_metric<3>(mesh.coords, mesh.tets);
+  return naming_file(a.input, [&] { return implied_metric<3>(mesh.coords, mesh.tets); });
 }
 
 /// A tetrahedral mesh: adapt3d (planar boundary patches in their planes, curved ones on the
@@ -202,17 +205,38 @@ void run3d(const AdaptArgs& a, Mesh&& mesh) {
   // Without fields to transfer the input is needed no more: the remesher takes it and the
   // metrics over instead of copying them (memory, issue #7); finish() reads the input only to
   // transfer fields.
-  const Adapt3dResult r = fields.empty()
-                              ? adapt3d(std::move(mesh), std::move(metrics), opt, progress)
-                              : adapt3d(mesh, metrics, opt, progress);
+  const Adapt3dResult r = naming_file(a.input, [&] {
+    return fields.empty() ? adapt3d(std::move(mesh), std::move(metrics), opt, progress)
+                          : adapt3d(mesh, metrics, opt, progress);
+  });
   finish<3>(a, mesh, fields, r);
   if (a.verbosity > 0 && !a.quiet) print_peak_memory(r.mesh.num_tets());
 }
 
+/// Every output is named right, distinct and writable before the run: a bad second output
+/// once failed after the first was written (`-o o.mesh --out-fields o.mesh` left o.mesh).
+void require_outputs(const AdaptArgs& a) {
+  mesh_format(a.output);
+  std::vector<std::string> done{a.output};
+  for (const std::string& sol : {a.fields.empty() ? std::string() : a.out_fields, a.out_metric}) {
+    if (sol.empty()) continue;
+    if (!sol.ends_with(".sol") && !sol.ends_with(".solb"))
+      throw InputError(sol + ": not a Medit solution file name (.sol or .solb expected)");
+    for (const std::string& other : done)
+      if (std::filesystem::path(sol).lexically_normal() ==
+          std::filesystem::path(other).lexically_normal())
+        throw InputError(sol + ": named for two outputs");
+    done.push_back(sol);
+  }
+  for (const std::string& path : done) require_writable(path);
+}
+
 void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
-  if (!(a.hsiz >= 0.0) || !std::isfinite(a.hsiz))
-    throw InputError("--hsiz must be a size > 0");
+  // 1 / hsiz² must be finite too: --hsiz 1e-300 failed as "metric has an infinite coefficient".
+  if (!(a.hsiz >= 0.0) || !std::isfinite(a.hsiz) ||
+      (a.hsiz > 0.0 && !std::isfinite(1.0 / (a.hsiz * a.hsiz))))
+    throw InputError("--hsiz must be a size > 0 (and over 1e-154)");
   Mesh mesh = read_mesh(a.input);
   const bool surface = mesh.kind() == MeshKind::kSurface;
   if (a.aniso && !surface)
@@ -238,6 +262,7 @@ void run(AdaptArgs& a) {
     throw InputError("--fields needs --out-fields OUT.sol for the transferred fields");
   if (!a.geometry.empty() && mesh.kind() != MeshKind::kVolume)
     throw InputError("--geometry applies to tetrahedral volumes");
+  require_outputs(a);
   if (surface) return run_surface(a, mesh);
   if (sources == 0)
     throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");
@@ -255,8 +280,10 @@ void run(AdaptArgs& a) {
   const std::vector<SymMat2> metrics = load_metric(a, mesh);
   const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
   const bool progress = !a.quiet;
-  const Adapt2dResult r = adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
-    if (progress) print_pass(s, a.verbosity);
+  const Adapt2dResult r = naming_file(a.input, [&] {
+    return adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
+      if (progress) print_pass(s, a.verbosity);
+    });
   });
   finish<2>(a, mesh, fields, r);
 }

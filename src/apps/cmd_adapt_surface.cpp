@@ -7,6 +7,7 @@
 
 #include "apps/adapt_surface.hpp"
 #include "apps/field_args.hpp"
+#include "apps/mesh_args.hpp"
 #include "core/error.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
@@ -28,7 +29,7 @@ void run_adapt_surface(const SurfaceAdaptArgs& args, const Mesh& mesh) {
   const std::vector<Field> fields =
       args.fields.empty() ? std::vector<Field>{} : read_sol(args.fields, mesh);
   SurfaceAdaptReport r;
-  const Mesh out = adapt_surface(mesh, options, &r);
+  const Mesh out = naming_file(args.input, [&] { return adapt_surface(mesh, options, &r); });
   // Transferred before anything is written: a failure leaves no file.
   const std::vector<Field> moved = fields.empty() ? fields : transfer_surface_p1(mesh, fields, out);
   const double seconds =

@@ -58,6 +58,8 @@ void print_metric(const SymMat<D>& m, bool json) {
 template <int D>
 void run_interp(const CalcArgs& a, const std::vector<std::vector<double>>& c) {
   const InterpScheme scheme = parse_interp_scheme(a.scheme);
+  // CLI::Range lets NaN through (no comparison fails): the result was NaN, printed as `nan`.
+  if (!(a.t >= 0.0 && a.t <= 1.0)) throw InputError("--t must be in [0, 1]");
   const SymMat<D> m = interpolate(scheme, to_metric<D>(c[0], "metric 1"),
                                   to_metric<D>(c[1], "metric 2"), a.t);
   print_metric(m, a.json);

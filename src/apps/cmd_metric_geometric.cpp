@@ -33,8 +33,9 @@ void run_geometric(GeometricArgs& a) {
   const SurfaceFeatures f = detect_features(mesh, adj, a.features);
   const SurfaceSectors s = surface_sectors(mesh, adj, f);
   SurfaceMetricReport r;
-  const std::vector<SymMat3> m =
-      geometric_surface_metric(mesh, adj, f, vertex_curvatures(mesh, adj, f, s), a.opt, &r);
+  const std::vector<SymMat3> m = naming_file(a.mesh, [&] {
+    return geometric_surface_metric(mesh, adj, f, vertex_curvatures(mesh, adj, f, s), a.opt, &r);
+  });
   Field out{"metric", FieldKind::kSymTensor, {}};
   out.values.reserve(6 * m.size());
   for (const SymMat3& x : m) out.values.insert(out.values.end(), x.c, x.c + 6);

@@ -13,6 +13,7 @@
 #include "apps/mesh_args.hpp"
 #include "apps/parse.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/sol.hpp"
 #include "mesh/adjacency.hpp"
 #include "metric/gradation.hpp"
@@ -220,6 +221,14 @@ void combine_spacetime(CombineArgs& a) {
   if (outputs.size() != n)
     throw InputError("-o: give one output per sub-interval (" + std::to_string(n) +
                      ", comma-separated)");
+  // All writable before any is written: a bad third name once left the first two behind.
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < i; ++j)
+      if (outputs[j] == outputs[i]) throw InputError(outputs[i] + ": named for two outputs");
+    if (!outputs[i].ends_with(".sol") && !outputs[i].ends_with(".solb"))
+      throw InputError(outputs[i] + ": not a Medit solution file name (.sol or .solb expected)");
+    require_writable(outputs[i]);
+  }
   if (!a.mesh.empty() && !a.meshes.empty()) throw InputError("give --mesh or --meshes, not both");
   const std::vector<std::string> paths =
       a.meshes.empty() ? std::vector<std::string>{a.mesh} : split_list(a.meshes, "--meshes");

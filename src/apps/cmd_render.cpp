@@ -42,7 +42,7 @@ void run_render(const RenderArgs& a) {
   o.width = a.width;
   o.title = a.file.substr(a.file.find_last_of('/') + 1);
   o.metric = metric;
-  render_mesh(mesh, a.out, o);
+  naming_file(a.file, [&] { render_mesh(mesh, a.out, o); });
 }
 
 }  // namespace

@@ -2,8 +2,10 @@
 // Inputs shared by the mesh commands (check, stats, convert, render): a mesh file read by its
 // extension and a metric field read from a .sol/.solb file and validated against the mesh.
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
 #include "mesh/mesh.hpp"
 
 namespace riemesh::cli {
@@ -20,5 +22,18 @@ std::vector<double> load_metric(const std::string& path, const Mesh& mesh);
 /// of range, non-finite coordinates): statistics and pictures need that much; `riemesh check`
 /// says more.
 void require_measurable(const Mesh& mesh, const std::string& path);
+
+/// Runs f() and returns its result; an InputError from it that does not start with `path` is
+/// thrown again with "path: " in front, so that what the library finds deep inside a mesh (a
+/// clockwise triangle, no elements) names the file it is about.
+template <class F>
+decltype(auto) naming_file(const std::string& path, F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    if (std::string_view(e.what()).starts_with(path)) throw;
+    throw InputError(path + ": " + e.what());
+  }
+}
 
 }  // namespace riemesh::cli

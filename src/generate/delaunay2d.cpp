@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/error.hpp"
@@ -308,6 +309,15 @@ double add_super_triangle(Triangulation2d& t) {
   // Box ⊂ [c − size/2, c + size/2]²; the triangle's sides pass at least 12 sizes away from it.
   const double s = 20.0 * size;
   t.xy.insert(t.xy.end(), {cx - s, cy - 0.5 * s, cx + s, cy - 0.5 * s, cx, cy + s});
+  for (std::size_t i = t.xy.size() - 6; i < t.xy.size(); ++i)
+    if (!std::isfinite(t.xy[i])) {
+      char msg[160];
+      std::snprintf(msg, sizeof msg,
+                    "delaunay2d: the points span [%g, %g] x [%g, %g], too large for the enclosing "
+                    "triangle (coordinates up to about 1e306)",
+                    lo[0], hi[0], lo[1], hi[1]);
+      throw InputError(msg);
+    }
   return std::max(hi[0] - lo[0], hi[1] - lo[1]);
 }
 

@@ -46,7 +46,8 @@ struct Triangulation2d {
 };
 
 /// The Delaunay triangulation of the points xy (2 doubles each, finite). Deterministic.
-/// Throws InputError for a non-finite coordinate (naming the point).
+/// Throws InputError for a non-finite coordinate (naming the point), or for points spread so far
+/// (|x| near the largest double) that the enclosing triangle would not be finite.
 Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order = InsertionOrder::kBrio);
 
 /// The insertion order used by delaunay2d for kBrio: order[k] = the point inserted k-th.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <deque>
 #include <string>
 #include <utility>
@@ -66,6 +68,19 @@ void throw_defect(const char* what, std::size_t count, const std::string& first)
 void require_closed_surface(const Mesh& s) {
   if (s.dim != 3 || s.num_triangles() == 0)
     throw InputError("the surface cannot bound a volume: no triangles in 3D");
+  // Normals and squared lengths of differences must stay finite (a coordinate of 1e308 in a
+  // damaged file made the recovery's predicates see infinities: an internal check failed).
+  constexpr double kLargest = 1e150;
+  for (const Id v : s.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (const double x = s.coords[3 * static_cast<std::size_t>(v) + k];
+          !(std::fabs(x) <= kLargest)) {
+        char msg[120];
+        std::snprintf(msg, sizeof msg,
+                      "vertex %d: coordinate %g is out of range (at most 1e150 in magnitude)",
+                      v + 1, x);
+        throw InputError(msg);
+      }
   const std::size_t nv = s.num_vertices();
   for (std::size_t t = 0; t < s.num_triangles(); ++t) {
     const Id* v = &s.triangles[3 * t];

@@ -56,17 +56,18 @@ AtomicFile::AtomicFile(std::string path, bool sync) : path_(std::move(path)), sy
     const int fd = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) {
       if (errno == EEXIST) continue;
-      throw Error(path_ + ": cannot create temporary file " + temp_path_ + ": " + errno_text());
+      throw InputError(path_ + ": cannot create temporary file " + temp_path_ + ": " +
+                       errno_text());
     }
     file_ = ::fdopen(fd, "wb");
     if (!file_) {
       ::close(fd);
       ::unlink(temp_path_.c_str());
-      throw Error(path_ + ": cannot open temporary file: " + errno_text());
+      throw InputError(path_ + ": cannot open temporary file: " + errno_text());
     }
     return;
   }
-  throw Error(path_ + ": cannot find a free temporary file name");
+  throw InputError(path_ + ": cannot find a free temporary file name");
 }
 
 AtomicFile::~AtomicFile() { discard(); }
@@ -82,7 +83,7 @@ void AtomicFile::discard() noexcept {
 void AtomicFile::fail(const char* what) {
   const std::string message = path_ + ": " + what + ": " + errno_text();
   discard();
-  throw Error(message);
+  throw InputError(message);
 }
 
 void AtomicFile::write(const void* data, std::size_t size) {
@@ -98,14 +99,21 @@ void AtomicFile::commit() {
   file_ = nullptr;
   if (std::fclose(f) != 0) {
     ::unlink(temp_path_.c_str());
-    throw Error(path_ + ": close failed: " + errno_text());
+    throw InputError(path_ + ": close failed: " + errno_text());
   }
   if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
     const std::string message =
         path_ + ": cannot rename temporary file into place: " + errno_text();
     ::unlink(temp_path_.c_str());
-    throw Error(message);
+    throw InputError(message);
   }
+}
+
+void require_writable(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw InputError(path + ": is a folder, not a file name for the output");
+  AtomicFile probe(path);  // creates a temporary beside the target; removed, uncommitted
 }
 
 void write_file_atomically(const std::string& path, std::string_view contents, bool sync) {

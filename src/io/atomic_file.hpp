@@ -13,7 +13,9 @@ namespace riemesh {
 std::string read_file_bytes(const std::string& path);
 
 /// A file being written atomically: write(), then commit() to rename it into place. Destroying
-/// it without commit() removes the temporary file. I/O failures throw riemesh::Error.
+/// it without commit() removes the temporary file. I/O failures (a missing or read-only folder, a
+/// folder of the target's name, a full disk) throw InputError naming the path: they are the
+/// user's to fix, not bugs; misuse (write after commit) throws riemesh::Error.
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path, bool sync = false);
@@ -38,6 +40,11 @@ class AtomicFile {
   std::FILE* file_ = nullptr;
   bool sync_ = false;
 };
+
+/// Throws InputError naming the path unless a file can be written there: its folder exists and
+/// takes new files, and no folder has its name. Commands with several outputs call it for each
+/// before any work, so that the last output cannot fail after the first is written.
+void require_writable(const std::string& path);
 
 /// Writes `contents` to `path` atomically.
 void write_file_atomically(const std::string& path, std::string_view contents, bool sync = false);

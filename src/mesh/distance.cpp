@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 
 #include "core/error.hpp"
@@ -268,10 +269,43 @@ void DistanceOptions::validate() const {
     throw InputError("distance: spacing must be >= 0");
 }
 
+namespace {
+
+// Lattice order of one triangle: --samples, finer by --spacing on large triangles (capped per
+// triangle; the total is capped by kMaxSamples).
+int lattice_order(const Vec3& a, const Vec3& b, const Vec3& c, const DistanceOptions& options) {
+  int n = options.samples;
+  if (options.spacing > 0.0) {
+    const double longest = std::sqrt(std::max({dist2(a, b), dist2(b, c), dist2(c, a)}));
+    n = std::max(n, static_cast<int>(std::min(4096.0, std::ceil(longest / options.spacing))));
+  }
+  return n;
+}
+
+// About a minute and a half of nearest-point queries.
+constexpr double kMaxSamples = 1e8;
+
+}  // namespace
+
 OneSidedDistance one_sided_distance(const Mesh& from, const TriangleTree& to,
                                     const DistanceOptions& options) {
   options.validate();
   require_triangles_3d(from);
+  double planned = 0.0;
+  for (std::size_t t = 0; t < from.num_triangles(); ++t) {
+    const double n = lattice_order(vertex_at(from, from.triangles[3 * t]),
+                                   vertex_at(from, from.triangles[3 * t + 1]),
+                                   vertex_at(from, from.triangles[3 * t + 2]), options);
+    planned += (n + 1) * (n + 2) / 2;
+  }
+  if (planned > kMaxSamples) {
+    char msg[160];
+    std::snprintf(msg, sizeof msg,
+                  "distance: samples %d and spacing %g ask for %.3g sample points (at most 1e8): "
+                  "use a larger spacing",
+                  options.samples, options.spacing, planned);
+    throw InputError(msg);
+  }
   OneSidedDistance out;
   double weighted = 0.0, total_area = 0.0;
   Id hint = kNoId;
@@ -279,12 +313,7 @@ OneSidedDistance one_sided_distance(const Mesh& from, const TriangleTree& to,
     const Vec3 a = vertex_at(from, from.triangles[3 * t]);
     const Vec3 b = vertex_at(from, from.triangles[3 * t + 1]);
     const Vec3 c = vertex_at(from, from.triangles[3 * t + 2]);
-    int n = options.samples;
-    if (options.spacing > 0.0) {
-      const double longest = std::sqrt(std::max({dist2(a, b), dist2(b, c), dist2(c, a)}));
-      // Capped so that a wild spacing cannot ask for billions of points per triangle.
-      n = std::max(n, static_cast<int>(std::min(4096.0, std::ceil(longest / options.spacing))));
-    }
+    const int n = lattice_order(a, b, c, options);
     double sum = 0.0;
     int count = 0;
     for (int i = 0; i <= n; ++i)

@@ -88,11 +88,14 @@ inline SymMat<D> metric_from_sizes(const Mat<D>& r, const Vec<D>& h) {
   return compose(r, l);
 }
 
-/// Throws InputError("<what>: ...") unless m is a finite SPD tensor.
+/// Throws InputError("<what>: ...") unless m is a finite SPD tensor with a finite determinant
+/// (beyond, sizes under ~1e-154 in 2D, ~1e-102 in 3D, lengths and complexities overflow).
 template <int D>
 inline void require_metric(const SymMat<D>& m, const std::string& what) {
   if (!is_finite(m)) throw InputError(what + ": metric has a NaN or infinite coefficient");
   if (!is_spd(m)) throw InputError(what + ": metric is not positive definite");
+  if (!std::isfinite(det(m)))
+    throw InputError(what + ": metric too large (its determinant overflows)");
 }
 
 }  // namespace riemesh

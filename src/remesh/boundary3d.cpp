@@ -110,8 +110,8 @@ std::unique_ptr<SurfaceProjection> Boundary3d::geometry_projection(const Mesh& g
   }
   if (s.triangles.empty()) {
     for (const std::int32_t r : curved_refs_) refs += (refs.empty() ? "" : ", ") + std::to_string(r);
-    throw InputError("geometry: no triangle with the ref of a curved boundary patch of the input (" +
-                     refs + ")");
+    throw InputError("the geometry mesh has no triangle with the ref of a curved boundary "
+                     "patch of this mesh (" + refs + ")");
   }
   // The metric the projection interpolates at placed points is not used here (place() keeps
   // the point only).

@@ -53,6 +53,11 @@ void LoopOptions::validate() const {
   for (double n : complexities)
     if (!(n >= 10.0 && n <= 1e7))
       throw InputError("loop: complexities must be in 10..1e7, got " + std::to_string(n));
+  for (std::size_t i = 1; i < complexities.size(); ++i)
+    if (!(complexities[i] > complexities[i - 1]))
+      throw InputError("loop: complexities must be rising, got " +
+                       std::to_string(complexities[i]) + " after " +
+                       std::to_string(complexities[i - 1]));
   if (iterations < 1 || iterations > 20)
     throw InputError("loop: iterations must be in 1..20, got " + std::to_string(iterations));
   if (!(norm >= 1.0) || !std::isfinite(norm))

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
 #include "core/spd.hpp"
+#include "metric/complexity.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
 
@@ -21,12 +22,50 @@ std::string num(double v) {
   return buf;
 }
 
+// Unit-mesh vertex count per unit of complexity: (2/√3) in 2D, √2 in 3D (regular simplices).
+template <int D>
+constexpr double kVerticesPerComplexity = D == 2 ? 1.1547005383792515 : 1.4142135623730951;
+
+/// Throws InputError if the unit mesh of the metric would need more vertices than ids hold, or
+/// if the count overflows (a tensor whose determinant is infinite), naming the place of the
+/// finest size (by coordinates: the drivers work on a renumbered copy). Without it such a field
+/// ran for hours (complexity 1e12) or crashed on non-finite lengths (a tensor of 1e308).
+template <int D>
+void require_reachable_complexity(const Mesh& in, const std::vector<SymMat<D>>& m) {
+  const std::vector<Id>& elems = D == 2 ? in.triangles : in.tets;
+  double total = 0.0;
+  for (std::size_t e = 0; e + D < elems.size(); e += D + 1) {
+    Vec<D> p[D + 1];
+    SymMat<D> me[D + 1];
+    for (int i = 0; i <= D; ++i) {
+      const Id v = elems[e + i];
+      for (int k = 0; k < D; ++k) p[i][k] = in.coords[D * v + k];
+      me[i] = m[v];
+    }
+    total += complexity<D>(p, me);
+  }
+  const double vertices = kVerticesPerComplexity<D> * total;
+  if (vertices <= static_cast<double>(std::numeric_limits<Id>::max())) return;
+  std::size_t finest = 0;
+  for (std::size_t v = 1; v < m.size(); ++v)
+    if (!(det(m[v]) <= det(m[finest]))) finest = v;
+  std::string where = "(";
+  for (int i = 0; i < D; ++i) where += (i > 0 ? ", " : "") + num(in.coords[D * finest + i]);
+  const double d = det(m[finest]);
+  throw InputError(
+      "the metric asks for " +
+      (std::isfinite(vertices) ? "about " + num(vertices) : std::string("an unbounded number of")) +
+      " vertices, more than the 2^31 - 1 ids hold; finest size " +
+      (std::isfinite(d) ? num(std::pow(d, -0.5 / D)) : std::string("~0 (determinant overflows)")) +
+      " near " + where + ") (see --hmin)");
+}
+
 }  // namespace
 
 template <int D>
 std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
-                                       std::span<const SymMat<D>> metrics,
-                                       const Adapt2dOptions& o, Adapt2dReport& report) {
+                                       std::span<const SymMat<D>> metrics, const Adapt2dOptions& o,
+                                       Adapt2dReport& report) {
   if (metrics.size() != in.num_vertices())
     throw InputError("the metric has " + std::to_string(metrics.size()) + " values but the mesh " +
                      std::to_string(in.num_vertices()) + " vertices");
@@ -60,6 +99,7 @@ std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
   if (above_hmax > 0)
     report.notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
                            std::to_string(above_hmax) + " vertices");
+  require_reachable_complexity<D>(in, out);
   if (o.hgrad > 0.0) {
     GradationOptions g;
     g.mode = GradationMode::kGrowthPhysical;

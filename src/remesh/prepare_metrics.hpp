@@ -11,7 +11,8 @@
 namespace riemesh {
 
 /// Validated (InputError naming the vertex for a NaN or non-SPD tensor, or for a count that does
-/// not match the mesh), clipped to sizes in [o.hmin, o.hmax] and graded (o.hgrad, physical-space
+/// not match the mesh; InputError too when the clipped field asks for more vertices than 32-bit
+/// ids hold), clipped to sizes in [o.hmin, o.hmax] and graded (o.hgrad, physical-space
 /// growth along adj.edges) copy of the input metrics. Clipping is reported in report.notes (with
 /// the place of the first vertex below hmin), gradation in report.gradation_before/after.
 template <int D>

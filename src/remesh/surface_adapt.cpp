@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
@@ -102,6 +103,11 @@ Mesh output_mesh(const State& s) {
 void SurfaceAdaptOptions::validate() const {
   if (!(hausd > 0.0) || !std::isfinite(hausd)) throw InputError("hausd must be > 0");
   if (!(hsiz >= 0.0) || !std::isfinite(hsiz)) throw InputError("hsiz must be >= 0");
+  if (hmin > 0.0 && hmax > 0.0 && hmin > hmax) {
+    char msg[96];
+    std::snprintf(msg, sizeof msg, "--hmin %g is larger than --hmax %g", hmin, hmax);
+    throw InputError(msg);
+  }
   if (max_cycles < 0) throw InputError("the number of cycles must be >= 0");
   if (!(beta_fraction >= 0.0 && beta_fraction <= 1.0))
     throw InputError("beta fraction must be in [0, 1]");

@@ -64,6 +64,7 @@ expect_error mixed-dims interp 1,0,1 1,0,1,0,0,1
 expect_error not-spd interp 1,2,1 1,0,1
 expect_error nan interp nan,0,1 1,0,1
 expect_error inf intersect 1,0,inf 1,0,1
+expect_error t-nan interp --t nan 1,0,1 2,0,2  # printed NaN and `nan` in the JSON, exit 0
 expect_error garbage interp 1,x,1 1,0,1
 expect_error degenerate element 0,0 1,1 2,2
 expect_error degenerate-3d element 0,0,0 1,0,0 0,1,0 1,1,0

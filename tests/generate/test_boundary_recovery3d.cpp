@@ -156,6 +156,19 @@ TEST(BoundaryRecovery3d, ConformingSurfaceNeedsNone) {
   expect_conforming_volume(s, r, "sphere");
 }
 
+// A coordinate of 1e308 (a damaged surface file) failed an internal check in the recovery's
+// predicates (`riemesh mesh` exit 3): now an InputError naming the vertex.
+TEST(BoundaryRecovery3d, CoordinateOutOfRangeIsAnInputError) {
+  Mesh s = sphere_surface(1);
+  s.coords[3 * 2] = 1e308;
+  try {
+    recover_volume(s);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("vertex 3: coordinate", 0), 0u) << e.what();
+  }
+}
+
 TEST(BoundaryRecovery3d, SteinerCapGivesAnInputError) {
   BoundaryRecoveryOptions options;
   options.max_steiner_per_vertex = 0;

@@ -185,6 +185,18 @@ TEST(Delaunay2d, DeterministicAndOrderIndependentMesh) {
   EXPECT_GT(s1.size(), 3900u);  // 2n − 2 − hull for the full triangulation, minus a few hull ones
 }
 
+// A coordinate of 1e308 (a damaged .mesh) put the enclosing triangle at infinity, and the
+// predicates' internal check failed (`riemesh mesh` exit 3): now an InputError.
+TEST(Delaunay2d, RejectsCoordinatesTooLargeForTheEnclosingTriangle) {
+  std::vector<double> xy = random_points(10, 6);
+  xy[6] = 1e308;
+  EXPECT_THROW(delaunay2d(xy), InputError);
+  xy[6] = -1e308, xy[7] = 1e308;
+  EXPECT_THROW(delaunay2d(xy), InputError);
+  xy[6] = 1e300, xy[7] = 0.5;  // far, but the enclosing triangle stays finite
+  EXPECT_NO_THROW(delaunay2d(xy));
+}
+
 TEST(Delaunay2d, RejectsNonFiniteCoordinates) {
   std::vector<double> xy = random_points(10, 6);
   xy[7] = std::nan("");

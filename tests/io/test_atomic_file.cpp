@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <filesystem>
+#include <iterator>
+
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io_test_util.hpp"
@@ -40,15 +43,41 @@ TEST(AtomicFile, AbandonedWriteLeavesNothing) {
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 
+// An output that cannot be written is the user's to fix (a missing folder, a folder of that name):
+// InputError, which the CLI reports with exit 2, not an internal error.
 TEST(AtomicFile, ErrorsNameThePath) {
   try {
     write_file_atomically("/nonexistent-dir/x.mesh", "x");
     ADD_FAILURE();
-  } catch (const Error& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()).rfind("/nonexistent-dir/x.mesh: cannot create", 0), 0u)
         << e.what();
   }
   EXPECT_THROW(read_file_bytes("/nonexistent-dir/x.mesh"), InputError);
+}
+
+TEST(AtomicFile, FolderInTheWayIsAnInputErrorAndLeavesNothing) {
+  test::ScratchDir dir;
+  const std::string path = dir.file("out.mesh");
+  std::filesystem::create_directory(path);
+  try {
+    write_file_atomically(path, "x");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
+  }
+  // Only the folder itself: no temporary beside it.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()),
+                          std::filesystem::directory_iterator()),
+            1);
+}
+
+TEST(AtomicFile, RequireWritable) {
+  test::ScratchDir dir;
+  EXPECT_NO_THROW(require_writable(dir.file("out.mesh")));
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));  // the probe left nothing
+  EXPECT_THROW(require_writable(dir.path()), InputError);
+  EXPECT_THROW(require_writable("/nonexistent-dir/x.mesh"), InputError);
 }
 
 TEST(AtomicFile, ReadFileBytes) {

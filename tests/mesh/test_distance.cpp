@@ -198,4 +198,18 @@ TEST(Distance, SpacingRefinesTheLattice) {
   EXPECT_THROW(TriangleTree(unit_square(2, 2)), InputError);  // 2D
 }
 
+// `riemesh distance --spacing 1e-300` ran for hours: 4096² / 2 points on each triangle. Over 10^8
+// sample points in all is an InputError, raised before sampling.
+TEST(Distance, SpacingAskingTooManySamplesIsAnInputError) {
+  const Mesh a = square(10, 1.0, 0.0, false), b = square(1, 1.0, 0.0, true);
+  DistanceOptions o;
+  o.spacing = 1e-300;  // order capped at 4096 on each of 200 triangles: 1.7e9 points
+  try {
+    one_sided_distance(a, TriangleTree(b), o);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("spacing"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace

@@ -54,6 +54,11 @@ TEST(MetricBasics, RequireMetricRejectsBadInput) {
   EXPECT_THROW(require_metric(SymMat2{{1.0, 2.0, 1.0}}, "m"), InputError);  // eigenvalues -1, 3
   EXPECT_THROW(require_metric(SymMat2{{1.0, NAN, 1.0}}, "m"), InputError);
   EXPECT_THROW(require_metric(SymMat3::zero(), "m"), InputError);
+  // Finite coefficients whose determinant overflows (sizes 1e-154): a tensor of 1e308 in a .sol
+  // made `riemesh metric combine` write infinities (internal error) and `adapt` crash.
+  EXPECT_THROW(require_metric(SymMat2{{1e308, 0.0, 1e308}}, "m"), InputError);
+  EXPECT_THROW(require_metric(SymMat3::diagonal(1e110), "m"), InputError);
+  EXPECT_NO_THROW(require_metric(SymMat3::diagonal(1e100), "m"));  // det 1e300
   try {
     require_metric(SymMat2{{-1.0, 0.0, 1.0}}, "vertex 7");
     FAIL();

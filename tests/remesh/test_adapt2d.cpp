@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 #include "core/error.hpp"
 #include "mesh/check.hpp"
@@ -243,6 +244,64 @@ TEST(Adapt2d, BoundaryStaysOnTheSquare) {
       const double d = std::min({x, y, 1.0 - x, 1.0 - y});
       EXPECT_LT(std::abs(d), 1e-14) << "boundary vertex off the square at " << x << ", " << y;
     }
+}
+
+// A metric whose unit mesh cannot be built: one tensor of 1e308 (sizes 1e-154) made adapt2d
+// crash (boundary curve parameter NaN), a complexity of 1e12 ran for hours. The count of vertices
+// asked for, (2/√3) C, over the 2^31 - 1 ids is an InputError naming the finest place.
+TEST(Adapt2d, MetricAskingTooManyVertices) {
+  const Mesh in = unit_square(4, 4);
+  std::vector<SymMat2> met(in.num_vertices(), SymMat2::identity());
+  met[6] = SymMat2{{1e308, 0.0, 1e308}};  // determinant overflows: refused as a tensor
+  try {
+    adapt2d(in, met, {});
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("vertex 7: ", 0), 0u) << e.what();
+  }
+  met[6] = SymMat2{{1e150, 0.0, 1e150}};  // finite, but sizes 1e-75: ~1e148 vertices
+  try {
+    adapt2d(in, met, {});
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    // unit_square(4, 4) numbers vertices row by row: vertex 6 is (0.25, 0.25).
+    EXPECT_NE(std::string(e.what()).find("near (0.25, 0.25)"), std::string::npos) << e.what();
+  }
+  // Complexity 1e12 on the unit square: sizes 1e-6.
+  met.assign(in.num_vertices(), isotropic_metric<2>(1e-6));
+  EXPECT_THROW(adapt2d(in, met, {}), InputError);
+}
+
+// The remesher works on a Hilbert-renumbered copy: errors about the input name its own ids (a
+// clockwise triangle was reported under its renumbered id, another triangle of the file).
+TEST(Adapt2d, ClockwiseTriangleNamedByItsInputId) {
+  Mesh in = unit_square(4, 4);
+  for (const std::size_t t : {std::size_t{5}, std::size_t{30}}) {
+    Mesh flipped = in;
+    std::swap(flipped.triangles[3 * t], flipped.triangles[3 * t + 1]);
+    try {
+      adapt2d(flipped, std::vector<SymMat2>(in.num_vertices(), SymMat2::identity()), {});
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), "triangle " + std::to_string(t + 1) +
+                                           " is clockwise or degenerate");
+    }
+  }
+}
+
+TEST(Adapt2d, BadMetricNamedByItsInputVertex) {
+  const Mesh in = unit_square(4, 4);
+  for (const std::size_t v : {std::size_t{6}, std::size_t{17}}) {
+    std::vector<SymMat2> met(in.num_vertices(), SymMat2::identity());
+    met[v] = SymMat2{{1.0, 2.0, 1.0}};  // not positive definite
+    try {
+      adapt2d(in, met, {});
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("vertex " + std::to_string(v + 1) + ":", 0), 0u)
+          << e.what();
+    }
+  }
 }
 
 TEST(Adapt2d, BadInput) {

@@ -239,6 +239,37 @@ TEST(Adapt3d, RidgeEdgesKeepTheirRefs) {
   EXPECT_GT(r.mesh.num_edges(), cube.num_edges());
 }
 
+// Errors about the input name its own ids, not those of the renumbered copy the remesher uses.
+TEST(Adapt3d, InvertedTetNamedByItsInputId) {
+  const Mesh cube = unit_cube(3);
+  for (const std::size_t t : {std::size_t{7}, std::size_t{100}}) {
+    Mesh inverted = cube;
+    std::swap(inverted.tets[4 * t], inverted.tets[4 * t + 1]);
+    try {
+      adapt3d(inverted, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()), {});
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("tetrahedron " + std::to_string(t + 1) + " ", 0), 0u)
+          << e.what();
+    }
+  }
+}
+
+TEST(Adapt3d, BadMetricNamedByItsInputVertex) {
+  const Mesh cube = unit_cube(3);
+  for (const std::size_t v : {std::size_t{5}, std::size_t{40}}) {
+    std::vector<SymMat3> metrics(cube.num_vertices(), SymMat3::identity());
+    metrics[v].at(2, 2) = -1.0;
+    try {
+      adapt3d(cube, metrics, {});
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("vertex " + std::to_string(v + 1) + ":", 0), 0u)
+          << e.what();
+    }
+  }
+}
+
 TEST(Adapt3d, BadInputIsRefused) {
   const Mesh cube = unit_cube(2);
   std::vector<SymMat3> metrics(cube.num_vertices(), SymMat3::identity());
@@ -250,6 +281,10 @@ TEST(Adapt3d, BadInputIsRefused) {
   std::swap(inverted.tets[0], inverted.tets[1]);
   EXPECT_THROW(adapt3d(inverted, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()), {}),
                InputError);
+  // Sizes 1e-102 at one vertex: the metric asks for more vertices than 32-bit ids hold.
+  metrics.assign(cube.num_vertices(), SymMat3::identity());
+  metrics[5] = SymMat3::diagonal(1e204);
+  EXPECT_THROW(adapt3d(cube, metrics, {}), InputError);
   const Mesh square = unit_square(2, 2);
   EXPECT_THROW(adapt3d(square, std::vector<SymMat3>(square.num_vertices(), SymMat3::identity()), {}),
                InputError);

@@ -62,4 +62,10 @@ TEST(AdaptationLoop, RejectsBadOptions) {
   o = LoopOptions{};
   o.hmin = 1.0;
   EXPECT_THROW(o.validate(), InputError);
+  // Complexities are rising: `riemesh loop --complexities 100,50` ran and printed nan slopes.
+  o = LoopOptions{};
+  o.complexities = {100, 50};
+  EXPECT_THROW(o.validate(), InputError);
+  o.complexities = {100, 100};
+  EXPECT_THROW(o.validate(), InputError);
 }

@@ -280,4 +280,14 @@ TEST(SurfaceAdapt, RejectsNonSurfaces) {
   EXPECT_THROW(adapt_surface(sphere_mesh(1, 1.0), o), InputError);
 }
 
+// `riemesh adapt SURFACE --hmin 1 --hmax 0.1` ran, hmin silently lowered to hmax; the planar
+// and volume remeshers refuse it.
+TEST(SurfaceAdapt, RejectsContradictingSizes) {
+  SurfaceAdaptOptions o;
+  o.hmin = 1.0, o.hmax = 0.1;
+  EXPECT_THROW(o.validate(), InputError);
+  o.hmin = 0.5, o.hmax = 0.0, o.hsiz = 0.1;  // hmax unset; --hsiz below --hmin caps the sizes
+  EXPECT_NO_THROW(o.validate());
+}
+
 }  // namespace

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Damaged input and impossible outputs (bench/robust_cli.py audits them at length): exit 2 with
+# one line naming the file, never an internal error, a signal or a hang, and no output left.
+set -u
+source "$(dirname "$0")/cli_lib.sh"
+D=$SHARED/data
+AILE=$D/2d/aile.mesh LSHAPE=$D/formats/lshape.mesh MET=$D/formats/lshape_metric.sol
+
+# Outputs that cannot be written: a missing folder, a folder below a regular file, a folder of the
+# output's name.
+touch "$TMP/file"
+mkdir -p "$TMP/taken.mesh" "$TMP/taken.sol" "$TMP/taken.svg"
+for out in /nonexistent/o.mesh "$TMP/file/o.mesh" "$TMP/taken.mesh"; do
+  expect_error "convert-unwritable-$out" convert "$AILE" "$out"
+  expect_error "adapt-unwritable-$out" adapt "$AILE" --hsiz 0.2 -o "$out" -q
+done
+expect_no_file convert-unwritable-no-temporary "$TMP/file/o.mesh"
+expect_error render-unwritable render "$AILE" -o "$TMP/taken.svg"
+expect_error hessian-unwritable metric hessian "$LSHAPE" "$D/formats/lshape.sol" --complexity 100 \
+  -o "$TMP/taken.sol"
+
+# A metric asking for more vertices than ids hold: one tensor of 1e308 crashed adapt (SIGSEGV), a
+# complexity of 1e12 ran for hours. Now refused at once.
+write_metric_rows() {  # PATH ROW: lshape_metric.sol with its sixth tensor replaced by ROW
+  awk -v row="$2" 'done == 0 && seen >= 1 { n++; if (n == 6) { print row; done = 1; next } }
+    /^1 3$/ { seen = 1 } { print }' "$MET" >"$1"
+}
+write_metric_rows "$TMP/huge.sol" "1e308 0 1e308"
+expect_error adapt-huge-tensor adapt "$LSHAPE" --metric "$TMP/huge.sol" -o "$TMP/h.mesh" -q
+expect_no_file adapt-huge-tensor-no-file "$TMP/h.mesh"
+expect_error adapt-complexity-1e12 adapt "$LSHAPE" --field "$D/formats/lshape.sol" --complexity 1e12 \
+  -o "$TMP/c.mesh" -q
+
+# Several outputs: all checked before the run, so that a bad second one cannot fail after the
+# first is written.
+expect_error adapt-out-metric-unwritable adapt "$LSHAPE" --metric "$MET" -o "$TMP/m1.mesh" \
+  --out-metric /nonexistent/m.sol -q
+expect_no_file adapt-out-metric-unwritable-no-mesh "$TMP/m1.mesh"
+expect_error adapt-out-fields-is-output adapt "$LSHAPE" --metric "$MET" --fields "$D/formats/lshape.sol" \
+  -o "$TMP/m2.mesh" --out-fields "$TMP/m2.mesh" -q
+expect_no_file adapt-out-fields-is-output-no-mesh "$TMP/m2.mesh"
+expect_error adapt-out-fields-not-sol adapt "$LSHAPE" --field "$D/formats/lshape.sol" --complexity 200 \
+  -o "$TMP/m3.mesh" --out-fields "$TMP/m3.txt" -q
+expect_no_file adapt-out-fields-not-sol-no-mesh "$TMP/m3.mesh"
+# metric combine --mode lp: one output per sub-interval, the second unwritable.
+SOL=$MET  # SPD tensors, as Hessian samples
+expect_error combine-lp-second-unwritable metric combine "$SOL" "$SOL" --mode lp --complexity 300 \
+  --intervals 2 --mesh "$LSHAPE" -o "$TMP/lp1.sol,/nonexistent/lp2.sol"
+expect_no_file combine-lp-second-unwritable-no-first "$TMP/lp1.sol"
+
+# What the library finds inside a mesh names the file: a clockwise triangle (adapt), no elements
+# (render, adapt), a degenerate tetrahedron (adapt --optim).
+write_two_triangles "$TMP/cw.mesh"
+sed -i 's/^1 2 3 1$/1 3 2 1/' "$TMP/cw.mesh"
+sed 's/^Triangles$/Triangels/' "$AILE" >"$TMP/notri.mesh"
+for args in "adapt $TMP/cw.mesh --hsiz 0.2 -o $TMP/n.mesh -q" "adapt $TMP/notri.mesh --hsiz 0.2 -o $TMP/n.mesh -q" \
+            "render $TMP/notri.mesh -o $TMP/n.svg"; do
+  file=$(echo "$args" | cut -d' ' -f2)
+  err=$("$R" $args 2>&1 >/dev/null)
+  [[ "$err" == "riemesh: error: $file: "* ]] && ok "names-file ($err)" || ko "names-file: $args: $err"
+done
+err=$("$R" adapt "$TMP/cw.mesh" --hsiz 0.2 -o "$TMP/n.mesh" -q 2>&1)
+[ "$err" = "riemesh: error: $TMP/cw.mesh: triangle 1 is clockwise or degenerate" ] &&
+  ok "names-the-file's-triangle" || ko "names-the-file's-triangle: $err"
+# --hsiz 1e-300: 1/h² overflows; the error named an infinite metric coefficient, not the option.
+err=$("$R" adapt "$AILE" --hsiz 1e-300 -o "$TMP/s.mesh" 2>&1)
+[[ "$err" == "riemesh: error: --hsiz "* ]] && ok "adapt-hsiz-1e-300 ($err)" || ko "adapt-hsiz-1e-300: $err"
+exit $fail
