@@ -422,23 +422,6 @@ std::string stall_reason(const TriMesh& m) {
   return stall_message<2>(worst_length, 0.5 * (m.xy[m.edge_from(where)] + m.xy[m.edge_to(where)]));
 }
 
-// Ids and orientation checked on the input's own numbering: the remesher works on a renumbered
-// copy, whose ids in a message would name another triangle of the file.
-void require_counter_clockwise(const Mesh& m) {
-  const std::size_t nv = m.num_vertices();
-  for (std::size_t t = 0; t < m.num_triangles(); ++t) {
-    const Id* v = &m.triangles[3 * t];
-    Vec2 p[3];
-    for (int i = 0; i < 3; ++i) {
-      if (v[i] < 0 || static_cast<std::size_t>(v[i]) >= nv)
-        throw InputError("triangle " + std::to_string(t + 1) + ": vertex id out of range");
-      p[i] = Vec2{{m.coords[2 * v[i]], m.coords[2 * v[i] + 1]}};
-    }
-    if (!(signed_area(p[0], p[1], p[2]) > 0.0))
-      throw InputError("triangle " + std::to_string(t + 1) + " is clockwise or degenerate");
-  }
-}
-
 }  // namespace
 
 void Adapt2dOptions::validate() const {
@@ -459,12 +442,7 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   options.validate();
   if (input.dim != 2) throw InputError("2D remeshing needs a planar mesh (Dimension 2)");
   if (input.num_triangles() == 0) throw InputError("the mesh has no triangles");
-  require_counter_clockwise(input);
-  // Named by the input's vertex ids here (prepare_metrics sees the renumbered copy); the name
-  // only for the error: building it for every vertex cost more than the test.
-  for (std::size_t v = 0; v < metrics.size(); ++v)
-    if (!is_spd(metrics[v]) || !std::isfinite(det(metrics[v])))
-      require_metric(metrics[v], "vertex " + std::to_string(v + 1));
+  require_valid_input<2>(input, metrics);
   Adapt2dResult result;
   // Work on a Hilbert-ordered copy (every adjacency build and walk below is cache-friendly),
   // unless the input is already numbered coherently (e.g. the output of a previous run): then

@@ -497,24 +497,6 @@ struct PassLoop {
   }
 };
 
-// Ids and orientation checked on the input's own numbering: the remesher works on a renumbered
-// copy, whose ids in a message would name another tetrahedron of the file.
-void require_positive_tets(const Mesh& m) {
-  const std::size_t nv = m.num_vertices();
-  for (std::size_t t = 0; t < m.num_tets(); ++t) {
-    const Id* v = &m.tets[4 * t];
-    Vec3 p[4];
-    for (int i = 0; i < 4; ++i) {
-      if (v[i] < 0 || static_cast<std::size_t>(v[i]) >= nv)
-        throw InputError("tetrahedron " + std::to_string(t + 1) + ": vertex id out of range");
-      p[i] = Vec3{{m.coords[3 * v[i]], m.coords[3 * v[i] + 1], m.coords[3 * v[i] + 2]}};
-    }
-    if (!(tet_volume(p[0], p[1], p[2], p[3]) > 0.0))
-      throw InputError("tetrahedron " + std::to_string(t + 1) +
-                       " has a negative or zero volume (3D remeshing needs positive tets)");
-  }
-}
-
 }  // namespace
 
 Adapt3dResult adapt3d(const Mesh& input, std::span<const SymMat3> metrics,
@@ -535,12 +517,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   if (options.approach_growth != 0.0) approach_stages(1.0, options.approach_growth);  // checks
   if (input.dim != 3 || input.num_tets() == 0)
     throw InputError("3D remeshing needs a tetrahedral mesh");
-  require_positive_tets(input);
-  // Named by the input's vertex ids here (prepare_metrics sees the renumbered copy); the name
-  // only for the error: building it for every vertex cost more than the test.
-  for (std::size_t v = 0; v < metrics.size(); ++v)
-    if (!is_spd(metrics[v]) || !std::isfinite(det(metrics[v])))
-      require_metric(metrics[v], "vertex " + std::to_string(v + 1));
+  require_valid_input<3>(input, metrics);
   Adapt3dResult result;
   // Memory (issue #7): the renumbered copy of the input, its adjacency and the metric copies
   // are only needed to build the context; they go before the passes, as the context (background

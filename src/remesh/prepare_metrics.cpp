@@ -114,6 +114,32 @@ std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
   return out;
 }
 
+template <int D>
+void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics) {
+  const std::vector<Id>& elems = D == 2 ? in.triangles : in.tets;
+  const char* name = D == 2 ? "triangle " : "tetrahedron ";
+  const std::size_t nv = in.num_vertices();
+  for (std::size_t e = 0; e + D < elems.size(); e += D + 1) {
+    Vec<D> p[D + 1];
+    for (int i = 0; i <= D; ++i) {
+      const Id v = elems[e + i];
+      if (v < 0 || static_cast<std::size_t>(v) >= nv)
+        throw InputError(name + std::to_string(e / (D + 1) + 1) + ": vertex id out of range");
+      for (int k = 0; k < D; ++k) p[i][k] = in.coords[D * v + k];
+    }
+    if (!(simplex_measure<D>(p) > 0.0))
+      throw InputError(name + std::to_string(e / (D + 1) + 1) +
+                       (D == 2 ? " is clockwise or degenerate"
+                               : " has a negative or zero volume (3D remeshing needs positive tets)"));
+  }
+  // The name only for the error: building it for every vertex cost more than the test.
+  for (std::size_t v = 0; v < metrics.size(); ++v)
+    if (!is_spd(metrics[v]) || !std::isfinite(det(metrics[v])))
+      require_metric(metrics[v], "vertex " + std::to_string(v + 1));
+}
+
+template void require_valid_input<2>(const Mesh&, std::span<const SymMat2>);
+template void require_valid_input<3>(const Mesh&, std::span<const SymMat3>);
 template std::vector<SymMat2> prepare_metrics<2>(const Mesh&, const Adjacency&,
                                                  std::span<const SymMat2>, const Adapt2dOptions&,
                                                  Adapt2dReport&);

@@ -15,6 +15,13 @@ namespace riemesh {
 /// ids hold), clipped to sizes in [o.hmin, o.hmax] and graded (o.hgrad, physical-space
 /// growth along adj.edges) copy of the input metrics. Clipping is reported in report.notes (with
 /// the place of the first vertex below hmin), gradation in report.gradation_before/after.
+/// Checks the input of a remeshing run on its own numbering, before the drivers renumber it (ids in
+/// a message would otherwise name another element or vertex of the file): element vertex ids in
+/// range, elements positively oriented (triangles counter-clockwise, tets of positive volume),
+/// each metric SPD with a finite determinant. InputError naming the 1-based element or vertex.
+template <int D>
+void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics);
+
 template <int D>
 std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
                                        std::span<const SymMat<D>> metrics,
