@@ -96,7 +96,30 @@ struct Changes {
   bool since(Id v, std::uint32_t t) const {
     return static_cast<std::size_t>(v) < stamp.size() && stamp[v] >= t;
   }
+  /// After the vertices were renumbered (old2new, kNoId: dropped; n: the new vertex count).
+  void renumber(const std::vector<Id>& old2new, std::size_t n) {
+    std::vector<std::uint32_t> out(n, 0);
+    for (std::size_t v = 0; v < stamp.size() && v < old2new.size(); ++v)
+      if (old2new[v] != kNoId) out[old2new[v]] = stamp[v];
+    stamp.swap(out);
+  }
 };
+
+// Splits append their vertices and triangles at the end of the arrays: once more than this
+// many vertices (and a quarter of the mesh) were created since the numbering last followed
+// the space, the new ones are renumbered along the Hilbert curve (Remesh2dContext::
+// renumber_new_vertices). Smaller meshes stay in the caches anyway (and keep their results).
+constexpr std::size_t kRenumberAfter = 16384;
+
+/// Renumbers the vertices created since `ordered` (the vertex count when the numbering last
+/// followed the space) when they are many; `changes` follows.
+void keep_locality(Remesh2dContext& ctx, Changes& changes, std::size_t& ordered) {
+  const std::size_t n = ctx.mesh().vertex_capacity();
+  if (n < ordered || n - ordered <= std::max(kRenumberAfter, n / 4)) return;
+  const std::vector<Id> old2new = ctx.renumber_new_vertices();
+  ordered = ctx.mesh().vertex_capacity();
+  changes.renumber(old2new, ordered);
+}
 
 /// An edge to split or collapse, by its end vertices (slots move as the mesh changes), and a
 /// flag computed for it when the list was made (collapse candidates: refused by length both
@@ -158,7 +181,7 @@ std::vector<Candidate> candidates(const TriMesh& m, double limit, bool longer,
 
 /// Splits the edges longer than √2, longest first, sweep after sweep (a split's new edges wait
 /// for the next sweep, so every long edge is reached and none is halved twice in a sweep).
-long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
+long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::size_t& ordered) {
   TriMesh& m = ctx.mesh();
   long total = 0;
   // At most 3 sweeps a pass: refining a coarse mesh step by step, with collapses, swaps and
@@ -188,6 +211,7 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes) {
       }
     }
     total += done;
+    keep_locality(ctx, changes, ordered);
     if (done == 0) break;
   }
   return total;
@@ -473,6 +497,7 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   int best_pass = 0;
   double prev_in = 0.0, prev_qmin = 0.0, prev_qmean = 0.0;
   Changes changes;
+  std::size_t in_order = m.vertex_capacity();  // vertices numbered in space order
   QualityCache qualities;
   std::uint32_t swap_from = 0, smooth_from = 0;  // stamps of the previous swap and smoothing sweeps
   for (int pass = 1; pass <= options.max_passes; ++pass) {
@@ -480,7 +505,7 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
     PassStats st;
     st.pass = pass;
     if (options.insert) {
-      st.splits = split_sweeps(ctx, st, changes);
+      st.splits = split_sweeps(ctx, st, changes, in_order);
       st.collapses = collapse_sweep(ctx, st, changes);
     }
     for (int k = 0; k < 2; ++k) {

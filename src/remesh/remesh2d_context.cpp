@@ -134,6 +134,15 @@ void Remesh2dContext::inherit_hint(Id v, Id /*near*/) {
   hint_[v] = last_found_;
 }
 
+std::vector<Id> Remesh2dContext::renumber_new_vertices() {
+  std::vector<Id> old2new = renumber_tail(mesh_, static_cast<Id>(num_input_vertices_));
+  std::vector<Id> hints(mesh_.vertex_capacity(), kNoId);
+  for (std::size_t v = 0; v < old2new.size() && v < hint_.size(); ++v)
+    if (old2new[v] != kNoId) hints[old2new[v]] = hint_[v];
+  hint_.swap(hints);
+  return old2new;
+}
+
 NewVertex Remesh2dContext::split_point(Id slot) const {
   const Id a = mesh_.edge_from(slot), b = mesh_.edge_to(slot);
   const Vec2 ab = mesh_.xy[b] - mesh_.xy[a];

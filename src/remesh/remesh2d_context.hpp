@@ -60,6 +60,11 @@ class Remesh2dContext {
   /// metric_for query (the start of its next walk).
   void inherit_hint(Id v, Id near);
 
+  /// Renumbers the vertices created since the start (ids from the input's vertex count on) and
+  /// the triangles for locality (renumber_tail), the hints in step. Returns old -> new vertex
+  /// ids (kNoId: dead, dropped) for the caller's per-vertex data.
+  std::vector<Id> renumber_new_vertices();
+
  private:
   /// Parameter of vertex v on curve c, in the unwrapped branch nearest to `near`.
   double param_on(Id v, std::int32_t c, double near) const;

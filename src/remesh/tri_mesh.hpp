@@ -95,6 +95,15 @@ inline int vertex_index(const TriMesh& m, Id t, Id v) {
 /// one does), or kNoId when a and b are not joined.
 Id find_edge_slot(const TriMesh& m, Id a, Id b);
 
+/// Renumbers the vertices from `first` on along the Hilbert curve, dropping the dead ones (ids
+/// below `first` are kept, so data the caller keeps per input vertex stays valid), then the
+/// triangles by their smallest vertex id (stable; dead ones dropped); adjacency, back-pointers and
+/// free lists follow. Splits append their vertices and triangles at the end of the arrays, far
+/// in memory from their neighbours: after a pass that multiplied the mesh, every ball walk
+/// misses the caches, and this restores the locality. Returns old -> new vertex ids (kNoId for
+/// the dropped ones) for the caller's per-vertex data. Deterministic.
+std::vector<Id> renumber_tail(TriMesh& m, Id first);
+
 /// Structural and geometric invariants of a TriMesh (for tests and debugging): symmetric
 /// adjacency, matching edge data on both sides, live vertex back-pointers, positive areas.
 /// Returns an empty string when all hold, otherwise the first violation.

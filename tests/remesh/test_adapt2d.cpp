@@ -95,6 +95,26 @@ TEST(Adapt2d, UniformRefinementCountNearTheUnitMesh) {
   }
 }
 
+// Splits append their vertices at the end of the arrays; a mesh refined many times over is
+// renumbered along the space between sweeps (cache locality), so its output's numbering is
+// coherent: few triangles span more than 4,096 vertex ids (measured: 5.6%; without the
+// renumbering 99.9%).
+TEST(Adapt2d, RefinedMeshNumberedAlongTheSpace) {
+  const Mesh in = unit_square(20, 20);
+  const std::vector<SymMat2> met(in.num_vertices(), isotropic_metric<2>(0.005));
+  Adapt2dOptions o;
+  o.hgrad = 0.0;
+  const Adapt2dResult r = adapt2d(in, met, o);
+  ASSERT_GT(r.mesh.num_vertices(), 20000u);
+  EXPECT_TRUE(check_mesh(r.mesh).valid());
+  std::size_t far = 0;
+  for (std::size_t t = 0; t < r.mesh.num_triangles(); ++t) {
+    const Id* v = &r.mesh.triangles[3 * t];
+    far += *std::max_element(v, v + 3) - *std::min_element(v, v + 3) > 4096 ? 1 : 0;
+  }
+  EXPECT_LT(static_cast<double>(far), 0.1 * static_cast<double>(r.mesh.num_triangles()));
+}
+
 TEST(Adapt2d, AnisotropicLinearFieldAfterPasses) {
   // The milder linear field (h0 = 0.01), iterated as the UGAWG benchmark does: the metric is
   // re-evaluated on each new mesh. After 4 passes: ≥ 95% of edges in [1/√2, √2], none below 0.4

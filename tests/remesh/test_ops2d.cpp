@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <tuple>
 
+#include "mesh/hilbert.hpp"
 #include "metric/metric.hpp"
 #include "remesh/ops2d.hpp"
 #include "remesh/square_tri_mesh.hpp"
@@ -53,6 +55,98 @@ TEST(TriMesh, RoundTripToMesh) {
   int corners = 0;
   for (auto t : out.vert_tag) corners += (t & kTagCorner) ? 1 : 0;
   EXPECT_EQ(corners, 4);
+}
+
+// Renumbering the vertices created by splits (and the triangles) keeps the mesh: the same
+// triangles by their corners, valid adjacency and feature data, the head's ids in place, the
+// dead slots dropped, the tail in Hilbert order and the triangles by their smallest vertex.
+TEST(TriMesh, RenumberTailKeepsTheMesh) {
+  TriMesh m = square_tri_mesh(3, isotropic_metric<2>(0.05));
+  const Id head = static_cast<Id>(m.vertex_capacity());  // 16
+  // Each live triangle as its corners' coordinates, from the lexicographically smallest corner
+  // (counter-clockwise order kept), sorted: equal for the same triangles under any numbering.
+  auto corners = [](const TriMesh& x) {
+    std::vector<std::array<double, 6>> out;
+    for (std::size_t t = 0; t < x.triangle_capacity(); ++t) {
+      if (!x.tri_alive(static_cast<Id>(t))) continue;
+      std::array<double, 6> best{};
+      for (int r = 0; r < 3; ++r) {
+        std::array<double, 6> c;
+        for (int i = 0; i < 3; ++i) {
+          const Vec2& p = x.xy[x.tv[3 * t + (r + i) % 3]];
+          c[2 * i] = p[0], c[2 * i + 1] = p[1];
+        }
+        if (r == 0 || c < best) best = c;
+      }
+      out.push_back(best);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  // Three split sweeps, then a collapse: new vertices at the end, dead slots in the tail.
+  for (int sweep = 0; sweep < 3; ++sweep) {
+    const std::size_t n = m.tadj.size();
+    for (std::size_t s = 0; s < n; s += 2) {
+      const Id si = static_cast<Id>(s);
+      if (!m.tri_alive(si / 3)) continue;
+      const Id a = m.edge_from(si), b = m.edge_to(si);
+      NewVertex nv{0.5 * (m.xy[a] + m.xy[b]), m.metric[a]};
+      if (m.is_feature(si)) nv.curve = m.ecurve[si];
+      Id created;
+      split_edge(m, si, nv, 0.0, &created);
+    }
+  }
+  // The last interior vertex that collapses into a neighbour.
+  const CollapseLimits loose{0.0, 10.0};
+  Id gone = kNoId;
+  for (Id v = static_cast<Id>(m.vertex_capacity()) - 1; v >= head && gone == kNoId; --v) {
+    if (m.on_curve(v)) continue;
+    Ball ball;
+    collect_ball(m, v, ball);
+    for (const Id t : ball.tris) {
+      const Id to = m.tv[3 * t + (vertex_index(m, t, v) + 1) % 3];
+      if (collapse_edge(m, find_edge_slot(m, v, to), v, to, loose) == Outcome::kApplied) {
+        gone = v;
+        break;
+      }
+    }
+  }
+  ASSERT_NE(gone, kNoId);
+  ASSERT_EQ(check_tri_mesh(m), "");
+  ASSERT_FALSE(m.free_verts.empty());
+  const TriMesh before = m;
+
+  const std::vector<Id> old2new = renumber_tail(m, head);
+  EXPECT_EQ(check_tri_mesh(m), "");
+  EXPECT_EQ(corners(m), corners(before));
+  EXPECT_EQ(m.num_live_vertices(), before.num_live_vertices());
+  EXPECT_EQ(m.vertex_capacity(), before.num_live_vertices());  // no dead slot left in the tail
+  EXPECT_TRUE(m.free_tris.empty());
+  EXPECT_EQ(old2new[gone], kNoId);
+  for (Id v = 0; v < head; ++v) EXPECT_EQ(old2new[v], v);
+  for (std::size_t v = 0; v < old2new.size(); ++v) {
+    if (old2new[v] == kNoId) continue;
+    EXPECT_EQ(m.xy[old2new[v]], before.xy[v]);
+    EXPECT_EQ(m.vcurve[old2new[v]], before.vcurve[v]);
+    EXPECT_EQ(m.vparam[old2new[v]], before.vparam[v]);
+    EXPECT_EQ(m.vtag[old2new[v]], before.vtag[v]);
+  }
+  std::vector<double> tail;
+  for (std::size_t v = static_cast<std::size_t>(head); v < m.vertex_capacity(); ++v)
+    tail.insert(tail.end(), {m.xy[v][0], m.xy[v][1]});
+  const std::vector<Id> order = hilbert_order(tail, 2);
+  for (std::size_t i = 0; i < order.size(); ++i) EXPECT_EQ(order[i], static_cast<Id>(i));
+  for (std::size_t k = 1; k < m.triangle_capacity(); ++k) {
+    const Id* p = &m.tv[3 * (k - 1)];
+    const Id* q = &m.tv[3 * k];
+    EXPECT_LE(*std::min_element(p, p + 3), *std::min_element(q, q + 3));
+  }
+  // Once ordered, a second renumbering changes nothing.
+  const TriMesh once = m;
+  const std::vector<Id> again = renumber_tail(m, head);
+  for (std::size_t v = 0; v < again.size(); ++v) EXPECT_EQ(again[v], static_cast<Id>(v));
+  EXPECT_EQ(m.tv, once.tv);
+  EXPECT_EQ(m.tadj, once.tadj);
 }
 
 TEST(Split, InteriorEdgeAddsTwoTriangles) {
