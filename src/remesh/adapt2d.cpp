@@ -108,14 +108,16 @@ struct Changes {
 // Splits append their vertices and triangles at the end of the arrays: once more than this
 // many vertices (and a quarter of the mesh) were created since the numbering last followed
 // the space, the new ones are renumbered along the Hilbert curve (Remesh2dContext::
-// renumber_new_vertices). Smaller meshes stay in the caches anyway (and keep their results).
+// renumber_new_vertices; Adapt2dOptions::renumber_after). Smaller meshes stay in the caches
+// anyway (and keep their results).
 constexpr std::size_t kRenumberAfter = 16384;
 
 /// Renumbers the vertices created since `ordered` (the vertex count when the numbering last
 /// followed the space) when they are many; `changes` follows.
 void keep_locality(Remesh2dContext& ctx, Changes& changes, std::size_t& ordered) {
   const std::size_t n = ctx.mesh().vertex_capacity();
-  if (n < ordered || n - ordered <= std::max(kRenumberAfter, n / 4)) return;
+  const std::size_t after = ctx.options().renumber_after ? ctx.options().renumber_after : kRenumberAfter;
+  if (n < ordered || n - ordered <= std::max(after, n / 4)) return;
   const std::vector<Id> old2new = ctx.renumber_new_vertices();
   ordered = ctx.mesh().vertex_capacity();
   changes.renumber(old2new, ordered);

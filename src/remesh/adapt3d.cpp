@@ -425,12 +425,56 @@ double longest_edge(const Mesh& mesh, std::span<const SymMat3> field) {
   return out;
 }
 
+/// A failure memo after the tets were renumbered (old -> new, kNoId: dropped).
+void renumber_memo(FailureMemo& memo, const std::vector<Id>& tet_old2new) {
+  std::vector<std::uint32_t> at;
+  for (std::size_t t = 0; t < memo.at.size() && t < tet_old2new.size(); ++t) {
+    const Id n = tet_old2new[t];
+    if (n == kNoId || memo.at[t] == 0) continue;
+    if (at.size() <= static_cast<std::size_t>(n)) at.resize(static_cast<std::size_t>(n) + 1, 0);
+    at[n] = memo.at[t];
+  }
+  memo.at.swap(at);
+}
+
+// Splits append their vertices and tets at the end of the arrays: once the split sweeps of a
+// pass leave more than this many vertices (and more than a quarter of the mesh) created since
+// the numbering last followed the space, the new ones are renumbered along the Hilbert curve
+// (Remesh3dContext::renumber_new_vertices), as in 2D. Fewer leave the mesh in the caches
+// enough (the UGAWG cases, up to ~18 k vertices, keep their results).
+constexpr std::size_t kRenumberAfter = 65536;
+
+/// Renumbers the vertices created since `in_order` (the vertex count when the numbering last
+/// followed the space) when they are many; the memos and the collapse candidates follow, and
+/// the neighbour table is dropped (a cache: without it the sweeps walk the balls). True when
+/// it renumbered.
+bool keep_locality(Remesh3dContext& ctx, std::size_t renumber_after, SweepMemos& memos,
+                   std::size_t& in_order, std::vector<ShortEdge>& short_edges,
+                   NeighbourTable& nbrs) {
+  const std::size_t n = ctx.mesh().vertex_capacity();
+  const std::size_t after = renumber_after ? renumber_after : kRenumberAfter;
+  if (n < in_order || n - in_order <= std::max(after, n / 4)) return false;
+  std::vector<Id> tet_old2new;
+  const std::vector<Id> old2new = ctx.renumber_new_vertices(&tet_old2new);
+  in_order = ctx.mesh().vertex_capacity();
+  renumber_memo(memos.swaps, tet_old2new);
+  renumber_memo(memos.slivers, tet_old2new);
+  std::erase_if(short_edges, [&old2new](ShortEdge& e) {
+    e.a = old2new[e.a], e.b = old2new[e.b];
+    if (e.a > e.b) std::swap(e.a, e.b);
+    return e.a == kNoId;
+  });
+  nbrs = NeighbourTable{};
+  return true;
+}
+
 /// One pass: splits and collapses, swaps and smoothing, clean-up, sliver removal.
 void run_pass(Remesh3dContext& ctx, const Adapt3dOptions& options, EdgeLists& lists,
-              NeighbourTable& nbrs, SweepMemos& memos, PassStats& st) {
+              NeighbourTable& nbrs, SweepMemos& memos, std::size_t& in_order, PassStats& st) {
   TetMesh& m = ctx.mesh();
   if (options.insert) {
     st.splits = split_sweeps(ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0, lists);
+    keep_locality(ctx, options.renumber_after, memos, in_order, lists.short_edges, nbrs);
     st.collapses = collapse_sweep(ctx, st, std::move(lists.short_edges), nbrs);
   }
   std::uint32_t smoothed = 0;  // the clock at the start of the last smoothing sweep
@@ -462,6 +506,7 @@ struct PassLoop {
   SweepMemos& memos;
   Adapt2dReport& report;
   const PassCallback& on_pass;
+  std::size_t& in_order;  // vertices numbered in space order (keep_locality)
 
   /// At most max_passes passes (at least one), stage k of n (0, 0: the target field, no
   /// stages). True when they converged: fewer than 2% of the vertices inserted or removed (0.5%
@@ -478,7 +523,7 @@ struct PassLoop {
       PassStats st;
       st.pass = static_cast<int>(report.passes.size()) + 1;
       st.stage = k, st.stages = n;
-      run_pass(ctx, options, lists, nbrs, memos, st);
+      run_pass(ctx, options, lists, nbrs, memos, in_order, st);
       summarize(m, st, lists, options.insert ? &nbrs : nullptr);
       st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       report.passes.push_back(st);
@@ -560,7 +605,8 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   NeighbourTable nbrs;  // the vertices' neighbours, for the collapses' length test
   NeighbourTable* const nbrs_wanted = options.insert ? &nbrs : nullptr;
   SweepMemos memos;    // the tets on which the swap and sliver sweeps failed
-  PassLoop loop{*ctx, options, lists, nbrs, memos, result.report, on_pass};
+  std::size_t in_order = m.vertex_capacity();
+  PassLoop loop{*ctx, options, lists, nbrs, memos, result.report, on_pass, in_order};
   const int n = stages;
   if (approach) {  // the staged approach: a few passes toward each intermediate field
     for (int k = 1; k < n; ++k) {

@@ -74,6 +74,7 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
     boundary_ = std::make_unique<Boundary3d>(mesh_, std::move(curved), options),
     mesh_.surface = boundary_.get();
   classify_vertices();
+  num_input_vertices_ = mesh_.vertex_capacity();
   hint_.assign(mesh_.vertex_capacity(), kNoId);
   for (std::size_t v = 0; v < hint_.size(); ++v) hint_[v] = mesh_.vtet[v];
   std::vector<Id> shell;
@@ -220,6 +221,15 @@ void Remesh3dContext::set_field(std::vector<SymMat3>&& metrics) {
 void Remesh3dContext::inherit_hint(Id v) {
   if (static_cast<std::size_t>(v) >= hint_.size()) hint_.resize(v + 1, kNoId);
   hint_[v] = last_found_;
+}
+
+std::vector<Id> Remesh3dContext::renumber_new_vertices(std::vector<Id>* tet_old2new) {
+  std::vector<Id> old2new = renumber_tail(mesh_, static_cast<Id>(num_input_vertices_), tet_old2new);
+  std::vector<Id> hints(mesh_.vertex_capacity(), kNoId);
+  for (std::size_t v = 0; v < old2new.size() && v < hint_.size(); ++v)
+    if (old2new[v] != kNoId) hints[old2new[v]] = hint_[v];
+  hint_.swap(hints);
+  return old2new;
 }
 
 bool Remesh3dContext::smoothing_target(Id v, NewVertex3& out, std::vector<Id>* ball_out,

@@ -57,6 +57,11 @@ class Remesh3dContext {
   /// Records, for vertex v just created or moved, the background tet of the last metric_for.
   void inherit_hint(Id v);
 
+  /// Renumbers the vertices created since the start (ids from the input's vertex count on) and
+  /// the tets for locality (renumber_tail), the hints in step. Returns old -> new vertex ids
+  /// and the tets' in *tet_old2new (kNoId: dead, dropped) for the caller's data.
+  std::vector<Id> renumber_new_vertices(std::vector<Id>* tet_old2new);
+
  private:
   struct Plane {
     Vec3 n{};
@@ -72,7 +77,8 @@ class Remesh3dContext {
   BackgroundMesh<3> background_;
   std::map<std::int32_t, Plane> planes_;
   std::vector<std::int32_t> edge_refs_;
-  std::vector<Id> hint_;
+  std::vector<Id> hint_;  // per vertex: a background tet near it
+  std::size_t num_input_vertices_ = 0;
   mutable Id last_found_ = kNoId;
   std::unique_ptr<Boundary3d> boundary_;  // the curved patches (null: none, or kept)
 };

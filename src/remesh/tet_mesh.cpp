@@ -4,8 +4,9 @@
 #include <limits>
 #include <utility>
 
-#include "remesh/vertex_logs.hpp"
 #include "mesh/adjacency.hpp"
+#include "remesh/renumber_tail.hpp"
+#include "remesh/vertex_logs.hpp"
 
 namespace riemesh {
 namespace {
@@ -115,6 +116,49 @@ Id TetMesh::add_vertex(const Vec3& p, const SymMat3& m) {
 void TetMesh::kill_vertex(Id v) {
   vtet[v] = kNoId;
   free_verts.push_back(v);
+}
+
+std::vector<Id> renumber_tail(TetMesh& m, Id first, std::vector<Id>* tet_old2new) {
+  using namespace detail;
+  TailOrder o = tail_order(
+      m.vertex_capacity(), static_cast<std::size_t>(first), [&m](Id v) { return m.vert_alive(v); },
+      [&m](Id v) { return m.xyz[v].x; }, 3, m.tv, 4);
+  const std::size_t nv = m.vertex_capacity(), nt = m.tet_capacity();
+  // The lazily grown arrays first brought to full size (the values they stand for when short).
+  if (!m.vtouch.empty() || !m.vmoved.empty())
+    m.vtouch.resize(nv, 0), m.vmoved.resize(nv, 0);
+  if (!m.quality.empty()) m.quality.resize(nt, std::numeric_limits<double>::quiet_NaN());
+  gather_records(m.xyz, o.vertex_new2old, 1);
+  gather_records(m.metric, o.vertex_new2old, 1);
+  if (!m.log_metric.empty()) gather_records(m.log_metric, o.vertex_new2old, 1);
+  gather_records(m.vref, o.vertex_new2old, 1);
+  gather_records(m.vtag, o.vertex_new2old, 1);
+  gather_records(m.vkind, o.vertex_new2old, 1);
+  gather_records(m.vplane, o.vertex_new2old, 2);
+  gather_records(m.vtet, o.vertex_new2old, 1);
+  if (!m.vtouch.empty()) {
+    gather_records(m.vtouch, o.vertex_new2old, 1);
+    gather_records(m.vmoved, o.vertex_new2old, 1);
+  }
+  gather_records(m.tv, o.elem_new2old, 4);
+  gather_records(m.tadj, o.elem_new2old, 4);
+  gather_records(m.tref, o.elem_new2old, 1);
+  gather_records(m.fbdy, o.elem_new2old, 4);
+  if (!m.quality.empty()) gather_records(m.quality, o.elem_new2old, 1);
+  for (Id& v : m.tv) v = o.vertex_old2new[v];
+  renumber_slots(m.tadj, o.elem_old2new, 4);
+  for (Id& t : m.vtet)
+    if (t != kNoId) t = o.elem_old2new[t];
+  std::map<Id, std::int32_t> overflow;
+  for (const auto& [slot, ref] : m.ref_overflow)
+    if (const Id t = o.elem_old2new[static_cast<std::size_t>(slot / 4)]; t != kNoId)
+      overflow[4 * t + slot % 4] = ref;
+  m.ref_overflow.swap(overflow);
+  m.mark.assign(m.tet_capacity(), 0);  // scratch: no walk is under way
+  m.free_tets.clear();
+  std::erase_if(m.free_verts, [first](Id v) { return v >= first; });
+  if (tet_old2new) *tet_old2new = std::move(o.elem_old2new);
+  return std::move(o.vertex_old2new);
 }
 
 void ball_neighbours(const TetMesh& m, Id v, std::span<const Id> ball, std::vector<Id>& out) {

@@ -169,6 +169,14 @@ struct Substitution {
 bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewTet> tets,
                     std::span<const Substitution> subst, std::vector<Id>* created = nullptr);
 
+/// Renumbers the vertices from `first` on along the Hilbert curve, dropping the dead ones (ids
+/// below `first` are kept: data kept per input vertex stays valid), then the tets by their
+/// smallest vertex id (stably; dead ones dropped); adjacency, back-pointers, face refs, the
+/// per-vertex clocks, the quality cache and the free lists follow (as renumber_tail for the
+/// TriMesh: splits append far from the neighbours, and this restores the locality). Returns the
+/// old -> new vertex ids, and the tets' in *tet_old2new when given (kNoId: dropped).
+std::vector<Id> renumber_tail(TetMesh& m, Id first, std::vector<Id>* tet_old2new = nullptr);
+
 /// Structural and geometric invariants (tests, debugging): symmetric adjacency with opposite
 /// orientations, boundary faces listed, listed data equal on both sides, live vertex
 /// back-pointers, positive volumes. Empty when all hold, otherwise the first violation.

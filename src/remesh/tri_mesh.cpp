@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "core/huge_pages.hpp"
-#include "mesh/hilbert.hpp"
+#include "remesh/renumber_tail.hpp"
 #include "remesh/vertex_logs.hpp"
 
 namespace riemesh {
@@ -135,76 +134,32 @@ Id find_edge_slot(const TriMesh& m, Id a, Id b) {
   }
 }
 
-namespace {
-
-/// a = the records new2old lists, `stride` values each, in that order; the storage reserved
-/// with room for as many again (splits then append without copying).
-template <class T>
-void gather_records(std::vector<T>& a, const std::vector<Id>& new2old, std::size_t stride) {
-  std::vector<T> out;
-  reserve_huge(out, 2 * stride * new2old.size());
-  for (const Id old : new2old)
-    for (std::size_t k = 0; k < stride; ++k) out.push_back(a[stride * static_cast<std::size_t>(old) + k]);
-  a.swap(out);
-}
-
-}  // namespace
-
 std::vector<Id> renumber_tail(TriMesh& m, Id first) {
-  const std::size_t nv = m.vertex_capacity(), head = static_cast<std::size_t>(first);
-  // Vertices: the head in place, then the live tail in Hilbert order.
-  std::vector<Id> tail;
-  std::vector<double> coords;
-  for (std::size_t v = head; v < nv; ++v)
-    if (m.vert_alive(static_cast<Id>(v))) {
-      tail.push_back(static_cast<Id>(v));
-      coords.insert(coords.end(), {m.xy[v][0], m.xy[v][1]});
-    }
-  std::vector<Id> new2old(head);
-  for (std::size_t v = 0; v < head; ++v) new2old[v] = static_cast<Id>(v);
-  for (const Id k : hilbert_order(coords, 2)) new2old.push_back(tail[k]);
-  std::vector<Id> old2new(nv, kNoId);
-  for (std::size_t v = 0; v < new2old.size(); ++v) old2new[new2old[v]] = static_cast<Id>(v);
-  // Triangles: live ones by their smallest new vertex id (a counting sort, stable).
-  const std::size_t nt = m.triangle_capacity();
-  std::vector<Id> start(new2old.size() + 1, 0);
-  for (std::size_t t = 0; t < nt; ++t) {
-    if (!m.tri_alive(static_cast<Id>(t))) continue;
-    const Id* v = &m.tv[3 * t];
-    ++start[std::min({old2new[v[0]], old2new[v[1]], old2new[v[2]]}) + 1];
-  }
-  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-  std::vector<Id> tri_new2old(static_cast<std::size_t>(start.back()));
-  std::vector<Id> tri_old2new(nt, kNoId);
-  for (std::size_t t = 0; t < nt; ++t) {
-    if (!m.tri_alive(static_cast<Id>(t))) continue;
-    const Id* v = &m.tv[3 * t];
-    const Id at = start[std::min({old2new[v[0]], old2new[v[1]], old2new[v[2]]})]++;
-    tri_new2old[at] = static_cast<Id>(t);
-    tri_old2new[t] = at;
-  }
-  gather_records(m.xy, new2old, 1);
-  gather_records(m.metric, new2old, 1);
-  if (!m.log_metric.empty()) gather_records(m.log_metric, new2old, 1);
-  gather_records(m.vref, new2old, 1);
-  gather_records(m.vtag, new2old, 1);
-  gather_records(m.vcurve, new2old, 1);
-  gather_records(m.vparam, new2old, 1);
-  gather_records(m.vtri, new2old, 1);
-  gather_records(m.tv, tri_new2old, 3);
-  gather_records(m.tadj, tri_new2old, 3);
-  gather_records(m.tref, tri_new2old, 1);
-  gather_records(m.ecurve, tri_new2old, 3);
-  gather_records(m.eref, tri_new2old, 3);
-  gather_records(m.etag, tri_new2old, 3);
-  for (Id& v : m.tv) v = old2new[v];
-  for (Id& s : m.tadj)
-    if (s != kNoId) s = 3 * tri_old2new[s / 3] + s % 3;
+  using namespace detail;
+  TailOrder o = tail_order(
+      m.vertex_capacity(), static_cast<std::size_t>(first), [&m](Id v) { return m.vert_alive(v); },
+      [&m](Id v) { return m.xy[v].x; }, 2, m.tv, 3);
+  gather_records(m.xy, o.vertex_new2old, 1);
+  gather_records(m.metric, o.vertex_new2old, 1);
+  if (!m.log_metric.empty()) gather_records(m.log_metric, o.vertex_new2old, 1);
+  gather_records(m.vref, o.vertex_new2old, 1);
+  gather_records(m.vtag, o.vertex_new2old, 1);
+  gather_records(m.vcurve, o.vertex_new2old, 1);
+  gather_records(m.vparam, o.vertex_new2old, 1);
+  gather_records(m.vtri, o.vertex_new2old, 1);
+  gather_records(m.tv, o.elem_new2old, 3);
+  gather_records(m.tadj, o.elem_new2old, 3);
+  gather_records(m.tref, o.elem_new2old, 1);
+  gather_records(m.ecurve, o.elem_new2old, 3);
+  gather_records(m.eref, o.elem_new2old, 3);
+  gather_records(m.etag, o.elem_new2old, 3);
+  for (Id& v : m.tv) v = o.vertex_old2new[v];
+  renumber_slots(m.tadj, o.elem_old2new, 3);
   for (Id& t : m.vtri)
-    if (t != kNoId) t = tri_old2new[t];
+    if (t != kNoId) t = o.elem_old2new[t];
   m.free_tris.clear();
-  std::erase_if(m.free_verts, [head](Id v) { return static_cast<std::size_t>(v) >= head; });
-  return old2new;
+  std::erase_if(m.free_verts, [first](Id v) { return v >= first; });
+  return std::move(o.vertex_old2new);
 }
 
 std::string check_tri_mesh(const TriMesh& m) {

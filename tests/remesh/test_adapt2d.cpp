@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <set>
 #include <string>
 
@@ -113,6 +114,34 @@ TEST(Adapt2d, RefinedMeshNumberedAlongTheSpace) {
     far += *std::max_element(v, v + 3) - *std::min_element(v, v + 3) > 4096 ? 1 : 0;
   }
   EXPECT_LT(static_cast<double>(far), 0.1 * static_cast<double>(r.mesh.num_triangles()));
+}
+
+// The same with renumberings forced on a small case (Adapt2dOptions::renumber_after 200, the
+// change stamps following): the same bounds as without, and deterministic.
+TEST(Adapt2d, RenumberingTheNewVerticesKeepsTheBounds) {
+  const Mesh in = unit_square(10, 10);
+  const std::vector<SymMat2> met = linear_field(in, 0.01);
+  Adapt2dOptions o;
+  o.hgrad = 0.0;
+  o.renumber_after = 200;
+  const Adapt2dResult a = adapt2d(in, met, o), again = adapt2d(in, met, o);
+  o.renumber_after = SIZE_MAX;
+  const Adapt2dResult never = adapt2d(in, met, o);
+  EXPECT_EQ(a.mesh.coords, again.mesh.coords);
+  EXPECT_EQ(a.mesh.triangles, again.mesh.triangles);
+  EXPECT_NE(a.mesh.triangles, never.mesh.triangles);  // renumbered: swept in another order
+  for (const Adapt2dResult* r : {&a, &never}) {
+    EXPECT_TRUE(check_mesh(r->mesh).valid());
+    EXPECT_NEAR(area(r->mesh), 1.0, 1e-12);
+    const std::vector<double> len = edge_lengths(r->mesh, 0.01);
+    const double in_band = std::count_if(len.begin(), len.end(), [](double l) {
+                             return l >= std::sqrt(0.5) && l <= std::sqrt(2.0);
+                           }) / static_cast<double>(len.size());
+    EXPECT_GT(in_band, 0.95);
+    EXPECT_GT(*std::min_element(len.begin(), len.end()), 0.4);
+    EXPECT_LT(*std::max_element(len.begin(), len.end()), 2.0);
+    EXPECT_GT(r->report.passes.back().q_min, 0.5);
+  }
 }
 
 TEST(Adapt2d, AnisotropicLinearFieldAfterPasses) {

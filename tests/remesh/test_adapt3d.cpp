@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <tuple>
 #include <utility>
@@ -163,6 +164,33 @@ TEST(Adapt3d, StagedApproachFromACoarseCube) {
   // Near its target already: one stage, no intermediate field.
   const Adapt3dResult again = adapt3d(staged.mesh, staged.metrics, {});
   EXPECT_EQ(again.report.passes.front().stages, 0);
+}
+
+// The vertices created by the split sweeps renumbered for locality (Adapt3dOptions::
+// renumber_after, 65,536 by default, here 300 to renumber a small case several times, the
+// memos, collapse candidates and neighbour table following): the same bounds as without, and
+// deterministic. Measured: 96.3% in band / lengths 0.578..1.490 / q_min 0.557 with, 96.3% /
+// 0.601..1.438 / 0.568 without (linear metric, h0 = 0.02, ~2,290 tets).
+TEST(Adapt3d, RenumberingTheNewVerticesKeepsTheBounds) {
+  const Mesh cube = unit_cube(4);
+  Adapt3dOptions o;
+  o.hgrad = 0.0;
+  o.renumber_after = 300;
+  const Adapt3dResult a = adapt3d(cube, linear_metric(cube, 0.02, 0.25), o);
+  const Adapt3dResult again = adapt3d(cube, linear_metric(cube, 0.02, 0.25), o);
+  o.renumber_after = SIZE_MAX;
+  const Adapt3dResult never = adapt3d(cube, linear_metric(cube, 0.02, 0.25), o);
+  expect_valid_cube(a);
+  EXPECT_EQ(a.mesh.coords, again.mesh.coords);
+  EXPECT_EQ(a.mesh.tets, again.mesh.tets);
+  EXPECT_NE(a.mesh.tets, never.mesh.tets);  // renumbered: swept in another order
+  for (const Adapt3dResult* r : {&a, &never}) {
+    const PassStats& s = r->report.passes.back();
+    EXPECT_GT(s.len_in, 0.93);
+    EXPECT_GT(s.len_min, 0.5);
+    EXPECT_LT(s.len_max, 1.6);
+    EXPECT_GT(s.q_min, 0.5);
+  }
 }
 
 TEST(Adapt3d, TakingOverTheInputGivesTheSameMesh) {

@@ -7,7 +7,9 @@
 #include <map>
 
 #include "mesh/check.hpp"
+#include "mesh/adjacency.hpp"
 #include "mesh/fixtures.hpp"
+#include "mesh/hilbert.hpp"
 #include "metric/metric.hpp"
 #include "remesh/ops3d.hpp"
 #include "tet_test_util.hpp"
@@ -86,6 +88,99 @@ TEST(TetMesh, KeepsMoreDistinctFaceRefsThanItsOneByteTable) {
   for (const int r : back.tri_ref) ++count[r];
   ASSERT_EQ(count.size(), 300u);
   for (const auto& [r, c] : count) EXPECT_EQ(c, 4) << r;
+}
+
+// Renumbering the vertices created by splits (and the tets) keeps the mesh: the same tets by
+// their corners, the face refs (overflow ones too), the quality cache and the clocks by vertex;
+// the head's ids in place, the dead slots dropped, the tail in Hilbert order, the tets by their
+// smallest vertex.
+TEST(TetMesh, RenumberTailKeepsTheMesh) {
+  Mesh cube = unit_cube(5);  // 300 boundary triangles, each its own ref: 46 in the overflow map
+  for (std::size_t f = 0; f < cube.num_triangles(); ++f) cube.tri_ref[f] = 1000 + static_cast<int>(f);
+  TetMesh m = build_tet_mesh(cube, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()));
+  ASSERT_FALSE(m.ref_overflow.empty());
+  const Id head = static_cast<Id>(m.vertex_capacity());
+  // Split every edge once (boundary ones carry their refs to the halves), then collapse a new
+  // interior vertex: new vertices at the end, a dead slot in the tail.
+  std::vector<std::pair<Id, Id>> edges;
+  for (std::size_t t = 0; t < cube.num_tets(); ++t)
+    for (const auto& [i, j] : kTetEdge) edges.emplace_back(cube.tets[4 * t + i], cube.tets[4 * t + j]);
+  for (const auto& [a, b] : edges) {
+    if (find_edge_tet(m, a, b) == kNoId) continue;
+    NewVertex3 nv;
+    nv.p = 0.5 * (m.xyz[a] + m.xyz[b]);
+    nv.metric = SymMat3::identity();
+    Id x = kNoId;
+    split_edge(m, a, b, nv, 0.0, &x);
+  }
+  Id gone = kNoId;
+  std::vector<Id> ball, around;
+  for (Id v = static_cast<Id>(m.vertex_capacity()) - 1; v >= head && gone == kNoId; --v) {
+    if (m.vkind[v] != VertexKind::kInterior) continue;
+    collect_ball(m, v, ball);
+    ball_neighbours(m, v, ball, around);
+    for (const Id to : around)
+      if (collapse_edge(m, v, to, CollapseLimits{0.0, 10.0}) == Outcome::kApplied) {
+        gone = v;
+        break;
+      }
+  }
+  ASSERT_NE(gone, kNoId);
+  ASSERT_EQ(check_tet_mesh(m), "");
+  for (std::size_t t = 0; t < m.tet_capacity(); ++t)
+    if (m.tet_alive(static_cast<Id>(t))) cached_quality(m, static_cast<Id>(t));
+  m.vtouch.resize(m.vertex_capacity(), 0);
+  for (std::size_t v = 0; v < m.vtouch.size(); ++v) m.vtouch[v] = static_cast<std::uint32_t>(v);
+  const TetMesh before = m;
+
+  std::vector<Id> tet_old2new;
+  const std::vector<Id> old2new = renumber_tail(m, head, &tet_old2new);
+  EXPECT_EQ(check_tet_mesh(m), "");
+  // The tets and the listed faces by their corners' coordinates, with their refs.
+  auto corners = [](const Mesh& x, const std::vector<Id>& conn, int k, const std::vector<int>& refs) {
+    std::map<std::vector<double>, int> out;
+    for (std::size_t e = 0; e < conn.size() / k; ++e) {
+      std::vector<std::array<double, 3>> c;
+      for (int i = 0; i < k; ++i) {
+        const Id v = conn[k * e + i];
+        c.push_back({x.coords[3 * v], x.coords[3 * v + 1], x.coords[3 * v + 2]});
+      }
+      std::sort(c.begin(), c.end());
+      std::vector<double> key;
+      for (const auto& p : c) key.insert(key.end(), p.begin(), p.end());
+      out[key] = refs.empty() ? 0 : refs[e];
+    }
+    return out;
+  };
+  const Mesh a = to_mesh(before, {}), b = to_mesh(m, {});
+  EXPECT_EQ(corners(b, b.tets, 4, {}), corners(a, a.tets, 4, {}));
+  EXPECT_EQ(corners(b, b.triangles, 3, b.tri_ref), corners(a, a.triangles, 3, a.tri_ref));
+  EXPECT_EQ(m.vertex_capacity(), before.num_live_vertices());
+  EXPECT_EQ(m.tet_capacity(), before.num_live_tets());
+  EXPECT_TRUE(m.free_tets.empty());
+  EXPECT_EQ(old2new[gone], kNoId);
+  for (Id v = 0; v < head; ++v) EXPECT_EQ(old2new[v], v);
+  for (std::size_t v = 0; v < old2new.size(); ++v) {
+    if (old2new[v] == kNoId) continue;
+    EXPECT_EQ(m.xyz[old2new[v]], before.xyz[v]);
+    EXPECT_EQ(m.vkind[old2new[v]], before.vkind[v]);
+    EXPECT_EQ(m.vtouch[old2new[v]], before.vtouch[v]);
+  }
+  for (std::size_t t = 0; t < tet_old2new.size(); ++t) {
+    if (tet_old2new[t] != kNoId) {
+      EXPECT_EQ(m.quality[tet_old2new[t]], before.quality[t]);
+    }
+  }
+  std::vector<double> tail;
+  for (std::size_t v = static_cast<std::size_t>(head); v < m.vertex_capacity(); ++v)
+    tail.insert(tail.end(), {m.xyz[v][0], m.xyz[v][1], m.xyz[v][2]});
+  const std::vector<Id> order = hilbert_order(tail, 3);
+  for (std::size_t i = 0; i < order.size(); ++i) EXPECT_EQ(order[i], static_cast<Id>(i));
+  for (std::size_t t = 1; t < m.tet_capacity(); ++t) {
+    const Id* p = &m.tv[4 * (t - 1)];
+    const Id* q = &m.tv[4 * t];
+    EXPECT_LE(*std::min_element(p, p + 4), *std::min_element(q, q + 4));
+  }
 }
 
 TEST(TetMesh, BallsAndShells) {
