@@ -73,13 +73,17 @@ void finish(const AdaptArgs& a, const Mesh& input, const std::vector<Field>& fie
     std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
                  r.report.passes.size(), r.report.stall_reason.c_str());
   const std::vector<Field> moved = fields.empty() ? fields : transfer_p1(input, fields, r.mesh);
-  write_mesh(r.mesh, a.output);
-  if (!a.fields.empty()) write_sol(a.out_fields, moved, D);
+  // All outputs or none: a full disk at the last one leaves the earlier ones as they were.
+  OutputBatch out;
+  out.write(a.output, [&](const std::string& path) { write_mesh(r.mesh, path); });
+  if (!a.fields.empty())
+    out.write(a.out_fields, [&](const std::string& path) { write_sol(path, moved, D); });
   if (!a.out_metric.empty()) {
     Field f{"metric", FieldKind::kSymTensor, {}};
     for (const SymMat<D>& m : r.metrics) f.values.insert(f.values.end(), m.c, m.c + SymMat<D>::kSize);
-    write_sol(a.out_metric, {f}, D);
+    out.write(a.out_metric, [&](const std::string& path) { write_sol(path, {f}, D); });
   }
+  out.commit();
 }
 
 /// The Lp-optimal metric of complexity N of the solution --field: recovered Hessian (BOOK.md §2).

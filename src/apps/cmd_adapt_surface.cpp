@@ -9,6 +9,7 @@
 #include "apps/field_args.hpp"
 #include "apps/mesh_args.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
 #include "metric/metric.hpp"
@@ -34,8 +35,11 @@ void run_adapt_surface(const SurfaceAdaptArgs& args, const Mesh& mesh) {
   const std::vector<Field> moved = fields.empty() ? fields : transfer_surface_p1(mesh, fields, out);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_mesh(out, args.output);
-  if (!args.fields.empty()) write_sol(args.out_fields, moved, 3);
+  OutputBatch batch;  // all outputs or none
+  batch.write(args.output, [&](const std::string& path) { write_mesh(out, path); });
+  if (!args.fields.empty())
+    batch.write(args.out_fields, [&](const std::string& path) { write_sol(path, moved, 3); });
+  batch.commit();
   if (args.quiet) return;
   if (!args.field.empty())
     std::fprintf(stderr,

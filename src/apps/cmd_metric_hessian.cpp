@@ -192,7 +192,10 @@ void run_spacetime(const CombineArgs& a, const std::vector<Mesh>& meshes,
     mean += in[i].time_steps * reports[i].complexity;
   }
   mean /= total_steps;
-  for (std::size_t i = 0; i < n; ++i) write_metric<D>(outputs[i], m[i]);
+  OutputBatch batch;  // all outputs or none
+  for (std::size_t i = 0; i < n; ++i)
+    batch.write(outputs[i], [&](const std::string& path) { write_metric<D>(path, m[i]); });
+  batch.commit();
   if (a.json) {
     std::printf("{\"complexity\": %.17g, \"interval_complexities\": [", mean);
     for (std::size_t i = 0; i < n; ++i) std::printf("%s%.17g", i ? ", " : "", reports[i].complexity);

@@ -116,6 +116,47 @@ void require_writable(const std::string& path) {
   AtomicFile probe(path);  // creates a temporary beside the target; removed, uncommitted
 }
 
+OutputBatch::~OutputBatch() {
+  for (const auto& [temp, target] : staged_) (void)std::remove(temp.c_str());
+}
+
+std::string OutputBatch::stage(const std::string& target) {
+  // "dir/name.ext" -> "dir/name.tmp-XXXXXX.ext": the extension kept for the writers.
+  const std::size_t slash = target.find_last_of('/');
+  const std::size_t dot = target.find_last_of('.');
+  const std::size_t cut = dot != std::string::npos && (slash == std::string::npos || dot > slash + 1)
+                              ? dot
+                              : target.size();
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::string temp = target.substr(0, cut) + ".tmp-" + random_suffix() + target.substr(cut);
+    struct stat st {};
+    if (::stat(temp.c_str(), &st) == 0) continue;
+    staged_.emplace_back(temp, target);
+    return temp;
+  }
+  throw InputError(target + ": cannot find a free temporary file name");
+}
+
+std::string OutputBatch::renamed(std::string message, const std::string& temp,
+                                 const std::string& target) {
+  for (std::size_t at = message.find(temp); at != std::string::npos;
+       at = message.find(temp, at + target.size()))
+    message.replace(at, temp.size(), target);
+  return message;
+}
+
+void OutputBatch::commit() {
+  for (std::size_t k = 0; k < staged_.size(); ++k) {
+    const auto& [temp, target] = staged_[k];
+    if (std::rename(temp.c_str(), target.c_str()) != 0) {
+      const std::string message = target + ": cannot rename temporary file into place: " + errno_text();
+      staged_.erase(staged_.begin(), staged_.begin() + static_cast<std::ptrdiff_t>(k));
+      throw InputError(message);
+    }
+  }
+  staged_.clear();
+}
+
 void write_file_atomically(const std::string& path, std::string_view contents, bool sync) {
   AtomicFile file(path, sync);
   file.write(contents);

@@ -6,6 +6,10 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
+
+#include "core/error.hpp"
 
 namespace riemesh {
 
@@ -45,6 +49,37 @@ class AtomicFile {
 /// takes new files, and no folder has its name. Commands with several outputs call it for each
 /// before any work, so that the last output cannot fail after the first is written.
 void require_writable(const std::string& path);
+
+/// Several outputs of one command, all or nothing: write(target, fn) has fn write the output to
+/// a temporary name beside the target (same folder, same extension, so the writers pick the
+/// format from it), and commit() renames them all into place once every one is written. A
+/// failed write (a full disk) or a batch destroyed without commit() removes the temporaries
+/// and leaves every target as it was. Errors name the target, not the temporary.
+class OutputBatch {
+ public:
+  OutputBatch() = default;
+  ~OutputBatch();
+  OutputBatch(const OutputBatch&) = delete;
+  OutputBatch& operator=(const OutputBatch&) = delete;
+
+  template <class Write>
+  void write(const std::string& target, Write&& fn) {
+    const std::string temp = stage(target);
+    try {
+      fn(temp);
+    } catch (const InputError& e) {
+      throw InputError(renamed(e.what(), temp, target));
+    }
+  }
+  /// Renames every staged output into place.
+  void commit();
+
+ private:
+  std::string stage(const std::string& target);
+  static std::string renamed(std::string message, const std::string& temp, const std::string& target);
+
+  std::vector<std::pair<std::string, std::string>> staged_;  // (temporary, target)
+};
 
 /// Writes `contents` to `path` atomically.
 void write_file_atomically(const std::string& path, std::string_view contents, bool sync = false);

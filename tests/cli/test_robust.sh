@@ -48,6 +48,23 @@ expect_error combine-lp-second-unwritable metric combine "$SOL" "$SOL" --mode lp
   --intervals 2 --mesh "$LSHAPE" -o "$TMP/lp1.sol,/nonexistent/lp2.sol"
 expect_no_file combine-lp-second-unwritable-no-first "$TMP/lp1.sol"
 
+# A full disk at the second output (simulated by a file size limit, SIGXFSZ ignored so that the
+# write fails with EFBIG): the first output, already written, is not put in place either.
+awk 'BEGIN { n = 0 } /^Vertices/ { getline; n = $1 } END {
+  print "MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n" n; printf "20"
+  for (k = 0; k < 20; ++k) printf " 1"; print ""
+  for (v = 0; v < n; ++v) { for (k = 0; k < 20; ++k) printf "%.15f ", v * 0.001 + k; print "" }
+  print "End" }' "$LSHAPE" >"$TMP/f20.sol"
+err=$( (trap '' XFSZ; ulimit -f 300; "$R" adapt "$LSHAPE" --hsiz 0.02 --fields "$TMP/f20.sol" \
+        -o "$TMP/full.meshb" --out-fields "$TMP/full.sol" -q) 2>&1); code=$?
+[ "$code" -eq 2 ] && [[ "$err" == "riemesh: error: $TMP/full.sol: "* ]] &&
+  ok "disk-full-second-output ($err)" || ko "disk-full-second-output: $code $err"
+expect_no_file disk-full-no-first-output "$TMP/full.meshb"
+expect_no_file disk-full-no-second-output "$TMP/full.sol"
+"$R" adapt "$LSHAPE" --hsiz 0.02 --fields "$TMP/f20.sol" -o "$TMP/full.meshb" --out-fields "$TMP/full.sol" -q
+[ "$(stat -c %s "$TMP/full.meshb")" -lt 153600 ] && [ "$(stat -c %s "$TMP/full.sol")" -gt 153600 ] &&
+  ok "disk-full-sizes-straddle-the-limit" || ko "disk-full-sizes: $(stat -c %s "$TMP/full.meshb" "$TMP/full.sol")"
+
 # What the library finds inside a mesh names the file: a clockwise triangle (adapt), no elements
 # (render, adapt), a degenerate tetrahedron (adapt --optim).
 write_two_triangles "$TMP/cw.mesh"

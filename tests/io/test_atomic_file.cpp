@@ -31,6 +31,43 @@ TEST(AtomicFile, CommitRenamesIntoPlace) {
   EXPECT_NE(st.st_mode & 0044, 0u) << "the umask, not 0600, decides the mode";
 }
 
+// Several outputs all or nothing: written under temporary names that keep the extension, put
+// in place together; a failing one leaves every target as it was, and no temporary.
+TEST(OutputBatch, CommitsAllOrNone) {
+  test::ScratchDir dir;
+  const std::string a = dir.file("a.mesh"), b = dir.file("b.sol");
+  test::write_text(a, "old a");
+  std::string seen;
+  try {
+    OutputBatch batch;
+    batch.write(a, [&](const std::string& path) {
+      seen = path;
+      write_file_atomically(path, "new a");
+    });
+    batch.write(b, [&](const std::string& path) {
+      write_file_atomically(path, "partial b");
+      throw InputError(path + ": write failed: No space left on device");
+    });
+    batch.commit();
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), b + ": write failed: No space left on device");
+  }
+  EXPECT_TRUE(seen.ends_with(".mesh") && seen.rfind(dir.file("a.tmp-"), 0) == 0) << seen;
+  EXPECT_EQ(test::read_text(a), "old a");
+  EXPECT_FALSE(std::filesystem::exists(b));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);
+
+  OutputBatch batch;
+  batch.write(a, [](const std::string& path) { write_file_atomically(path, "new a"); });
+  batch.write(b, [](const std::string& path) { write_file_atomically(path, "new b"); });
+  EXPECT_EQ(test::read_text(a), "old a");  // untouched until commit
+  batch.commit();
+  EXPECT_EQ(test::read_text(a), "new a");
+  EXPECT_EQ(test::read_text(b), "new b");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 2);
+}
+
 TEST(AtomicFile, AbandonedWriteLeavesNothing) {
   test::ScratchDir dir;
   const std::string path = dir.file("out.txt");
