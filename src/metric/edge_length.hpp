@@ -87,12 +87,10 @@ inline int compare_edge_length_geometric(const SymMat<D>& ma, const SymMat<D>& m
   return l > limit ? 1 : (l < limit ? -1 : 0);
 }
 
-/// Whether symmetric a and b commute (a b = b a, to 1e-12 relative): they then have the same
-/// eigenvectors (isotropic metrics, or all aligned with the axes). SPD metrics commute exactly
-/// when their logarithms do.
+namespace detail {
+/// commute's test for metrics that are not both diagonal, out of line.
 template <int D>
-inline bool commute(const SymMat<D>& a, const SymMat<D>& b) {
-  if (is_diagonal(a) && is_diagonal(b)) return true;  // the common quick answer
+[[gnu::noinline]] bool commute_general(const SymMat<D>& a, const SymMat<D>& b) {
   double off = 0.0, na = 0.0, nb = 0.0;
   for (int i = 0; i < D; ++i)
     for (int j = i + 1; j < D; ++j) {
@@ -102,6 +100,15 @@ inline bool commute(const SymMat<D>& a, const SymMat<D>& b) {
     }
   for (int k = 0; k < SymMat<D>::kSize; ++k) na += a.c[k] * a.c[k], nb += b.c[k] * b.c[k];
   return off <= 1e-24 * na * nb;
+}
+}  // namespace detail
+
+/// Whether symmetric a and b commute (a b = b a, to 1e-12 relative): they then have the same
+/// eigenvectors (isotropic metrics, or all aligned with the axes). SPD metrics commute exactly
+/// when their logarithms do. The common quick answer (both diagonal) inline, the rest out of line.
+template <int D>
+inline bool commute(const SymMat<D>& a, const SymMat<D>& b) {
+  return (is_diagonal(a) && is_diagonal(b)) || detail::commute_general(a, b);
 }
 
 /// Edge length by Simpson's rule on the log-Euclidean interpolated field: (l_A + 4 l_M + l_B) / 6

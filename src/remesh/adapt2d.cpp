@@ -400,6 +400,7 @@ long smooth_sweep(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::ui
 /// rule (edge_length_gauss3), as in quality_target. Returns the moves.
 long length_sweep(Remesh2dContext& ctx, Changes& changes, double floor) {
   TriMesh& m = ctx.mesh();
+  if (m.log_metric.empty()) return 0;  // every metric diagonal: they all commute
   std::vector<Id> ends;
   for_each_edge(m, [&](Id s) {
     const Id a = m.edge_from(s), b = m.edge_to(s);

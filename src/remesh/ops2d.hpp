@@ -58,8 +58,12 @@ inline SymMat2 tri_metric(const SymMat2& ma, const SymMat2* la, const SymMat2& m
 
 /// Quality of a triangle in tri_metric, used consistently for every decision.
 inline double tri_quality(const TriMesh& m, Id a, Id b, Id c) {
-  const SymMat2 mm = tri_metric(m.metric[a], log_of(m.log_metric, a), m.metric[b],
-                                log_of(m.log_metric, b), m.metric[c], log_of(m.log_metric, c));
+  // No logarithms kept: every vertex metric is diagonal, so they commute (tri_metric's mean).
+  const SymMat2 mm =
+      m.log_metric.empty()
+          ? (1.0 / 3.0) * (m.metric[a] + m.metric[b] + m.metric[c])
+          : tri_metric(m.metric[a], log_of(m.log_metric, a), m.metric[b], log_of(m.log_metric, b),
+                       m.metric[c], log_of(m.log_metric, c));
   return quality_in(mm, m.xy[a], m.xy[b], m.xy[c]);
 }
 inline double tri_quality(const TriMesh& m, Id t) {
