@@ -11,9 +11,10 @@
 // Or the kernel's work per point on N random points, Hilbert-sorted beforehand (as Sorted/N) or in
 // BRIO order, with one run only (for valgrind --tool=callgrind, whose counts the load does not
 // disturb): build/bench/riemesh_bench_delaunay3d --counts N [--order brio]
-// With --hash (and --counts N or --node FILE): prints "tets T hash H", an FNV-1a hash of the
-// tets, each with its vertices sorted, in sorted order (to check that a change of the kernel
-// leaves its output the same), instead of the timings or counts.
+// With --hash (and --counts N or --node FILE): prints "tets T hash H raw R", H an FNV-1a hash of
+// the tets, each with its vertices sorted, in sorted order (the same triangulation), R one of the
+// arrays as returned (the same tet numbering and neighbours), to check that a change of the kernel
+// leaves its output the same, instead of the timings or counts.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -100,6 +101,10 @@ std::vector<double> read_node(const char* path) {
 /// The tets as sets of vertices, sorted, hashed (FNV-1a 64 over the ids).
 int print_hash(const std::vector<double>& xyz, InsertionOrder order) {
   const Tetrahedralization t = delaunay3d(xyz, order);
+  const auto fnv = [](std::uint64_t h, Id v) { return (h ^ static_cast<std::uint32_t>(v)) * 0x100000001b3ull; };
+  std::uint64_t raw = 0xcbf29ce484222325ull;  // the arrays as returned: tet order and neighbours
+  for (Id v : t.tets) raw = fnv(raw, v);
+  for (Id v : t.tet2tet) raw = fnv(raw, v);
   std::vector<std::array<Id, 4>> tets(t.num_tets());
   for (std::size_t k = 0; k < tets.size(); ++k) {
     std::copy(t.tets.begin() + 4 * k, t.tets.begin() + 4 * k + 4, tets[k].begin());
@@ -108,11 +113,9 @@ int print_hash(const std::vector<double>& xyz, InsertionOrder order) {
   std::sort(tets.begin(), tets.end());
   std::uint64_t h = 0xcbf29ce484222325ull;
   for (const auto& q : tets)
-    for (Id v : q) {
-      h ^= static_cast<std::uint32_t>(v);
-      h *= 0x100000001b3ull;
-    }
-  std::printf("tets %zu hash %016llx\n", tets.size(), static_cast<unsigned long long>(h));
+    for (Id v : q) h = fnv(h, v);
+  std::printf("tets %zu hash %016llx raw %016llx\n", tets.size(), static_cast<unsigned long long>(h),
+              static_cast<unsigned long long>(raw));
   return 0;
 }
 
