@@ -106,19 +106,6 @@ void Delaunay3d::reserve(std::size_t num_points) {
   mark_.reserve(7 * num_points);
 }
 
-std::uint32_t Delaunay3d::new_tet() {
-  if (!free_.empty()) {
-    const std::uint32_t t = free_.back();
-    free_.pop_back();
-    return t;
-  }
-  const auto t = static_cast<std::uint32_t>(mark_.size());
-  RIEMESH_CHECK(t < (1u << 30));  // 4 * t + face must fit the 32-bit neighbour codes
-  tets_.emplace_back();
-  mark_.push_back(0);
-  return t;
-}
-
 /// Visibility walk: crosses any face that separates the tetrahedron from p (faces tried in a
 /// pseudo-random order, which guarantees termination), until a tetrahedron contains p (closed)
 /// or a ghost is entered (p is then strictly outside the hull, beyond that ghost's face).
@@ -220,15 +207,33 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
 }
 
 /// Replaces the cavity by one tet per boundary face joined to the new point, in one sweep. The
-/// cavity boundary is a triangulated sphere: each of its edges is on two boundary faces, and the
-/// two new tets on them are neighbours across their faces through that edge and the point. The
-/// first of the two to come stores its face in a small hash table keyed by the edge, the second
-/// finds it there and links both.
+/// cavity boundary is a triangulated sphere: each of its edges is on two boundary faces, which
+/// run through it in opposite directions, and the two new tets on them are neighbours across
+/// their faces through that edge and the point. The first of the two to come stores its face in
+/// a small hash table under the directed edge (a, b), the second finds it there as (b, a) and
+/// links both.
 void Delaunay3d::fill_cavity() {
   // Face f of a positive tet is, in order, {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}[f]
   // (vertex f on its positive side); the edge from its vertex e to vertex e + 1 lies on the new
   // tet's face opposite its vertex e + 2 (mod 3).
   const std::size_t nb = boundary_.size();
+  // The new tets: the cavity's, then deleted ones, then fresh ones, in the order new_tet gave.
+  const std::size_t num_cavity = cavity_.size();
+  if (nb > num_cavity) {
+    cavity_.resize(nb);
+    std::size_t k = num_cavity;
+    for (; k < nb && !free_.empty(); ++k) {
+      cavity_[k] = free_.back();
+      free_.pop_back();
+    }
+    if (k < nb) {
+      const std::size_t first = tets_.size();
+      RIEMESH_CHECK(first + (nb - k) <= (std::size_t{1} << 30));  // 4 * t + face fits 32 bits
+      tets_.resize(first + (nb - k));
+      mark_.resize(first + (nb - k), 0);
+      for (std::size_t t = first; k < nb; ++k, ++t) cavity_[k] = static_cast<std::uint32_t>(t);
+    }
+  }
   // At most 3 nb / 2 edges: a load factor under 3/8.
   int bits = 6;
   while ((std::size_t{1} << bits) < 4 * nb) ++bits;
@@ -241,33 +246,36 @@ void Delaunay3d::fill_cavity() {
   const std::size_t mask = size - 1;
   const std::uint32_t epoch = epoch_;
   EdgeSlot* table = edges_.data();
+  Tet* tets = tets_.data();
+  std::uint8_t* mark = mark_.data();
+  const std::uint32_t* ids = cavity_.data();
   std::uint32_t t = 0;
   for (std::size_t k = 0; k < nb; ++k) {
     const BoundaryFace& f = boundary_[k];
-    t = k < cavity_.size() ? cavity_[k] : new_tet();
-    Tet& tet = tets_[t];
+    t = ids[k];
+    Tet& tet = tets[t];
     std::copy(f.v, f.v + 4, tet.v);
     tet.n[f.face] = f.outer;
-    mark_[t] = 0;
-    mark_[f.outer >> 2] = 0;  // the marks are cleared for the next insertion
-    nbr(f.outer) = 4 * t + static_cast<std::uint32_t>(f.face);
-    // Edge (a, b) of the face, on the new tet's face opposite vertex `opposite`.
+    mark[t] = 0;
+    mark[f.outer >> 2] = 0;  // the marks are cleared for the next insertion
+    tets[f.outer >> 2].n[f.outer & 3] = 4 * t + static_cast<std::uint32_t>(f.face);
+    // Directed edge (a, b) of the face, on the new tet's face opposite vertex `opposite`. The
+    // hash is symmetric, so that (b, a) probes the same slots.
     const auto link = [&](Id a, Id b, int opposite) {
-      const std::uint64_t key = a < b ? (std::uint64_t{static_cast<std::uint32_t>(a)} << 32) |
-                                            static_cast<std::uint32_t>(b)
-                                      : (std::uint64_t{static_cast<std::uint32_t>(b)} << 32) |
-                                            static_cast<std::uint32_t>(a);
+      const std::uint32_t ua = static_cast<std::uint32_t>(a), ub = static_cast<std::uint32_t>(b);
+      const std::uint64_t key = (std::uint64_t{ua} << 32) | ub;
+      const std::uint64_t reverse = (std::uint64_t{ub} << 32) | ua;
       const std::uint32_t code = 4 * t + static_cast<std::uint32_t>(opposite);
-      std::size_t i = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - bits));
+      std::size_t i = static_cast<std::size_t>((std::uint64_t{ua + ub} * 0x9E3779B97F4A7C15ull) >> (64 - bits));
       for (;; i = (i + 1) & mask) {
         EdgeSlot& slot = table[i];
         if (slot.stamp != epoch) {
           slot = {key, code, epoch};
           return;
         }
-        if (slot.key == key) {
+        if (slot.key == reverse) {
           tet.n[opposite] = slot.code;
-          nbr(slot.code) = code;
+          tets[slot.code >> 2].n[slot.code & 3] = code;
           return;
         }
       }
@@ -281,10 +289,10 @@ void Delaunay3d::fill_cavity() {
       default: link(w[0], w[1], 2); link(w[1], w[2], 0); link(w[2], w[0], 1); break;
     }
   }
-  for (std::size_t k = nb; k < cavity_.size(); ++k) {
-    tets_[cavity_[k]].v[0] = kDeleted;
-    mark_[cavity_[k]] = 0;
-    free_.push_back(cavity_[k]);
+  for (std::size_t k = nb; k < num_cavity; ++k) {
+    tets[ids[k]].v[0] = kDeleted;
+    mark[ids[k]] = 0;
+    free_.push_back(ids[k]);
   }
   last_ = t;
 }

@@ -75,8 +75,8 @@ class Delaunay3d {
     std::uint32_t outer;  // 4 * (outer tet) + its face index
     int face;             // the face's index in the cavity tetrahedron
   };
-  /// A slot of the cavity boundary's edge table: an undirected edge (both vertex ids in key)
-  /// and the face of a new tet through the edge and the new point, as a neighbour code.
+  /// A slot of the cavity boundary's edge table: a directed edge (a, b) as a << 32 | b and the
+  /// face of a new tet through the edge and the new point, as a neighbour code.
   struct EdgeSlot {
     std::uint64_t key;
     std::uint32_t code;
@@ -100,7 +100,6 @@ class Delaunay3d {
   bool ghost_in_conflict(std::uint32_t t, const double* p);
   void find_cavity(std::uint32_t start, Id v, const double* p);
   void fill_cavity();
-  std::uint32_t new_tet();
 
   const std::vector<double>* coords_;
   detail::StaticFilter3d filter_;  // first stage of the predicates, over the points' box
