@@ -83,7 +83,6 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
     std::swap(g[j], g[l]);
   }
   // Faces are matched by vertex set (20 faces: a quadratic search is fine).
-  mark_.assign(5, 0);
   const auto face_has = [&](std::uint32_t t, int f, Id w) {
     for (int i = 0; i < 4; ++i)
       if (i != f && tets_[t].v[i] == w) return true;
@@ -103,7 +102,6 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
 
 void Delaunay3d::reserve(std::size_t num_points) {
   tets_.reserve(7 * num_points);
-  mark_.reserve(7 * num_points);
 }
 
 /// Visibility walk: crosses any face that separates the tetrahedron from p (faces tried in a
@@ -157,9 +155,9 @@ bool Delaunay3d::ghost_in_conflict(std::uint32_t t, const double* p) {
   for (int i = 0; i < 4; ++i) q[i] = i == inf ? p : xyz(v[i]);
   const int s = orient3d_sign(filter_, q[0], q[1], q[2], q[3]);
   if (s != 0) return s > 0;
-  const std::uint32_t n = tets_[t].n[inf] >> 2;
-  if (mark_[n] == kInCavity) return true;
-  if (mark_[n] == kOutside) return false;
+  const std::uint32_t n = (tets_[t].n[inf] & kCodeMask) >> 2;
+  if (tets_[n].n[0] & kMark) return true;    // in the cavity
+  if (tets_[n].n[1] & kMark) return false;   // tested, not in conflict
   const Id* w = tets_[n].v;
   return insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0;
 }
@@ -172,37 +170,40 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
   boundary_.clear();
   stack_.clear();
   stack_.push_back(start);
-  mark_[start] = kInCavity;
+  Tet* tets = tets_.data();
+  tets[start].n[0] |= kMark;
+  std::size_t tests = 0;
   while (!stack_.empty()) {
     const std::uint32_t t = stack_.back();
     stack_.pop_back();
     cavity_.push_back(t);
     for (int i = 0; i < 4; ++i) {
-      const std::uint32_t code = tets_[t].n[i];
-      const std::uint32_t n = code >> 2;
-      if (mark_[n] == kInCavity) continue;
-      if (mark_[n] != kOutside) {
-        ++stats_.insphere_tests;
-        const Id* w = tets_[n].v;
+      const std::uint32_t code = tets[t].n[i] & kCodeMask;
+      Tet& nt = tets[code >> 2];
+      if (nt.n[0] & kMark) continue;  // in the cavity
+      if (!(nt.n[1] & kMark)) {        // not tested yet
+        ++tests;
+        const Id* w = nt.v;
         const bool conflict =
             (w[0] | w[1] | w[2] | w[3]) >= 0
                 ? insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0
-                : ghost_in_conflict(n, p);
+                : ghost_in_conflict(code >> 2, p);
         if (conflict) {
-          mark_[n] = kInCavity;
-          stack_.push_back(n);
+          nt.n[0] |= kMark;
+          stack_.push_back(code >> 2);
           continue;
         }
-        mark_[n] = kOutside;
+        nt.n[1] |= kMark;
       }
       BoundaryFace f;
-      for (int j = 0; j < 4; ++j) f.v[j] = tets_[t].v[j];
+      for (int j = 0; j < 4; ++j) f.v[j] = tets[t].v[j];
       f.v[i] = v;
       f.outer = code;
       f.face = i;
       boundary_.push_back(f);
     }
   }
+  stats_.insphere_tests += tests;
   stats_.cavity_tets += cavity_.size();
 }
 
@@ -228,9 +229,9 @@ void Delaunay3d::fill_cavity() {
     }
     if (k < nb) {
       const std::size_t first = tets_.size();
-      RIEMESH_CHECK(first + (nb - k) <= (std::size_t{1} << 30));  // 4 * t + face fits 32 bits
+      // 4 * t + face fits 31 bits (the 32nd holds the marks)
+      RIEMESH_CHECK(first + (nb - k) <= (std::size_t{1} << 29));
       tets_.resize(first + (nb - k));
-      mark_.resize(first + (nb - k), 0);
       for (std::size_t t = first; k < nb; ++k, ++t) cavity_[k] = static_cast<std::uint32_t>(t);
     }
   }
@@ -247,7 +248,6 @@ void Delaunay3d::fill_cavity() {
   const std::uint32_t epoch = epoch_;
   EdgeSlot* table = edges_.data();
   Tet* tets = tets_.data();
-  std::uint8_t* mark = mark_.data();
   const std::uint32_t* ids = cavity_.data();
   std::uint32_t t = 0;
   for (std::size_t k = 0; k < nb; ++k) {
@@ -255,10 +255,12 @@ void Delaunay3d::fill_cavity() {
     t = ids[k];
     Tet& tet = tets[t];
     std::copy(f.v, f.v + 4, tet.v);
+    // The tet's 4 codes are all rewritten (here and by the links), which clears its mark; the
+    // outer tet's is cleared here.
     tet.n[f.face] = f.outer;
-    mark[t] = 0;
-    mark[f.outer >> 2] = 0;  // the marks are cleared for the next insertion
-    tets[f.outer >> 2].n[f.outer & 3] = 4 * t + static_cast<std::uint32_t>(f.face);
+    Tet& outer = tets[f.outer >> 2];
+    outer.n[1] &= kCodeMask;
+    outer.n[f.outer & 3] = 4 * t + static_cast<std::uint32_t>(f.face);
     // Directed edge (a, b) of the face, on the new tet's face opposite vertex `opposite`. The
     // hash is symmetric, so that (b, a) probes the same slots.
     const auto link = [&](Id a, Id b, int opposite) {
@@ -290,8 +292,7 @@ void Delaunay3d::fill_cavity() {
     }
   }
   for (std::size_t k = nb; k < num_cavity; ++k) {
-    tets[ids[k]].v[0] = kDeleted;
-    mark[ids[k]] = 0;
+    tets[ids[k]].v[0] = kDeleted;  // its mark stays until it is reused (codes rewritten)
     free_.push_back(ids[k]);
   }
   last_ = t;
@@ -320,7 +321,7 @@ bool Delaunay3d::insert(Id v, Id* same) {
 
 Tetrahedralization Delaunay3d::result() const {
   Tetrahedralization out;
-  const std::size_t n = mark_.size();
+  const std::size_t n = tets_.size();
   // Huge pages for the large arrays (fewer page faults), then sized once and written in place:
   // no per-element capacity checks.
   const auto sized = [](std::vector<Id>& a, std::size_t size) {

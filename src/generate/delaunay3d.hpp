@@ -95,7 +95,6 @@ class Delaunay3d {
     const Id* v = tets_[t].v;
     return (v[0] | v[1] | v[2] | v[3]) < 0;
   }
-  std::uint32_t& nbr(std::uint32_t code) { return tets_[code >> 2].n[code & 3]; }
   std::uint32_t locate(const double* p);
   bool ghost_in_conflict(std::uint32_t t, const double* p);
   void find_cavity(std::uint32_t start, Id v, const double* p);
@@ -106,10 +105,11 @@ class Delaunay3d {
   // kInfinite for the vertex at infinity, kDeleted in v[0]. Huge pages: hundreds of MB are
   // filled in order, and 4 KB page faults were ~15 % of the time.
   std::vector<Tet, HugePageAllocator<Tet>> tets_;
-  // Per tet, during an insertion: kInCavity, kOutside (tested, not in conflict) or 0; cleared
-  // by fill_cavity (a tested tet is always next to the cavity). One byte keeps it in cache.
-  static constexpr std::uint8_t kInCavity = 1, kOutside = 2;
-  std::vector<std::uint8_t, HugePageAllocator<std::uint8_t>> mark_;
+  // The marks of an insertion, in the top bit of the neighbour codes (free while there are fewer
+  // than 2^29 tets): n[0]'s when the tet is in the cavity, n[1]'s when it was tested and is not
+  // in conflict. In the tet record rather than an array of their own: the test reads the record
+  // anyway. Cleared by fill_cavity (a tested tet is always next to the cavity).
+  static constexpr std::uint32_t kMark = 0x80000000u, kCodeMask = 0x7fffffffu;
   std::vector<std::uint32_t> free_;  // deleted tets for reuse
   std::uint32_t epoch_ = 1;  // insertion count, stamps edges_
   std::uint32_t last_ = 0;   // where the next walk starts
