@@ -44,7 +44,7 @@ std::size_t find_point(const std::vector<Id>& order, std::size_t from, Ok ok) {
 Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order)
     : coords_(coords) {
   // The first 4 non-coplanar points, found in order (each search keeps the earliest).
-  const auto p = [&](Id v) { return xyz(v); };
+  const auto p = [&](Id v) { return coords->data() + 3 * static_cast<std::size_t>(v); };
   std::size_t k[4] = {0, 0, 0, 0};
   if (!order.empty()) {
     const Id a = order[0];
@@ -67,6 +67,12 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
   order.erase(order.begin());
   order.insert(order.begin(), v, v + 4);
   if (orient3d_sign(p(v[0]), p(v[1]), p(v[2]), p(v[3])) < 0) std::swap(v[0], v[1]);
+  // The kernel's own numbering: vertex i is v[i], then the points in their insertion order.
+  for (int i = 0; i < 4; ++i) {
+    original_.push_back(v[i]);
+    xyz_.insert(xyz_.end(), p(v[i]), p(v[i]) + 3);
+    v[i] = i;
+  }
   // The static filter's box: all points given now (later ones grow it when inserted).
   for (std::size_t i = 0; i < coords->size(); i += 3) filter_.extend(coords->data() + i);
   filter_.update();
@@ -102,6 +108,8 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
 
 void Delaunay3d::reserve(std::size_t num_points) {
   tets_.reserve(7 * num_points);
+  xyz_.reserve(3 * num_points);
+  original_.reserve(num_points);
 }
 
 /// Visibility walk: crosses any face that separates the tetrahedron from p (faces tried in a
@@ -299,7 +307,7 @@ void Delaunay3d::fill_cavity() {
 }
 
 bool Delaunay3d::insert(Id v, Id* same) {
-  const double* p = xyz(v);
+  const double* p = coords_->data() + 3 * static_cast<std::size_t>(v);
   if (!filter_.contains(p)) {
     filter_.extend(p);
     filter_.update();
@@ -309,12 +317,15 @@ bool Delaunay3d::insert(Id v, Id* same) {
     for (int i = 0; i < 4; ++i) {
       const Id w = tets_[t].v[i];
       if (same_point(xyz(w), p)) {
-        if (same) *same = w;
+        if (same) *same = original_[static_cast<std::size_t>(w)];
         return false;
       }
     }
   }
-  find_cavity(t, v, p);
+  const auto local = static_cast<Id>(original_.size());
+  original_.push_back(v);
+  xyz_.insert(xyz_.end(), p, p + 3);
+  find_cavity(t, local, p);
   fill_cavity();
   return true;
 }
@@ -341,7 +352,7 @@ Tetrahedralization Delaunay3d::result() const {
   for (std::size_t t = 0; t < n; ++t) {
     if (old2new[t] == kNoId) continue;
     for (int i = 0; i < 4; ++i) {
-      *v++ = tets_[t].v[i];
+      *v++ = original_[static_cast<std::size_t>(tets_[t].v[i])];
       *a++ = old2new[tets_[t].n[i] >> 2];
     }
   }
