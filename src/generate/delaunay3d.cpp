@@ -181,6 +181,7 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
   Tet* tets = tets_.data();
   tets[start].n[0] |= kMark;
   std::size_t tests = 0;
+  const detail::InsphereQuery query(p);
   while (!stack_.empty()) {
     const std::uint32_t t = stack_.back();
     stack_.pop_back();
@@ -194,7 +195,7 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
         const Id* w = nt.v;
         const bool conflict =
             (w[0] | w[1] | w[2] | w[3]) >= 0
-                ? insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0
+                ? insphere_sign(filter_, query, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3])) > 0
                 : ghost_in_conflict(code >> 2, p);
         if (conflict) {
           nt.n[0] |= kMark;
