@@ -260,7 +260,7 @@ void Delaunay3d::fill_cavity() {
   const std::uint32_t* ids = cavity_.data();
   std::uint32_t t = 0;
   for (std::size_t k = 0; k < nb; ++k) {
-    const BoundaryFace& f = boundary_[k];
+    const BoundaryFace f = boundary_[k];  // a copy: the stores below cannot change it
     t = ids[k];
     Tet& tet = tets[t];
     std::copy(f.v, f.v + 4, tet.v);
