@@ -71,7 +71,7 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
   for (int i = 0; i < 4; ++i) {
     original_.push_back(v[i]);
     xyz_.insert(xyz_.end(), p(v[i]), p(v[i]) + 3);
-    v[i] = i;
+    v[i] = 3 * i;
   }
   // The static filter's box: all points given now (later ones grow it when inserted).
   for (std::size_t i = 0; i < coords->size(); i += 3) filter_.extend(coords->data() + i);
@@ -318,12 +318,13 @@ bool Delaunay3d::insert(Id v, Id* same) {
     for (int i = 0; i < 4; ++i) {
       const Id w = tets_[t].v[i];
       if (same_point(xyz(w), p)) {
-        if (same) *same = original_[static_cast<std::size_t>(w)];
+        if (same) *same = original_[static_cast<std::uint32_t>(w) / 3];
         return false;
       }
     }
   }
-  const auto local = static_cast<Id>(original_.size());
+  RIEMESH_CHECK(original_.size() < 0x7fffffff / 3);  // the coordinates' offset fits an Id
+  const auto local = static_cast<Id>(3 * original_.size());
   original_.push_back(v);
   xyz_.insert(xyz_.end(), p, p + 3);
   find_cavity(t, local, p);
@@ -353,7 +354,7 @@ Tetrahedralization Delaunay3d::result() const {
   for (std::size_t t = 0; t < n; ++t) {
     if (old2new[t] == kNoId) continue;
     for (int i = 0; i < 4; ++i) {
-      *v++ = original_[static_cast<std::size_t>(tets_[t].v[i])];
+      *v++ = original_[static_cast<std::uint32_t>(tets_[t].v[i]) / 3];
       *a++ = old2new[tets_[t].n[i] >> 2];
     }
   }

@@ -91,7 +91,7 @@ class Delaunay3d {
     std::uint32_t n[4];
   };
 
-  const double* xyz(Id v) const { return xyz_.data() + 3 * static_cast<std::size_t>(v); }
+  const double* xyz(Id v) const { return xyz_.data() + v; }
   bool is_ghost(std::uint32_t t) const {
     const Id* v = tets_[t].v;
     return (v[0] | v[1] | v[2] | v[3]) < 0;
@@ -102,8 +102,9 @@ class Delaunay3d {
   void fill_cavity();
 
   const std::vector<double>* coords_;
-  // The tets refer to the vertices by the kernel's own numbering, in insertion order: their
-  // coordinates (a copy) and ids in coords_. The copy keeps the points inserted one after the
+  // The tets refer to the vertices by the kernel's own numbering, in insertion order: vertex k
+  // is stored as 3 k, the offset of its coordinates in xyz_ (a copy; one address computation
+  // less per vertex in the tests), its id in coords_ is original_[k]. The copy keeps the points inserted one after the
   // other (near each other in BRIO or Hilbert order) near each other in memory, whatever the
   // caller's numbering: fewer cache misses in the in-sphere tests.
   std::vector<double> xyz_;
