@@ -11,9 +11,15 @@
 // Or the kernel's work per point on N random points, Hilbert-sorted beforehand (as Sorted/N) or in
 // BRIO order, with one run only (for valgrind --tool=callgrind, whose counts the load does not
 // disturb): build/bench/riemesh_bench_delaunay3d --counts N [--order brio]
+// With --hash (and --counts N or --node FILE): prints "tets T hash H raw R", H an FNV-1a hash of
+// the tets, each with its vertices sorted, in sorted order (the same triangulation), R one of the
+// arrays as returned (the same tet numbering and neighbours), to check that a change of the kernel
+// leaves its output the same, instead of the timings or counts.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -92,8 +98,30 @@ std::vector<double> read_node(const char* path) {
   return xyz;
 }
 
-int run_node_file(const char* path, int runs, InsertionOrder order) {
+/// The tets as sets of vertices, sorted, hashed (FNV-1a 64 over the ids).
+int print_hash(const std::vector<double>& xyz, InsertionOrder order) {
+  const Tetrahedralization t = delaunay3d(xyz, order);
+  const auto fnv = [](std::uint64_t h, Id v) { return (h ^ static_cast<std::uint32_t>(v)) * 0x100000001b3ull; };
+  std::uint64_t raw = 0xcbf29ce484222325ull;  // the arrays as returned: tet order and neighbours
+  for (Id v : t.tets) raw = fnv(raw, v);
+  for (Id v : t.tet2tet) raw = fnv(raw, v);
+  std::vector<std::array<Id, 4>> tets(t.num_tets());
+  for (std::size_t k = 0; k < tets.size(); ++k) {
+    std::copy(t.tets.begin() + 4 * k, t.tets.begin() + 4 * k + 4, tets[k].begin());
+    std::sort(tets[k].begin(), tets[k].end());
+  }
+  std::sort(tets.begin(), tets.end());
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (const auto& q : tets)
+    for (Id v : q) h = fnv(h, v);
+  std::printf("tets %zu hash %016llx raw %016llx\n", tets.size(), static_cast<unsigned long long>(h),
+              static_cast<unsigned long long>(raw));
+  return 0;
+}
+
+int run_node_file(const char* path, int runs, InsertionOrder order, bool hash) {
   const std::vector<double> xyz = read_node(path);
+  if (hash) return print_hash(xyz, order);
   std::vector<double> seconds;
   std::size_t tets = 0;
   for (int r = 0; r < runs; ++r) {
@@ -126,9 +154,12 @@ int run_counts(std::size_t n, bool brio) {
 int main(int argc, char** argv) {
   const char* node = nullptr;
   std::size_t counts = 0;
+  bool hash = false;
   bool brio = false;  // --order brio given (for --counts, whose default is Hilbert-sorted points)
   int runs = 5;
   InsertionOrder order = InsertionOrder::kBrio;
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--hash") == 0) hash = true;
   for (int i = 1; i + 1 < argc; ++i) {
     if (std::strcmp(argv[i], "--node") == 0) node = argv[i + 1];
     if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "brio") == 0) brio = true;
@@ -139,7 +170,9 @@ int main(int argc, char** argv) {
               : std::strcmp(argv[i + 1], "given") == 0 ? InsertionOrder::kAsGiven
                                                         : InsertionOrder::kBrio;
   }
-  if (node) return run_node_file(node, runs, order);
+  if (node) return run_node_file(node, runs, order, hash);
+  if (counts >= 4 && hash)
+    return print_hash(random_cube(counts), brio ? InsertionOrder::kBrio : InsertionOrder::kHilbert);
   if (counts >= 4) return run_counts(counts, brio);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -44,7 +44,7 @@ std::size_t find_point(const std::vector<Id>& order, std::size_t from, Ok ok) {
 Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order)
     : coords_(coords) {
   // The first 4 non-coplanar points, found in order (each search keeps the earliest).
-  const auto p = [&](Id v) { return xyz(v); };
+  const auto p = [&](Id v) { return coords->data() + 3 * static_cast<std::size_t>(v); };
   std::size_t k[4] = {0, 0, 0, 0};
   if (!order.empty()) {
     const Id a = order[0];
@@ -67,6 +67,12 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
   order.erase(order.begin());
   order.insert(order.begin(), v, v + 4);
   if (orient3d_sign(p(v[0]), p(v[1]), p(v[2]), p(v[3])) < 0) std::swap(v[0], v[1]);
+  // The kernel's own numbering: vertex i is v[i], then the points in their insertion order.
+  for (int i = 0; i < 4; ++i) {
+    original_.push_back(v[i]);
+    xyz_.insert(xyz_.end(), p(v[i]), p(v[i]) + 3);
+    v[i] = 3 * i;
+  }
   // The static filter's box: all points given now (later ones grow it when inserted).
   for (std::size_t i = 0; i < coords->size(); i += 3) filter_.extend(coords->data() + i);
   filter_.update();
@@ -83,7 +89,6 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
     std::swap(g[j], g[l]);
   }
   // Faces are matched by vertex set (20 faces: a quadratic search is fine).
-  mark_.assign(5, 0);
   const auto face_has = [&](std::uint32_t t, int f, Id w) {
     for (int i = 0; i < 4; ++i)
       if (i != f && tets_[t].v[i] == w) return true;
@@ -103,20 +108,8 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
 
 void Delaunay3d::reserve(std::size_t num_points) {
   tets_.reserve(7 * num_points);
-  mark_.reserve(7 * num_points);
-}
-
-std::uint32_t Delaunay3d::new_tet() {
-  if (!free_.empty()) {
-    const std::uint32_t t = free_.back();
-    free_.pop_back();
-    return t;
-  }
-  const auto t = static_cast<std::uint32_t>(mark_.size());
-  RIEMESH_CHECK(t < (1u << 30));  // 4 * t + face must fit the 32-bit neighbour codes
-  tets_.emplace_back();
-  mark_.push_back(0);
-  return t;
+  xyz_.reserve(3 * num_points);
+  original_.reserve(num_points);
 }
 
 /// Visibility walk: crosses any face that separates the tetrahedron from p (faces tried in a
@@ -170,9 +163,9 @@ bool Delaunay3d::ghost_in_conflict(std::uint32_t t, const double* p) {
   for (int i = 0; i < 4; ++i) q[i] = i == inf ? p : xyz(v[i]);
   const int s = orient3d_sign(filter_, q[0], q[1], q[2], q[3]);
   if (s != 0) return s > 0;
-  const std::uint32_t n = tets_[t].n[inf] >> 2;
-  if (mark_[n] == kInCavity) return true;
-  if (mark_[n] == kOutside) return false;
+  const std::uint32_t n = (tets_[t].n[inf] & kCodeMask) >> 2;
+  if (tets_[n].n[0] & kMark) return true;    // in the cavity
+  if (tets_[n].n[1] & kMark) return false;   // tested, not in conflict
   const Id* w = tets_[n].v;
   return insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0;
 }
@@ -185,50 +178,72 @@ void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
   boundary_.clear();
   stack_.clear();
   stack_.push_back(start);
-  mark_[start] = kInCavity;
+  Tet* tets = tets_.data();
+  tets[start].n[0] |= kMark;
+  std::size_t tests = 0;
+  const detail::InsphereQuery query(p);
   while (!stack_.empty()) {
     const std::uint32_t t = stack_.back();
     stack_.pop_back();
     cavity_.push_back(t);
     for (int i = 0; i < 4; ++i) {
-      const std::uint32_t code = tets_[t].n[i];
-      const std::uint32_t n = code >> 2;
-      if (mark_[n] == kInCavity) continue;
-      if (mark_[n] != kOutside) {
-        ++stats_.insphere_tests;
-        const Id* w = tets_[n].v;
+      const std::uint32_t code = tets[t].n[i] & kCodeMask;
+      Tet& nt = tets[code >> 2];
+      if (nt.n[0] & kMark) continue;  // in the cavity
+      if (!(nt.n[1] & kMark)) {        // not tested yet
+        ++tests;
+        const Id* w = nt.v;
         const bool conflict =
             (w[0] | w[1] | w[2] | w[3]) >= 0
-                ? insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0
-                : ghost_in_conflict(n, p);
+                ? insphere_sign(filter_, query, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3])) > 0
+                : ghost_in_conflict(code >> 2, p);
         if (conflict) {
-          mark_[n] = kInCavity;
-          stack_.push_back(n);
+          nt.n[0] |= kMark;
+          stack_.push_back(code >> 2);
           continue;
         }
-        mark_[n] = kOutside;
+        nt.n[1] |= kMark;
       }
       BoundaryFace f;
-      for (int j = 0; j < 4; ++j) f.v[j] = tets_[t].v[j];
+      for (int j = 0; j < 4; ++j) f.v[j] = tets[t].v[j];
       f.v[i] = v;
       f.outer = code;
       f.face = i;
       boundary_.push_back(f);
     }
   }
+  stats_.insphere_tests += tests;
   stats_.cavity_tets += cavity_.size();
 }
 
 /// Replaces the cavity by one tet per boundary face joined to the new point, in one sweep. The
-/// cavity boundary is a triangulated sphere: each of its edges is on two boundary faces, and the
-/// two new tets on them are neighbours across their faces through that edge and the point. The
-/// first of the two to come stores its face in a small hash table keyed by the edge, the second
-/// finds it there and links both.
+/// cavity boundary is a triangulated sphere: each of its edges is on two boundary faces, which
+/// run through it in opposite directions, and the two new tets on them are neighbours across
+/// their faces through that edge and the point. The first of the two to come stores its face in
+/// a small hash table under the directed edge (a, b), the second finds it there as (b, a) and
+/// links both.
 void Delaunay3d::fill_cavity() {
   // Face f of a positive tet is, in order, {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}[f]
   // (vertex f on its positive side); the edge from its vertex e to vertex e + 1 lies on the new
   // tet's face opposite its vertex e + 2 (mod 3).
   const std::size_t nb = boundary_.size();
+  // The new tets: the cavity's, then deleted ones, then fresh ones, in the order new_tet gave.
+  const std::size_t num_cavity = cavity_.size();
+  if (nb > num_cavity) {
+    cavity_.resize(nb);
+    std::size_t k = num_cavity;
+    for (; k < nb && !free_.empty(); ++k) {
+      cavity_[k] = free_.back();
+      free_.pop_back();
+    }
+    if (k < nb) {
+      const std::size_t first = tets_.size();
+      // 4 * t + face fits 31 bits (the 32nd holds the marks)
+      RIEMESH_CHECK(first + (nb - k) <= (std::size_t{1} << 29));
+      tets_.resize(first + (nb - k));
+      for (std::size_t t = first; k < nb; ++k, ++t) cavity_[k] = static_cast<std::uint32_t>(t);
+    }
+  }
   // At most 3 nb / 2 edges: a load factor under 3/8.
   int bits = 6;
   while ((std::size_t{1} << bits) < 4 * nb) ++bits;
@@ -241,33 +256,37 @@ void Delaunay3d::fill_cavity() {
   const std::size_t mask = size - 1;
   const std::uint32_t epoch = epoch_;
   EdgeSlot* table = edges_.data();
+  Tet* tets = tets_.data();
+  const std::uint32_t* ids = cavity_.data();
   std::uint32_t t = 0;
   for (std::size_t k = 0; k < nb; ++k) {
-    const BoundaryFace& f = boundary_[k];
-    t = k < cavity_.size() ? cavity_[k] : new_tet();
-    Tet& tet = tets_[t];
+    const BoundaryFace f = boundary_[k];  // a copy: the stores below cannot change it
+    t = ids[k];
+    Tet& tet = tets[t];
     std::copy(f.v, f.v + 4, tet.v);
+    // The tet's 4 codes are all rewritten (here and by the links), which clears its mark; the
+    // outer tet's is cleared here.
     tet.n[f.face] = f.outer;
-    mark_[t] = 0;
-    mark_[f.outer >> 2] = 0;  // the marks are cleared for the next insertion
-    nbr(f.outer) = 4 * t + static_cast<std::uint32_t>(f.face);
-    // Edge (a, b) of the face, on the new tet's face opposite vertex `opposite`.
+    Tet& outer = tets[f.outer >> 2];
+    outer.n[1] &= kCodeMask;
+    outer.n[f.outer & 3] = 4 * t + static_cast<std::uint32_t>(f.face);
+    // Directed edge (a, b) of the face, on the new tet's face opposite vertex `opposite`. The
+    // hash is symmetric, so that (b, a) probes the same slots.
     const auto link = [&](Id a, Id b, int opposite) {
-      const std::uint64_t key = a < b ? (std::uint64_t{static_cast<std::uint32_t>(a)} << 32) |
-                                            static_cast<std::uint32_t>(b)
-                                      : (std::uint64_t{static_cast<std::uint32_t>(b)} << 32) |
-                                            static_cast<std::uint32_t>(a);
+      const std::uint32_t ua = static_cast<std::uint32_t>(a), ub = static_cast<std::uint32_t>(b);
+      const std::uint64_t key = (std::uint64_t{ua} << 32) | ub;
+      const std::uint64_t reverse = (std::uint64_t{ub} << 32) | ua;
       const std::uint32_t code = 4 * t + static_cast<std::uint32_t>(opposite);
-      std::size_t i = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - bits));
+      std::size_t i = static_cast<std::size_t>((std::uint64_t{ua + ub} * 0x9E3779B97F4A7C15ull) >> (64 - bits));
       for (;; i = (i + 1) & mask) {
         EdgeSlot& slot = table[i];
         if (slot.stamp != epoch) {
           slot = {key, code, epoch};
           return;
         }
-        if (slot.key == key) {
+        if (slot.key == reverse) {
           tet.n[opposite] = slot.code;
-          nbr(slot.code) = code;
+          tets[slot.code >> 2].n[slot.code & 3] = code;
           return;
         }
       }
@@ -281,16 +300,15 @@ void Delaunay3d::fill_cavity() {
       default: link(w[0], w[1], 2); link(w[1], w[2], 0); link(w[2], w[0], 1); break;
     }
   }
-  for (std::size_t k = nb; k < cavity_.size(); ++k) {
-    tets_[cavity_[k]].v[0] = kDeleted;
-    mark_[cavity_[k]] = 0;
-    free_.push_back(cavity_[k]);
+  for (std::size_t k = nb; k < num_cavity; ++k) {
+    tets[ids[k]].v[0] = kDeleted;  // its mark stays until it is reused (codes rewritten)
+    free_.push_back(ids[k]);
   }
   last_ = t;
 }
 
 bool Delaunay3d::insert(Id v, Id* same) {
-  const double* p = xyz(v);
+  const double* p = coords_->data() + 3 * static_cast<std::size_t>(v);
   if (!filter_.contains(p)) {
     filter_.extend(p);
     filter_.update();
@@ -300,19 +318,23 @@ bool Delaunay3d::insert(Id v, Id* same) {
     for (int i = 0; i < 4; ++i) {
       const Id w = tets_[t].v[i];
       if (same_point(xyz(w), p)) {
-        if (same) *same = w;
+        if (same) *same = original_[static_cast<std::uint32_t>(w) / 3];
         return false;
       }
     }
   }
-  find_cavity(t, v, p);
+  RIEMESH_CHECK(original_.size() < 0x7fffffff / 3);  // the coordinates' offset fits an Id
+  const auto local = static_cast<Id>(3 * original_.size());
+  original_.push_back(v);
+  xyz_.insert(xyz_.end(), p, p + 3);
+  find_cavity(t, local, p);
   fill_cavity();
   return true;
 }
 
 Tetrahedralization Delaunay3d::result() const {
   Tetrahedralization out;
-  const std::size_t n = mark_.size();
+  const std::size_t n = tets_.size();
   // Huge pages for the large arrays (fewer page faults), then sized once and written in place:
   // no per-element capacity checks.
   const auto sized = [](std::vector<Id>& a, std::size_t size) {
@@ -332,7 +354,7 @@ Tetrahedralization Delaunay3d::result() const {
   for (std::size_t t = 0; t < n; ++t) {
     if (old2new[t] == kNoId) continue;
     for (int i = 0; i < 4; ++i) {
-      *v++ = tets_[t].v[i];
+      *v++ = original_[static_cast<std::uint32_t>(tets_[t].v[i]) / 3];
       *a++ = old2new[tets_[t].n[i] >> 2];
     }
   }

@@ -47,7 +47,8 @@ struct Delaunay3dStats {
 
 /// The incremental kernel behind `delaunay3d`, for callers that insert points one at a time
 /// (boundary recovery inserts Steiner points). Points are referenced by id into `coords`, which
-/// the caller may grow between insertions (only `points()` is read).
+/// the caller may grow between insertions (a point's coordinates are read, and copied, when it is
+/// inserted; the others are not read again).
 class Delaunay3d {
  public:
   /// Starts from the first 4 non-coplanar distinct points of `order` (InputError if none) and
@@ -75,8 +76,8 @@ class Delaunay3d {
     std::uint32_t outer;  // 4 * (outer tet) + its face index
     int face;             // the face's index in the cavity tetrahedron
   };
-  /// A slot of the cavity boundary's edge table: an undirected edge (both vertex ids in key)
-  /// and the face of a new tet through the edge and the new point, as a neighbour code.
+  /// A slot of the cavity boundary's edge table: a directed edge (a, b) as a << 32 | b and the
+  /// face of a new tet through the edge and the new point, as a neighbour code.
   struct EdgeSlot {
     std::uint64_t key;
     std::uint32_t code;
@@ -90,27 +91,33 @@ class Delaunay3d {
     std::uint32_t n[4];
   };
 
-  const double* xyz(Id v) const { return coords_->data() + 3 * static_cast<std::size_t>(v); }
+  const double* xyz(Id v) const { return xyz_.data() + v; }
   bool is_ghost(std::uint32_t t) const {
     const Id* v = tets_[t].v;
     return (v[0] | v[1] | v[2] | v[3]) < 0;
   }
-  std::uint32_t& nbr(std::uint32_t code) { return tets_[code >> 2].n[code & 3]; }
   std::uint32_t locate(const double* p);
   bool ghost_in_conflict(std::uint32_t t, const double* p);
   void find_cavity(std::uint32_t start, Id v, const double* p);
   void fill_cavity();
-  std::uint32_t new_tet();
 
   const std::vector<double>* coords_;
+  // The tets refer to the vertices by the kernel's own numbering, in insertion order: vertex k
+  // is stored as 3 k, the offset of its coordinates in xyz_ (a copy; one address computation
+  // less per vertex in the tests), its id in coords_ is original_[k]. The copy keeps the points inserted one after the
+  // other (near each other in BRIO or Hilbert order) near each other in memory, whatever the
+  // caller's numbering: fewer cache misses in the in-sphere tests.
+  std::vector<double> xyz_;
+  std::vector<Id> original_;
   detail::StaticFilter3d filter_;  // first stage of the predicates, over the points' box
   // kInfinite for the vertex at infinity, kDeleted in v[0]. Huge pages: hundreds of MB are
   // filled in order, and 4 KB page faults were ~15 % of the time.
   std::vector<Tet, HugePageAllocator<Tet>> tets_;
-  // Per tet, during an insertion: kInCavity, kOutside (tested, not in conflict) or 0; cleared
-  // by fill_cavity (a tested tet is always next to the cavity). One byte keeps it in cache.
-  static constexpr std::uint8_t kInCavity = 1, kOutside = 2;
-  std::vector<std::uint8_t, HugePageAllocator<std::uint8_t>> mark_;
+  // The marks of an insertion, in the top bit of the neighbour codes (free while there are fewer
+  // than 2^29 tets): n[0]'s when the tet is in the cavity, n[1]'s when it was tested and is not
+  // in conflict. In the tet record rather than an array of their own: the test reads the record
+  // anyway. Cleared by fill_cavity (a tested tet is always next to the cavity).
+  static constexpr std::uint32_t kMark = 0x80000000u, kCodeMask = 0x7fffffffu;
   std::vector<std::uint32_t> free_;  // deleted tets for reuse
   std::uint32_t epoch_ = 1;  // insertion count, stamps edges_
   std::uint32_t last_ = 0;   // where the next walk starts

@@ -163,10 +163,23 @@ inline double insphere_det_scalar(const double* a, const double* b, const double
 /// the scalar operations in the scalar order, so the value is bitwise the same (no fused
 /// multiply-adds: the filter's error bound counts every rounding). Rows r0..r3 = a, c, b, d and
 /// columns X, Y, Z, W (W the squared norms); x01 holds column X of rows 0 and 1, etc.
-inline double insphere_det(const double* a, const double* b, const double* c, const double* d,
-                           const double* e) {
+/// The point e of in-sphere tests, its coordinates broadcast to both lanes once for all the
+/// tests against it (the cavity search tests one point against dozens of tets).
+struct InsphereQuery {
+  const double* e;
 #if defined(__SSE2__)
-  const __m128d ex = _mm_set1_pd(e[0]), ey = _mm_set1_pd(e[1]), ez = _mm_set1_pd(e[2]);
+  __m128d ex, ey, ez;
+  explicit InsphereQuery(const double* p)
+      : e(p), ex(_mm_set1_pd(p[0])), ey(_mm_set1_pd(p[1])), ez(_mm_set1_pd(p[2])) {}
+#else
+  explicit InsphereQuery(const double* p) : e(p) {}
+#endif
+};
+
+inline double insphere_det(const InsphereQuery& query, const double* a, const double* b,
+                           const double* c, const double* d) {
+#if defined(__SSE2__)
+  const __m128d ex = query.ex, ey = query.ey, ez = query.ez;
   const __m128d x01 = _mm_sub_pd(_mm_setr_pd(a[0], c[0]), ex);
   const __m128d x23 = _mm_sub_pd(_mm_setr_pd(b[0], d[0]), ex);
   const __m128d y01 = _mm_sub_pd(_mm_setr_pd(a[1], c[1]), ey);
@@ -201,17 +214,27 @@ inline double insphere_det(const double* a, const double* b, const double* c, co
   const double q0 = _mm_cvtsd_f64(q), q1 = _mm_cvtsd_f64(_mm_unpackhi_pd(q, q));
   return ((p1 - p0) + q1) - q0;
 #else
-  return insphere_det_scalar(a, b, c, d, e);
+  return insphere_det_scalar(a, b, c, d, query.e);
 #endif
 }
 
+inline double insphere_det(const double* a, const double* b, const double* c, const double* d,
+                           const double* e) {
+  return insphere_det(InsphereQuery(e), a, b, c, d);
+}
+
 /// insphere_sign for points of the filter's box.
-inline int insphere_sign(const StaticFilter3d& f, const double* a, const double* b,
-                         const double* c, const double* d, const double* e) {
-  const double det = insphere_det(a, b, c, d, e);
+inline int insphere_sign(const StaticFilter3d& f, const InsphereQuery& query, const double* a,
+                         const double* b, const double* c, const double* d) {
+  const double det = insphere_det(query, a, b, c, d);
   if (det > f.insphere) return 1;
   if (det < -f.insphere) return -1;
-  return insphere_filtered_sign(a, b, c, d, e);
+  return insphere_filtered_sign(a, b, c, d, query.e);
+}
+
+inline int insphere_sign(const StaticFilter3d& f, const double* a, const double* b,
+                         const double* c, const double* d, const double* e) {
+  return insphere_sign(f, InsphereQuery(e), a, b, c, d);
 }
 
 }  // namespace riemesh::detail

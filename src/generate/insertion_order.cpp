@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 
 #include "generate/delaunay3d.hpp"
 #include "mesh/hilbert.hpp"
@@ -18,15 +19,16 @@ std::uint64_t split_mix(std::uint64_t& state) {
   return z ^ (z >> 31);
 }
 
-/// Sorts ids[begin, end) by Hilbert key, ties by id (deterministic).
+/// Sorts ids[begin, end) by Hilbert key, ties by id (deterministic). The (key, id) pairs are
+/// sorted together: comparing ids through keys[id] read the keys in random order, a cache miss
+/// per comparison on large inputs.
 void sort_by_key(std::vector<Id>& ids, std::size_t begin, std::size_t end,
                  const std::vector<std::uint64_t>& keys) {
-  std::sort(ids.begin() + static_cast<std::ptrdiff_t>(begin),
-            ids.begin() + static_cast<std::ptrdiff_t>(end), [&](Id a, Id b) {
-              const std::uint64_t ka = keys[static_cast<std::size_t>(a)];
-              const std::uint64_t kb = keys[static_cast<std::size_t>(b)];
-              return ka != kb ? ka < kb : a < b;
-            });
+  std::vector<std::pair<std::uint64_t, Id>> pairs(end - begin);
+  for (std::size_t i = begin; i < end; ++i)
+    pairs[i - begin] = {keys[static_cast<std::size_t>(ids[i])], ids[i]};
+  std::sort(pairs.begin(), pairs.end());
+  for (std::size_t i = begin; i < end; ++i) ids[i] = pairs[i - begin].second;
 }
 
 }  // namespace

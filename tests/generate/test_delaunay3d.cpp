@@ -188,6 +188,40 @@ TEST(Delaunay3d, Deterministic) {
   EXPECT_EQ(a.tet2tet, b.tet2tet);
 }
 
+TEST(Delaunay3d, IncrementalKernelWithGrowingPoints) {
+  // As boundary recovery uses it: points appended to the coordinates between insertions (the
+  // vector reallocates), duplicates refused, and far points whose cavities hold many ghosts and
+  // hundreds of boundary faces; the conflict marks of every insertion must be cleared.
+  std::vector<double> xyz = random_points(500, 21);
+  std::vector<Id> order(xyz.size() / 3);
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<Id>(i);
+  Delaunay3d kernel(&xyz, order);
+  for (std::size_t k = 4; k < order.size(); ++k) ASSERT_TRUE(kernel.insert(order[k]));
+  std::vector<Id> duplicate_of(order.size(), kNoId);
+  std::mt19937_64 rng(22);
+  std::uniform_real_distribution<double> u(-1.0, 2.0);
+  for (int k = 0; k < 300; ++k) {
+    const Id id = static_cast<Id>(xyz.size() / 3);
+    if (k % 50 == 49) {  // far outside: the whole hull side is in conflict
+      const double s = 10.0 * (k / 50 + 1);
+      xyz.insert(xyz.end(), {s * u(rng), s * u(rng), s});
+    } else if (k % 7 == 3) {  // a duplicate of an earlier point
+      const std::size_t q = static_cast<std::size_t>(rng() % static_cast<std::uint64_t>(id));
+      xyz.insert(xyz.end(), {xyz[3 * q], xyz[3 * q + 1], xyz[3 * q + 2]});
+    } else {
+      xyz.insert(xyz.end(), {u(rng), u(rng), u(rng)});
+    }
+    Id same = kNoId;
+    const bool inserted = kernel.insert(id, &same);
+    EXPECT_EQ(inserted, k % 50 == 49 || k % 7 != 3) << k;
+    duplicate_of.push_back(inserted ? kNoId : same);
+  }
+  Tetrahedralization tz = kernel.result();
+  tz.duplicate_of = duplicate_of;
+  expect_delaunay(xyz, tz);
+  EXPECT_GT(kernel.stats().insphere_tests, kernel.stats().cavity_tets);
+}
+
 TEST(Delaunay3d, BrioIsAPermutation) {
   const std::vector<double> xyz = random_points(5000, 5);
   std::vector<Id> order = insertion_order(xyz, InsertionOrder::kBrio);
