@@ -551,7 +551,10 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   // polar2d, mean of passes 5-8 over 8 variants (s = 0.85..1.1, h0 = 0.0009, 0.0011): in band
   // 96.2 -> 97.8%, q min 0.378 -> 0.440 with one round, 0.5 and Simpson's rule; 98.1%, 0.471
   // now. Metrics that commute everywhere (linear2d) keep their outputs.
-  for (int round = 0; round < kRelocationRounds && options.move; ++round) {
+  // Without logarithms kept every vertex metric is diagonal: they all commute, and neither
+  // relocation would move a vertex (both look only where the metric turns), so the rounds, a
+  // full ball sweep each, are skipped.
+  for (int round = 0; round < kRelocationRounds && options.move && !m.log_metric.empty(); ++round) {
     PassStats st;
     std::uint32_t stamp = changes.begin();
     const long poor = smooth_sweep(ctx, st, changes, 0, qualities, false, kPoorBall);
