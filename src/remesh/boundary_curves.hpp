@@ -60,6 +60,9 @@ struct BoundaryCurve {
   std::vector<double> arc_length;
   std::int32_t ref = 0;  ///< the edge ref shared by all edges of the curve
   bool closed = false;
+  /// Open, its control polygon exactly on the line of its ends and in order along it: the
+  /// curve is that segment (chord_deviation is 0 on it).
+  bool straight = false;
   /// Triangle refs on the left and right of the curve walked by increasing parameter; kNoId
   /// where there is no triangle (outside the domain). Orientation: the domain is on the left of a
   /// boundary curve (outer boundaries counter-clockwise, holes clockwise); an interface has

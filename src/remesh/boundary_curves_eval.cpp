@@ -245,6 +245,13 @@ void build_curve_geometry(BoundaryCurve& c, std::span<const Vec2> p) {
   c.bezier[3 * n] = p[n];
   for (int k = 0; k < n; ++k)
     c.arc_length[k + 1] = c.arc_length[k] + seg_length(seg(c, k), 0.0, 1.0);
+  // Straight: every control point exactly on the line of the ends and in order along it (a side
+  // of a box: the cubic pieces then run along the line, monotonically).
+  c.straight = !c.closed;
+  const Vec2 dir = c.bezier.back() - c.bezier.front();
+  for (std::size_t i = 1; c.straight && i < c.bezier.size(); ++i)
+    c.straight = cross(dir, c.bezier[i] - c.bezier.front()) == 0.0 &&
+                 dot(dir, c.bezier[i] - c.bezier[i - 1]) >= 0.0;
 }
 
 double wrap_param(const BoundaryCurve& c, double s) {
@@ -358,6 +365,9 @@ double hausd_size(const BoundaryCurve& c, double s, double hausd) {
 }
 
 double chord_deviation(const BoundaryCurve& c, double s0, double s1, int samples) {
+  // On a straight curve every point between s0 and s1 lies on the chord: the samples would
+  // all find 0 (exactly, for the axis-aligned sides of a box).
+  if (c.straight) return 0.0;
   const Vec2 a = point(c, s0), b = point(c, s1);
   const int n = std::max({samples, 8 * static_cast<int>(std::ceil(std::abs(s1 - s0))), 1});
   double worst = 0.0;

@@ -118,6 +118,8 @@ TEST(BoundaryCurves, UnitSquareGivesFourStraightSides) {
     // and is linear in the parameter (up to rounding) between the input vertices.
     const Vec2 a = xy(m, c.vertices.front()), b = xy(m, c.vertices.back());
     const int fixed = a[0] == b[0] ? 0 : 1;
+    EXPECT_TRUE(c.straight);  // chord_deviation answers 0 without sampling
+    EXPECT_EQ(chord_deviation(c, 0.3, 2.7), 0.0);
     EXPECT_NEAR(c.total_length(), 1.0, 1e-14);
     for (int i = 0; i <= 40 * c.num_edges(); ++i) {
       const double s = i / 40.0;
@@ -161,6 +163,8 @@ TEST(BoundaryCurves, DiskIsOneClosedCurveConvergingAtOrderFour) {
     ASSERT_EQ(bc.curves.size(), 1u);
     const BoundaryCurve& c = bc.curves[0];
     EXPECT_TRUE(c.closed);
+    EXPECT_FALSE(c.straight);
+    EXPECT_GT(chord_deviation(c, 0.0, 2.0), 0.0);
     EXPECT_EQ(count_corners(bc), 0);
     EXPECT_EQ(c.num_edges(), n);
     EXPECT_EQ(c.vertices.front(), 0);  // the smallest id starts a closed loop
