@@ -18,6 +18,7 @@
 #include "remesh/pass_summary.hpp"
 #include "remesh/prepare_metrics.hpp"
 #include "remesh/remesh2d_context.hpp"
+#include "remesh/renumber_tail.hpp"
 #include "remesh/tri_mesh_io.hpp"
 
 namespace riemesh {
@@ -96,13 +97,6 @@ struct Changes {
   bool since(Id v, std::uint32_t t) const {
     return static_cast<std::size_t>(v) < stamp.size() && stamp[v] >= t;
   }
-  /// After the vertices were renumbered (old2new, kNoId: dropped; n: the new vertex count).
-  void renumber(const std::vector<Id>& old2new, std::size_t n) {
-    std::vector<std::uint32_t> out(n, 0);
-    for (std::size_t v = 0; v < stamp.size() && v < old2new.size(); ++v)
-      if (old2new[v] != kNoId) out[old2new[v]] = stamp[v];
-    stamp.swap(out);
-  }
 };
 
 // Splits append their vertices and triangles at the end of the arrays: once more than this
@@ -115,12 +109,12 @@ constexpr std::size_t kRenumberAfter = 16384;
 /// Renumbers the vertices created since `ordered` (the vertex count when the numbering last
 /// followed the space) when they are many; `changes` follows.
 void keep_locality(Remesh2dContext& ctx, Changes& changes, std::size_t& ordered) {
-  const std::size_t n = ctx.mesh().vertex_capacity();
-  const std::size_t after = ctx.options().renumber_after ? ctx.options().renumber_after : kRenumberAfter;
-  if (n < ordered || n - ordered <= std::max(after, n / 4)) return;
+  const std::size_t after = ctx.options().renumber_after;
+  if (!detail::renumber_due(ctx.mesh().vertex_capacity(), ordered, after ? after : kRenumberAfter))
+    return;
   const std::vector<Id> old2new = ctx.renumber_new_vertices();
   ordered = ctx.mesh().vertex_capacity();
-  changes.renumber(old2new, ordered);
+  detail::remap_records(changes.stamp, old2new, ordered, std::uint32_t{0});
 }
 
 /// An edge to split or collapse, by its end vertices (slots move as the mesh changes), and a

@@ -22,6 +22,7 @@
 #include "remesh/pass_summary.hpp"
 #include "remesh/prepare_metrics.hpp"
 #include "remesh/remesh3d_context.hpp"
+#include "remesh/renumber_tail.hpp"
 #include "remesh/sliver3d.hpp"
 
 namespace riemesh {
@@ -425,18 +426,6 @@ double longest_edge(const Mesh& mesh, std::span<const SymMat3> field) {
   return out;
 }
 
-/// A failure memo after the tets were renumbered (old -> new, kNoId: dropped).
-void renumber_memo(FailureMemo& memo, const std::vector<Id>& tet_old2new) {
-  std::vector<std::uint32_t> at;
-  for (std::size_t t = 0; t < memo.at.size() && t < tet_old2new.size(); ++t) {
-    const Id n = tet_old2new[t];
-    if (n == kNoId || memo.at[t] == 0) continue;
-    if (at.size() <= static_cast<std::size_t>(n)) at.resize(static_cast<std::size_t>(n) + 1, 0);
-    at[n] = memo.at[t];
-  }
-  memo.at.swap(at);
-}
-
 // Splits append their vertices and tets at the end of the arrays: once the split sweeps of a
 // pass leave more than this many vertices (and more than a quarter of the mesh) created since
 // the numbering last followed the space, the new ones are renumbered along the Hilbert curve
@@ -451,14 +440,14 @@ constexpr std::size_t kRenumberAfter = 65536;
 bool keep_locality(Remesh3dContext& ctx, std::size_t renumber_after, SweepMemos& memos,
                    std::size_t& in_order, std::vector<ShortEdge>& short_edges,
                    NeighbourTable& nbrs) {
-  const std::size_t n = ctx.mesh().vertex_capacity();
   const std::size_t after = renumber_after ? renumber_after : kRenumberAfter;
-  if (n < in_order || n - in_order <= std::max(after, n / 4)) return false;
+  if (!detail::renumber_due(ctx.mesh().vertex_capacity(), in_order, after)) return false;
   std::vector<Id> tet_old2new;
   const std::vector<Id> old2new = ctx.renumber_new_vertices(&tet_old2new);
   in_order = ctx.mesh().vertex_capacity();
-  renumber_memo(memos.swaps, tet_old2new);
-  renumber_memo(memos.slivers, tet_old2new);
+  const std::size_t tets = ctx.mesh().tet_capacity();
+  detail::remap_records(memos.swaps.at, tet_old2new, tets, std::uint32_t{0});
+  detail::remap_records(memos.slivers.at, tet_old2new, tets, std::uint32_t{0});
   std::erase_if(short_edges, [&old2new](ShortEdge& e) {
     e.a = old2new[e.a], e.b = old2new[e.b];
     if (e.a > e.b) std::swap(e.a, e.b);

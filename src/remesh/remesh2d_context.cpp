@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
 #include "remesh/pass_summary.hpp"
+#include "remesh/renumber_tail.hpp"
 #include "remesh/tri_mesh_io.hpp"
 #include "remesh/vertex_logs.hpp"
 
@@ -136,10 +137,7 @@ void Remesh2dContext::inherit_hint(Id v, Id /*near*/) {
 
 std::vector<Id> Remesh2dContext::renumber_new_vertices() {
   std::vector<Id> old2new = renumber_tail(mesh_, static_cast<Id>(num_input_vertices_));
-  std::vector<Id> hints(mesh_.vertex_capacity(), kNoId);
-  for (std::size_t v = 0; v < old2new.size() && v < hint_.size(); ++v)
-    if (old2new[v] != kNoId) hints[old2new[v]] = hint_[v];
-  hint_.swap(hints);
+  detail::remap_records(hint_, old2new, mesh_.vertex_capacity(), kNoId);
   return old2new;
 }
 

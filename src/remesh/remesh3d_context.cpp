@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "mesh/adjacency.hpp"
+#include "remesh/renumber_tail.hpp"
 
 namespace riemesh {
 namespace {
@@ -225,10 +226,7 @@ void Remesh3dContext::inherit_hint(Id v) {
 
 std::vector<Id> Remesh3dContext::renumber_new_vertices(std::vector<Id>* tet_old2new) {
   std::vector<Id> old2new = renumber_tail(mesh_, static_cast<Id>(num_input_vertices_), tet_old2new);
-  std::vector<Id> hints(mesh_.vertex_capacity(), kNoId);
-  for (std::size_t v = 0; v < old2new.size() && v < hint_.size(); ++v)
-    if (old2new[v] != kNoId) hints[old2new[v]] = hint_[v];
-  hint_.swap(hints);
+  detail::remap_records(hint_, old2new, mesh_.vertex_capacity(), kNoId);
   return old2new;
 }
 

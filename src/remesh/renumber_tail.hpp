@@ -73,6 +73,23 @@ void gather_records(std::vector<T>& a, const std::vector<Id>& new2old, std::size
   a.swap(out);
 }
 
+/// Per-entity data kept beside a renumbered mesh (hints, stamps, memos): a[old] moves to
+/// a[old2new[old]], entries dropped (kNoId) or missing (a shorter than old2new) leave `fill`;
+/// n entries after.
+template <class T>
+void remap_records(std::vector<T>& a, const std::vector<Id>& old2new, std::size_t n, T fill) {
+  std::vector<T> out(n, fill);
+  for (std::size_t i = 0; i < a.size() && i < old2new.size(); ++i)
+    if (old2new[i] != kNoId) out[static_cast<std::size_t>(old2new[i])] = a[i];
+  a.swap(out);
+}
+
+/// Whether the vertices created since the numbering last followed the space (`in_order`
+/// vertices then, `n` now) are many enough to renumber: more than `after` and a quarter of n.
+inline bool renumber_due(std::size_t n, std::size_t in_order, std::size_t after) {
+  return n > in_order && n - in_order > std::max(after, n / 4);
+}
+
 /// Adjacency slots (k per element: k e + i) renumbered by the elements' old -> new map.
 inline void renumber_slots(std::vector<Id>& adj, const std::vector<Id>& elem_old2new, int k) {
   for (Id& s : adj)
