@@ -71,7 +71,9 @@ class OutputBatch {
       throw InputError(renamed(e.what(), temp, target));
     }
   }
-  /// Renames every staged output into place.
+  /// Renames every staged output into place. A rename that fails (rare: the temporaries sit in
+  /// the targets' folders) throws InputError naming its target; the outputs renamed before it
+  /// stay in place, the others are removed.
   void commit();
 
  private:
