@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/predicates.hpp"
 #include "mesh/distance.hpp"
 
 namespace riemesh {
@@ -15,35 +16,29 @@ Vec3 vertex_at(const Mesh& mesh, Id v) {
   return {{p[0], p[1], p[2]}};
 }
 
-/// Parameter t in [0, 1] where segment q0 q1 meets triangle abc (Möller–Trumbore, boundaries
-/// included), or -1 (no hit, or the segment parallel to the plane).
-double segment_hits(const Vec3& q0, const Vec3& q1, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 e1 = b - a, e2 = c - a, d = q1 - q0;
-  const Vec3 p = cross(d, e2);
-  const double det = dot(e1, p);
-  if (!(std::abs(det) > 1e-12 * norm(e1) * norm(e2) * norm(d))) return -1.0;
-  const double inv = 1.0 / det;
-  const Vec3 s = q0 - a;
-  const double u = dot(s, p) * inv;
-  if (u < 0.0 || u > 1.0) return -1.0;
-  const Vec3 qv = cross(s, e1);
-  const double v = dot(d, qv) * inv;
-  if (v < 0.0 || u + v > 1.0) return -1.0;
-  const double t = dot(e2, qv) * inv;
-  return t >= 0.0 && t <= 1.0 ? t : -1.0;
+/// Whether the closed segment pq meets the closed triangle abc, exactly (robust orient3d): the
+/// segment reaches the plane (its ends not strictly on one side) and its line passes through
+/// the triangle (the three edge orientations not of opposite signs). A segment lying in the
+/// triangle's plane does not count (coplanar overlaps are outside this test).
+bool segment_meets(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double sp = orient3d(a.x, b.x, c.x, p.x);
+  const double sq = orient3d(a.x, b.x, c.x, q.x);
+  if ((sp > 0.0 && sq > 0.0) || (sp < 0.0 && sq < 0.0) || (sp == 0.0 && sq == 0.0)) return false;
+  const double o1 = orient3d(p.x, q.x, a.x, b.x);
+  const double o2 = orient3d(p.x, q.x, b.x, c.x);
+  const double o3 = orient3d(p.x, q.x, c.x, a.x);
+  const bool some_pos = o1 > 0.0 || o2 > 0.0 || o3 > 0.0, some_neg = o1 < 0.0 || o2 < 0.0 || o3 < 0.0;
+  return !(some_pos && some_neg);
 }
 
-/// Whether an edge of triangle x meets triangle y, ignoring hits at the shared vertex `shared`
-/// (a local index in x, or -1) — within a relative tolerance of the edge length.
+/// Whether an edge of triangle x meets triangle y. With a shared vertex (x[shared], a local
+/// index in x, or -1) the edges from it are skipped: such an edge touches y's plane at the
+/// shared vertex, so it meets y elsewhere only if it lies in that plane (not counted).
 bool edges_hit(const Vec3 (&x)[3], const Vec3 (&y)[3], int shared) {
-  constexpr double kEnd = 1e-9;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
-    const double t = segment_hits(x[i], x[j], y[0], y[1], y[2]);
-    if (t < 0.0) continue;
-    if (shared == i && t < kEnd) continue;
-    if (shared == j && t > 1.0 - kEnd) continue;
-    return true;
+    if (shared == i || shared == j) continue;
+    if (segment_meets(x[i], x[j], y[0], y[1], y[2])) return true;
   }
   return false;
 }

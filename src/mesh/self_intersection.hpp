@@ -14,10 +14,12 @@ struct SelfIntersections {
 
 /// Pairs of triangles of a 3D mesh that intersect: triangles with no common vertex that touch
 /// or cross (an edge of one meets the other), and triangles with one common vertex that meet
-/// elsewhere than at it. Triangles sharing an edge are not tested, nor are coplanar overlaps (an
-/// edge parallel to the other triangle's plane never counts): the test finds crossings and
-/// folds through the surface, which is what remeshing can introduce. Candidate pairs come from
-/// an AABB tree; stops after `max_pairs`. Throws InputError for a mesh that is not 3D.
+/// elsewhere than at it. Decided exactly (robust orient3d signs, no tolerance: nearly coplanar
+/// neighbours, as remeshed surfaces have many, are neither missed nor reported by rounding).
+/// Triangles sharing an edge are not tested, nor are coplanar overlaps (an edge lying in the
+/// other triangle's plane never counts): the test finds crossings and folds through the
+/// surface, which is what remeshing can introduce. Candidate pairs come from an AABB tree;
+/// stops after `max_pairs`. Throws InputError for a mesh that is not 3D.
 SelfIntersections find_self_intersections(const Mesh& mesh, std::size_t max_pairs = 1000);
 
 }  // namespace riemesh

@@ -43,6 +43,24 @@ TEST(SelfIntersection, Pairs) {
   EXPECT_EQ(find_self_intersections(two_triangles(c, {0, 1, 2, 1, 0, 3})).pairs, 0u);
 }
 
+TEST(SelfIntersection, NearlyCoplanarNeighboursSharingAVertex) {
+  // Two triangles of a remeshed rotor sharing vertex 0, nearly coplanar (the far corner of the
+  // first lies 4e-12 from the second's plane), whose sectors at the shared vertex are 2.3
+  // degrees apart: they touch only there (exact arithmetic says so). The floating-point
+  // segment test used before reported them crossing.
+  const std::vector<double> c = {0.056451599999999998, 0.24193500000000001, 0.37175599999999998,
+                                 -0.060491361875923508, 0.3037768219264379, 0.31204727108152386,
+                                 -0.060491857805562731, 0.27496675078545019, 0.34595345524189275,
+                                 -0.072662883605472975, 0.27363970116184327, 0.34681099461490755,
+                                 0.032109699999999998, 0.23928099999999999, 0.373471};
+  EXPECT_EQ(find_self_intersections(two_triangles(c, {0, 1, 2, 3, 4, 0})).pairs, 0u);
+  // The second one's far edge moved across the first (its corner 3 pushed through): crossing.
+  std::vector<double> d = c;
+  d[9] = -0.02, d[10] = 0.28, d[11] = 0.3;  // below the first triangle, across its sector
+  d[12] = -0.02, d[13] = 0.28, d[14] = 0.4;
+  EXPECT_EQ(find_self_intersections(two_triangles(d, {0, 1, 2, 3, 4, 0})).pairs, 1u);
+}
+
 TEST(SelfIntersection, SphereAndADentThroughIt) {
   Mesh m = sphere_surface(3);
   EXPECT_EQ(find_self_intersections(m).pairs, 0u);
