@@ -6,11 +6,13 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/memory_tuning.hpp"
 #include "apps/mmg_spellings.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 
 int main(int argc, char** argv) {
+  riemesh::cli::tune_memory();
   CLI::App app{"Riemesh: metric-based mesh generation and adaptation"};
   app.name("riemesh");
   app.set_version_flag("--version", riemesh::version());
