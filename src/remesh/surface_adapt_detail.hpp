@@ -2,6 +2,7 @@
 // Internal state of the surface remesher (surface_adapt.cpp drives, surface_ops.cpp operates).
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -53,6 +54,13 @@ struct State {
   std::vector<Id> cover_head;  // per triangle: its first check point, kNoId if none
   std::vector<Id> cover_next;  // per check point: the next one of the same triangle
 
+  /// Change stamps: `ops` counts the applied operations (from 1); changed[v] is the count when
+  /// a triangle of v's ball last changed (a vertex of it moved, it was split, swapped or
+  /// collapsed), smooth_failed[v] the count when smoothing v last failed (0: never). A vertex
+  /// whose ball has not changed since is not tried again: the same ball gives the same answer.
+  std::uint32_t ops = 1;
+  std::vector<std::uint32_t> changed, smooth_failed;
+
   const SurfaceProjection* geo = nullptr;
   const SurfaceAdaptOptions* opt = nullptr;
 
@@ -71,7 +79,16 @@ struct State {
     tag.push_back(t);
     surf_hint.push_back(sh);
     line_hint.push_back(lh);
+    changed.push_back(ops);
+    smooth_failed.push_back(0);
     return static_cast<Id>(x.size() - 1);
+  }
+  /// A new operation changes triangles t: stamps their vertices.
+  void touch(std::span<const Id> tris) {
+    ++ops;
+    for (Id t : tris)
+      for (int i = 0; i < 3; ++i)
+        changed[static_cast<std::size_t>(tri[3 * static_cast<std::size_t>(t) + i])] = ops;
   }
   /// Drops dead triangles and unused vertices (renumbering, order kept).
   void compact();

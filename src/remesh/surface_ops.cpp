@@ -25,9 +25,9 @@ std::size_t us(Id i) { return static_cast<std::size_t>(i); }
 
 /// The neighbours of v (the other vertices of its ball), sorted, unique, into n (scratch reused
 /// by the caller: the passes ask for thousands of balls).
-void neighbours(const State& s, const Adjacency& adj, Id v, std::vector<Id>& n) {
+void neighbours(const State& s, std::span<const Id> ball_v, Id v, std::vector<Id>& n) {
   n.clear();
-  for (Id t : ball(adj, v))
+  for (Id t : ball_v)
     for (int i = 0; i < 3; ++i)
       if (s.tri[3 * us(t) + i] != v) n.push_back(s.tri[3 * us(t) + i]);
   if (n.size() > 32) {
@@ -41,16 +41,6 @@ void neighbours(const State& s, const Adjacency& adj, Id v, std::vector<Id>& n) 
     }
   }
   n.erase(std::unique(n.begin(), n.end()), n.end());
-}
-
-bool any_dirty(std::span<const Id> tris, const std::vector<char>& dirty) {
-  for (Id t : tris)
-    if (dirty[us(t)]) return true;
-  return false;
-}
-
-void mark(std::span<const Id> tris, std::vector<char>& dirty) {
-  for (Id t : tris) dirty[us(t)] = 1;
 }
 
 /// Triangle t's corners with vertex `from` at position `p` (the others at their place).
@@ -367,6 +357,7 @@ std::size_t split_pass(State& s, double bad_quality) {
       if (ok) break;
     }
     if (!ok) continue;
+    s.touch(std::span<const Id>(et, us(nt)));
     const Id m = s.add_vertex(p.point, p.metric, feat ? kTagRidge : kTagNone,
                               feat ? s.surf_hint[us(a)] : p.hint, feat ? p.hint : s.line_hint[us(a)]);
     for (int k = 0; k < nt; ++k) {
@@ -402,27 +393,56 @@ std::size_t split_pass(State& s, double bad_quality) {
 
 namespace {
 
+/// Exact balls while a collapse pass changes triangles: the pass's topology, whose balls keep
+/// their triangle ids (a collapse v -> w renames v in its triangles and kills the edge's two),
+/// minus the triangles that no longer hold the vertex, plus those it gained (a target w gains
+/// the triangles of v). Collapses can thus follow one another in a pass without a rebuild.
+class PassBalls {
+ public:
+  PassBalls(const State& s, const Topology& t) : topo_(&t), gained_(s.num_vertices()) {}
+  /// Triangle t took vertex v in this pass.
+  void gain(Id v, Id t) { gained_[us(v)].push_back(t); }
+  /// The triangles holding v now, into out.
+  void ball_of(const State& s, Id v, std::vector<Id>& out) const {
+    out.clear();
+    auto holds = [&s, v](Id t) {  // a dead triangle holds kNoId only
+      const Id* x = &s.tri[3 * us(t)];
+      return x[0] == v || x[1] == v || x[2] == v;
+    };
+    for (Id t : ball(topo_->adj, v))
+      if (holds(t)) out.push_back(t);
+    for (Id t : gained_[us(v)])
+      if (holds(t)) out.push_back(t);
+  }
+
+ private:
+  const Topology* topo_;
+  std::vector<std::vector<Id>> gained_;
+};
+
 /// Scratch vectors of try_collapse, reused from edge to edge (thousands of tries per pass).
 struct CollapseScratch {
-  std::vector<Id> nv, nw, common, new_ids;
+  std::vector<Id> bv, bw, nv, nw, common, new_ids;
   std::vector<Tri3> old_t, new_t;
   CoverScratch cover;
 };
 
 /// Tries to collapse v into w (see surface_adapt.hpp); applies it and returns true when allowed.
-bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<char>& dirty,
-                  CollapseScratch& scratch) {
+bool try_collapse(State& s, PassBalls& balls, Id v, Id w, CollapseScratch& scratch) {
   if (s.tag[us(v)] & (kTagCorner | kTagRequired)) return false;
   const bool feat = s.is_feature(v, w);
   if ((s.tag[us(v)] & kTagRidge) && !feat) return false;
-  const int nt = topo.edge_count[us(e)];
+  std::vector<Id>&bv = scratch.bv, &bw = scratch.bw;
+  balls.ball_of(s, v, bv);
+  int nt = 0;  // triangles of the edge
+  for (Id t : bv)
+    nt += s.tri[3 * us(t)] == w || s.tri[3 * us(t) + 1] == w || s.tri[3 * us(t) + 2] == w;
   if (nt < 1 || nt > 2 || (nt == 1 && !feat)) return false;
-  const auto bv = ball(topo.adj, v), bw = ball(topo.adj, w);
-  if (any_dirty(bv, dirty) || any_dirty(bw, dirty)) return false;
+  balls.ball_of(s, w, bw);
   // Link condition: the common neighbours of v and w are the apexes of the edge's triangles.
   std::vector<Id>&nv = scratch.nv, &nw = scratch.nw, &common = scratch.common;
-  neighbours(s, topo.adj, v, nv);
-  neighbours(s, topo.adj, w, nw);
+  neighbours(s, bv, v, nv);
+  neighbours(s, bw, w, nw);
   common.clear();
   std::set_intersection(nv.begin(), nv.end(), nw.begin(), nw.end(), std::back_inserter(common));
   if (static_cast<int>(common.size()) != nt) return false;
@@ -462,6 +482,7 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
       !new_triangles_cover(s, bv, new_t, scratch.cover))
     return false;
   // Apply.
+  s.touch(bv);
   for (Id t : bv) {
     bool has_w = false;
     for (int i = 0; i < 3; ++i) has_w |= s.tri[3 * us(t) + i] == w;
@@ -483,8 +504,7 @@ bool try_collapse(State& s, const Topology& topo, Id e, Id v, Id w, std::vector<
     s.feature_tag.erase(key);
   }
   hand_over(s, bv, new_ids, scratch.cover);
-  mark(bv, dirty);
-  mark(bw, dirty);
+  for (Id t : new_ids) balls.gain(w, t);
   return true;
 }
 
@@ -498,13 +518,12 @@ std::size_t collapse_pass(State& s) {
     if (l < 1.0 / kSqrt2) cand.push_back({l, static_cast<Id>(e)});
   }
   std::sort(cand.begin(), cand.end());
-  std::vector<char> dirty(s.num_triangles(), 0);
+  PassBalls balls(s, topo);
   std::size_t count = 0;
   CollapseScratch scratch;
   for (const auto& [l, e] : cand) {
     const Id a = topo.adj.edges[2 * us(e)], b = topo.adj.edges[2 * us(e) + 1];
-    if (try_collapse(s, topo, e, a, b, dirty, scratch) || try_collapse(s, topo, e, b, a, dirty, scratch))
-      ++count;
+    if (try_collapse(s, balls, a, b, scratch) || try_collapse(s, balls, b, a, scratch)) ++count;
   }
   s.compact();  // renumbers nothing when nothing was collapsed: the topology stays valid
   if (count > 0) s.topo_valid = false;
@@ -556,6 +575,7 @@ std::size_t swap_pass(State& s) {
     if (!new_triangles_close(s, new_t, s.surf_hint[us(c)], old_t) ||
         !new_triangles_cover(s, ids, new_t, cover))
       continue;
+    s.touch(ids);
     s.tri[3 * us(t1)] = a;
     s.tri[3 * us(t1) + 1] = d;
     s.tri[3 * us(t1) + 2] = c;
@@ -596,7 +616,8 @@ std::size_t smooth_pass(State& s) {
       q_ball = std::min(q_ball, tq[us(t)]);
     }
     if (q_ball >= kSmoothEnough) continue;
-    neighbours(s, topo.adj, v, nb);
+    if (s.smooth_failed[vi] != 0 && s.changed[vi] <= s.smooth_failed[vi]) continue;  // same ball
+    neighbours(s, ball(topo.adj, v), v, nb);
     SurfaceProjection::Placed p;
     if (s.tag[vi] & kTagRidge) {
       Id line[2];
@@ -627,8 +648,11 @@ std::size_t smooth_pass(State& s) {
     }
     // A real gain only: marginal moves would oscillate from pass to pass, each paying the checks.
     if (!ok || !(q_new > 1.02 * q_old) || !new_triangles_close(s, new_t, p.hint, old_t) ||
-        !new_triangles_cover(s, bv, new_t, cover))
+        !new_triangles_cover(s, bv, new_t, cover)) {
+      s.smooth_failed[vi] = s.ops;
       continue;
+    }
+    s.touch(bv);
     hand_over(s, bv, bv, cover);  // same triangles, moved
     s.x[vi] = p.point;
     s.m[vi] = p.metric;
@@ -665,6 +689,7 @@ void State::compact() {
   std::vector<SymMat3> m2(us(next));
   std::vector<std::uint8_t> tag2(us(next));
   std::vector<Id> sh2(us(next)), lh2(us(next));
+  std::vector<std::uint32_t> ch2(us(next)), sf2(us(next));
   for (std::size_t v = 0; v < x.size(); ++v) {
     const Id n = new_id[v];
     if (n == kNoId) continue;
@@ -673,6 +698,8 @@ void State::compact() {
     tag2[us(n)] = tag[v];
     sh2[us(n)] = surf_hint[v];
     lh2[us(n)] = line_hint[v];
+    ch2[us(n)] = changed[v];
+    sf2[us(n)] = smooth_failed[v];
   }
   for (Id& v : t2) v = new_id[us(v)];
   std::unordered_map<std::uint64_t, std::int32_t> f2;
@@ -688,6 +715,8 @@ void State::compact() {
   tag.swap(tag2);
   surf_hint.swap(sh2);
   line_hint.swap(lh2);
+  changed.swap(ch2);
+  smooth_failed.swap(sf2);
   tri.swap(t2);
   tref.swap(r2);
   if (!cover_head.empty()) cover_head.swap(h2);
