@@ -90,29 +90,39 @@ struct CoverProbe {
   }
 };
 
-/// Scratch of the A -> B check: the check points that the old triangles answer for and, for
-/// each, the new triangle (index in new_t) that takes it over.
+/// Scratch of the A -> B check: the check points that leave their triangle and the new triangle
+/// (index in new_t) that takes each, in the order met; run[j] is where old triangle j's begin.
 struct CoverScratch {
   std::vector<CoverProbe> probe;
   std::vector<Id> pts;
   std::vector<int> by;
+  std::vector<std::size_t> run;
 };
 
 /// The A -> B check (State::check_pts): every check point that the triangles `old_ids` answer
-/// for is within kCheckMargin × hausd of a triangle of new_t (the one that answered last tried
-/// first: consecutive points of a list are neighbours). The answers are kept in c for
-/// hand_over. A point the old triangles were close to but do not answer for has another
-/// triangle, unchanged, close to it: it is not tested.
+/// for is within kCheckMargin × hausd of a triangle of new_t, new_ids[k] being the id new_t[k]
+/// takes once applied. A point is tried first against its own triangle's successor (the new
+/// triangle with its id: it usually still answers, and the point then stays in its list), then
+/// against the one that answered last. The points that move are kept in c for hand_over. A
+/// point the old triangles were close to but do not answer for has another triangle,
+/// unchanged, close to it: it is not tested.
 bool new_triangles_cover(const State& s, std::span<const Id> old_ids,
-                         const std::vector<Tri3>& new_t, CoverScratch& c) {
+                         const std::vector<Tri3>& new_t, std::span<const Id> new_ids,
+                         CoverScratch& c) {
   const double h = kCheckMargin * s.opt->hausd, h2 = h * h;
   c.pts.clear();
   c.by.clear();
+  c.run.clear();
   c.probe.clear();
   for (const Tri3& t : new_t) c.probe.emplace_back(t);
   const int nn = static_cast<int>(new_t.size());
   int last = 0;
-  for (Id t : old_ids)
+  for (Id t : old_ids) {
+    c.run.push_back(c.pts.size());
+    int own = -1;  // the new triangle that keeps t's id
+    for (int k = 0; k < nn; ++k)
+      if (new_ids[us(k)] == t) own = k;
+    if (own >= 0) last = own;
     for (Id p = s.cover_head[us(t)]; p != kNoId; p = s.cover_next[us(p)]) {
       const Vec3& x = s.check_pts[us(p)];
       int k = -1;
@@ -138,19 +148,43 @@ bool new_triangles_cover(const State& s, std::span<const Id> old_ids,
       }
       if (k < 0) return false;
       last = k;
-      c.pts.push_back(p);
-      c.by.push_back(k);
+      if (k != own) {
+        c.pts.push_back(p);
+        c.by.push_back(k);
+      }
     }
+  }
+  c.run.push_back(c.pts.size());
   return true;
 }
 
-/// After an applied operation: the points of the triangles old_ids go to the new triangles that
-/// new_triangles_cover found (new_ids[k]: the id of new_t[k] in s.tri, possibly just appended).
+/// After an applied operation: the points that new_triangles_cover found leaving their triangle
+/// go to the front of their new triangle's list (new_ids[k]: the id of new_t[k] in s.tri,
+/// possibly just appended); the others stay where they are.
 void hand_over(State& s, std::span<const Id> old_ids, std::span<const Id> new_ids,
                const CoverScratch& c) {
   s.cover_head.resize(s.num_triangles(), kNoId);
-  for (Id t : old_ids) s.cover_head[us(t)] = kNoId;
-  for (std::size_t k = c.pts.size(); k-- > 0;) {  // pushed in reverse: lists keep their order
+  for (std::size_t j = 0; j < old_ids.size(); ++j) {
+    const Id t = old_ids[j];
+    const bool kept = std::find(new_ids.begin(), new_ids.end(), t) != new_ids.end();
+    if (!kept) {
+      s.cover_head[us(t)] = kNoId;
+      continue;
+    }
+    // Unlink the moved points: they are met in list order.
+    std::size_t r = c.run[j];
+    const std::size_t end = c.run[j + 1];
+    Id* link = &s.cover_head[us(t)];
+    while (r < end && *link != kNoId) {
+      if (*link == c.pts[r]) {
+        *link = s.cover_next[us(*link)];
+        ++r;
+      } else {
+        link = &s.cover_next[us(*link)];
+      }
+    }
+  }
+  for (std::size_t k = 0; k < c.pts.size(); ++k) {
     const auto t = us(new_ids[us(c.by[k])]);
     s.cover_next[us(c.pts[k])] = s.cover_head[t];
     s.cover_head[t] = c.pts[k];
@@ -353,7 +387,7 @@ std::size_t split_pass(State& s, double bad_quality) {
         new_t.push_back({c2[0], c2[1], c2[2]});
       }
       ok = ok && new_triangles_close(s, new_t, s.surf_hint[us(a)], old_t) &&
-           new_triangles_cover(s, std::span<const Id>(et, us(nt)), new_t, cover);
+           new_triangles_cover(s, std::span<const Id>(et, us(nt)), new_t, new_ids, cover);
       if (ok) break;
     }
     if (!ok) continue;
@@ -479,7 +513,7 @@ bool try_collapse(State& s, PassBalls& balls, Id v, Id w, CollapseScratch& scrat
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
   if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)], old_t) ||
-      !new_triangles_cover(s, bv, new_t, scratch.cover))
+      !new_triangles_cover(s, bv, new_t, new_ids, scratch.cover))
     return false;
   // Apply.
   s.touch(bv);
@@ -573,7 +607,7 @@ std::size_t swap_pass(State& s) {
     const Id ids[2] = {t1, t2};  // before and after: t1 becomes a d c, t2 d b c
     const std::vector<Tri3> old_t = {Tri3{pa, pb, pc}, Tri3{pb, pa, pd}};
     if (!new_triangles_close(s, new_t, s.surf_hint[us(c)], old_t) ||
-        !new_triangles_cover(s, ids, new_t, cover))
+        !new_triangles_cover(s, ids, new_t, ids, cover))
       continue;
     s.touch(ids);
     s.tri[3 * us(t1)] = a;
@@ -648,7 +682,7 @@ std::size_t smooth_pass(State& s) {
     }
     // A real gain only: marginal moves would oscillate from pass to pass, each paying the checks.
     if (!ok || !(q_new > 1.02 * q_old) || !new_triangles_close(s, new_t, p.hint, old_t) ||
-        !new_triangles_cover(s, bv, new_t, cover)) {
+        !new_triangles_cover(s, bv, new_t, bv, cover)) {
       s.smooth_failed[vi] = s.ops;
       continue;
     }
