@@ -122,29 +122,33 @@ int TriangleTree::build(int first, int count, std::vector<double>& centroid) {
   const int id = static_cast<int>(nodes_.size());
   nodes_.push_back(Node{});
   Node node{};
-  double clo[3] = {kInf, kInf, kInf}, chi[3] = {-kInf, -kInf, -kInf};
   for (int c = 0; c < 3; ++c) {
     node.lo[c] = kInf;
     node.hi[c] = -kInf;
   }
-  for (int k = first; k < first + count; ++k) {
-    const auto t = static_cast<std::size_t>(order_[static_cast<std::size_t>(k)]);
-    for (int c = 0; c < 3; ++c) {
-      for (const Vec3* q : {&tri_[t].a, &tri_[t].b, &tri_[t].c}) {
-        node.lo[c] = std::min(node.lo[c], (*q)[c]);
-        node.hi[c] = std::max(node.hi[c], (*q)[c]);
-      }
-      clo[c] = std::min(clo[c], centroid[3 * t + c]);
-      chi[c] = std::max(chi[c], centroid[3 * t + c]);
-    }
-  }
   if (count <= kLeafSize) {
+    for (int k = first; k < first + count; ++k) {
+      const auto t = static_cast<std::size_t>(order_[static_cast<std::size_t>(k)]);
+      for (int c = 0; c < 3; ++c)
+        for (const Vec3* q : {&tri_[t].a, &tri_[t].b, &tri_[t].c}) {
+          node.lo[c] = std::min(node.lo[c], (*q)[c]);
+          node.hi[c] = std::max(node.hi[c], (*q)[c]);
+        }
+    }
     node.first = first;
     node.count = count;
     nodes_[static_cast<std::size_t>(id)] = node;
     return id;
   }
   // Median split along the longest axis of the centroids' box (ties broken by id: deterministic).
+  double clo[3] = {kInf, kInf, kInf}, chi[3] = {-kInf, -kInf, -kInf};
+  for (int k = first; k < first + count; ++k) {
+    const double* x = &centroid[3 * static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])];
+    for (int c = 0; c < 3; ++c) {
+      clo[c] = std::min(clo[c], x[c]);
+      chi[c] = std::max(chi[c], x[c]);
+    }
+  }
   int axis = 0;
   for (int c = 1; c < 3; ++c)
     if (chi[c] - clo[c] > chi[axis] - clo[axis]) axis = c;
@@ -157,6 +161,13 @@ int TriangleTree::build(int first, int count, std::vector<double>& centroid) {
   });
   node.left = build(first, half, centroid);
   node.right = build(first + half, count - half, centroid);
+  // The triangles' box from the children's (the same box, each triangle read once).
+  const Node& l = nodes_[static_cast<std::size_t>(node.left)];
+  const Node& r = nodes_[static_cast<std::size_t>(node.right)];
+  for (int c = 0; c < 3; ++c) {
+    node.lo[c] = std::min(l.lo[c], r.lo[c]);
+    node.hi[c] = std::max(l.hi[c], r.hi[c]);
+  }
   nodes_[static_cast<std::size_t>(id)] = node;
   return id;
 }

@@ -27,7 +27,8 @@ bool segment_meets(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, c
   const double o1 = orient3d(p.x, q.x, a.x, b.x);
   const double o2 = orient3d(p.x, q.x, b.x, c.x);
   const double o3 = orient3d(p.x, q.x, c.x, a.x);
-  const bool some_pos = o1 > 0.0 || o2 > 0.0 || o3 > 0.0, some_neg = o1 < 0.0 || o2 < 0.0 || o3 < 0.0;
+  const bool some_pos = o1 > 0.0 || o2 > 0.0 || o3 > 0.0;
+  const bool some_neg = o1 < 0.0 || o2 < 0.0 || o3 < 0.0;
   return !(some_pos && some_neg);
 }
 

@@ -319,7 +319,7 @@ GradationReport gradate(std::span<const double> coords, std::span<const int32_t>
   const bool hv = options.mode == GradationMode::kHVariation;
   const std::span<const SymMat<D>> view(metrics.data(), metrics.size());
   GradationReport r;
-  r.measure_before = field_measure(geom, view, options.anisotropic, hv);
+  if (options.measure) r.measure_before = field_measure(geom, view, options.anisotropic, hv);
 
   Marks touched;
   touched.stamp.assign(metrics.size(), 0);
@@ -353,7 +353,7 @@ GradationReport gradate(std::span<const double> coords, std::span<const int32_t>
     }
   }
   r.modified_vertices = static_cast<std::size_t>(std::count_if(touched.stamp.begin(), touched.stamp.end(), [](int p) { return p > 0; }));
-  r.measure_after = field_measure(geom, view, options.anisotropic, hv);
+  if (options.measure) r.measure_after = field_measure(geom, view, options.anisotropic, hv);
   return r;
 }
 

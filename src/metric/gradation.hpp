@@ -33,6 +33,9 @@ struct GradationOptions {
   bool anisotropic = true;
   /// Cap on the sweeps over all edges.
   int max_passes = 200;
+  /// Fill GradationReport's measures (a sweep over the edges before and one after; off where
+  /// nobody reads them).
+  bool measure = true;
   /// Throws InputError when a value is out of range.
   void validate() const;
 };
@@ -41,7 +44,8 @@ struct GradationReport {
   int passes = 0;          ///< sweeps over the edges, including the final one that changed nothing
   bool converged = false;  ///< the last sweep changed no size (by more than 1e-9 relative)
   std::size_t modified_vertices = 0;  ///< vertices whose metric changed
-  /// Max H-variation (kHVariation) or max H-shock (other modes) over the edges, before and after.
+  /// Max H-variation (kHVariation) or max H-shock (other modes) over the edges, before and after
+  /// (0 when GradationOptions::measure is off).
   double measure_before = 0.0, measure_after = 0.0;
 };
 
