@@ -38,6 +38,7 @@ std::vector<SymMat3> vertex_metrics(const Mesh& input, const Adjacency& adj,
   if (o.hsiz > 0.0) m.hmax = m.hmax > 0.0 ? std::min(m.hmax, o.hsiz) : o.hsiz;
   if (m.hmin > 0.0 && m.hmax > 0.0 && m.hmin > m.hmax) m.hmin = m.hmax;
   m.hgrad = o.hgrad;
+  m.gradation_measures = false;  // not reported
   m.anisotropic = o.anisotropic;
   m.beta_fraction = o.beta_fraction;
   m.user_metric = &o.metric;

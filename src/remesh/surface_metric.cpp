@@ -118,7 +118,7 @@ std::vector<SymMat3> geometric_surface_metric(const Mesh& mesh, const Adjacency&
     GradationOptions g;
     g.mode = GradationMode::kHShock;
     g.threshold = options.hgrad;
-    g.measure = false;  // the surface remesher reports passes and vertices, not the measures
+    g.measure = options.gradation_measures;
     r.gradation = gradate<3>(std::span<const double>(mesh.coords),
                              std::span<const int32_t>(adj.edges), std::span<SymMat3>(m), g);
   }

@@ -31,6 +31,8 @@ struct SurfaceMetricOptions {
   bool anisotropic = false;
   double beta_fraction = 1.0;  ///< in [0, 1]: 0 isotropic, 1 the full anisotropic β (BOOK §1)
   double hgrad = 1.3;          ///< H-shock gradation threshold (> 1); <= 0: no gradation
+  /// The gradation's H-shock before and after in the report (two sweeps over the edges).
+  bool gradation_measures = true;
   /// A user (e.g. physical) metric per vertex, intersected with the geometric one before the
   /// gradation so that the result stays geometric (BOOK.md §1); null or empty: none. Not owned.
   const std::vector<SymMat3>* user_metric = nullptr;
