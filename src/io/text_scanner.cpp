@@ -7,46 +7,6 @@
 
 namespace riemesh::io_detail {
 
-void TextScanner::skip_blanks() {
-  while (pos_ < text_.size()) {
-    const char c = text_[pos_];
-    if (c == '\n') {
-      ++line_;
-      ++pos_;
-    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-      ++pos_;
-    } else if (c == '#') {
-      while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
-    } else {
-      return;
-    }
-  }
-}
-
-bool TextScanner::next(std::string_view& token) {
-  skip_blanks();
-  if (pos_ >= text_.size()) {
-    token = {};  // line() stays that of the last token: where the file was cut short
-    return false;
-  }
-  token_line_ = line_;
-  const std::size_t begin = pos_;
-  if (text_[pos_] == '"') {
-    // A quoted string runs to the closing quote, or to the end of the line if unterminated.
-    ++pos_;
-    while (pos_ < text_.size() && text_[pos_] != '"' && text_[pos_] != '\n') ++pos_;
-    if (pos_ < text_.size() && text_[pos_] == '"') ++pos_;
-  } else {
-    while (pos_ < text_.size()) {
-      const char c = text_[pos_];
-      if (c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\f' || c == '\v') break;
-      ++pos_;
-    }
-  }
-  token = text_.substr(begin, pos_ - begin);
-  return true;
-}
-
 std::string_view TextScanner::peek() {
   const Mark m = mark();
   const std::size_t saved_line = token_line_;
@@ -58,6 +18,20 @@ std::string_view TextScanner::peek() {
 }
 
 bool parse_int(std::string_view token, std::int64_t& value) {
+  // Plain digits (what mesh files hold), at most 18 of them: no overflow possible.
+  if (!token.empty() && token.size() <= 18) {
+    std::int64_t v = 0;
+    std::size_t i = 0;
+    for (; i < token.size(); ++i) {
+      const unsigned d = static_cast<unsigned>(token[i]) - '0';
+      if (d > 9) break;
+      v = 10 * v + static_cast<std::int64_t>(d);
+    }
+    if (i == token.size()) {
+      value = v;
+      return true;
+    }
+  }
   if (!token.empty() && token[0] == '+') token.remove_prefix(1);
   const char* end = token.data() + token.size();
   const auto result = std::from_chars(token.data(), end, value);

@@ -36,6 +36,46 @@ class TextScanner {
   std::size_t token_line_ = 1;
 };
 
+inline void TextScanner::skip_blanks() {
+  while (pos_ < text_.size()) {
+    const char c = text_[pos_];
+    if (c == '\n') {
+      ++line_;
+      ++pos_;
+    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+      ++pos_;
+    } else if (c == '#') {
+      while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+    } else {
+      return;
+    }
+  }
+}
+
+inline bool TextScanner::next(std::string_view& token) {
+  skip_blanks();
+  if (pos_ >= text_.size()) {
+    token = {};  // line() stays that of the last token: where the file was cut short
+    return false;
+  }
+  token_line_ = line_;
+  const std::size_t begin = pos_;
+  if (text_[pos_] == '"') {
+    // A quoted string runs to the closing quote, or to the end of the line if unterminated.
+    ++pos_;
+    while (pos_ < text_.size() && text_[pos_] != '"' && text_[pos_] != '\n') ++pos_;
+    if (pos_ < text_.size() && text_[pos_] == '"') ++pos_;
+  } else {
+    while (pos_ < text_.size()) {
+      const char c = text_[pos_];
+      if (c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\f' || c == '\v') break;
+      ++pos_;
+    }
+  }
+  token = text_.substr(begin, pos_ - begin);
+  return true;
+}
+
 /// Whole-token parses; false if the token is not entirely a number of that kind.
 bool parse_int(std::string_view token, std::int64_t& value);
 bool parse_real(std::string_view token, double& value);

@@ -104,10 +104,12 @@ VertexCurvature fit_quadric(const Vec3& p, const Vec3& n_in, const std::vector<V
     const double u = dot(d, t1), v = dot(d, t2), z = dot(d, n);
     const double phi[kUnknowns] = {u * u, u * v, v * v, u, v};
     for (int i = 0; i < kUnknowns; ++i) {
-      for (int j = 0; j < kUnknowns; ++j) a[i][j] += phi[i] * phi[j];
+      for (int j = i; j < kUnknowns; ++j) a[i][j] += phi[i] * phi[j];
       r[i] += phi[i] * z;
     }
   }
+  for (int i = 0; i < kUnknowns; ++i)  // symmetric: the same sums (a product commutes exactly)
+    for (int j = 0; j < i; ++j) a[i][j] = a[j][i];
   if (!solve_dense(a, r)) return out;
   // Back to unscaled coordinates: z = len·z'(x/len, y/len) divides the quadratic terms by len.
   const double qa = r[0] / len, qb = r[1] / len, qc = r[2] / len, qd = r[3], qe = r[4];

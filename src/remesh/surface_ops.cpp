@@ -483,13 +483,20 @@ bool try_collapse(State& s, PassBalls& balls, Id v, Id w, CollapseScratch& scrat
   // New edges not too long.
   for (Id x : nv)
     if (x != w && s.size_length(w, x) > kSqrt2) return false;
-  double qmin_old = 1.0;
-  for (Id t : bv) {
-    Vec3 c[3];
-    corners(s, t, v, s.x[us(v)], c);
-    qmin_old = std::min(qmin_old, quality(tri_metric(s, t), c[0], c[1], c[2]));
-  }
-  const double qfloor = std::min(0.3, qmin_old);
+  // A new triangle may not fall below min(0.3, the worst old one): the old ones measured only
+  // when a new one is below 0.3.
+  double qmin_old = -1.0;
+  auto worst_old = [&] {
+    if (qmin_old < 0.0) {
+      qmin_old = 1.0;
+      for (Id t : bv) {
+        Vec3 c[3];
+        corners(s, t, v, s.x[us(v)], c);
+        qmin_old = std::min(qmin_old, quality(tri_metric(s, t), c[0], c[1], c[2]));
+      }
+    }
+    return qmin_old;
+  };
   const double hausd = kCheckMargin * s.opt->hausd;
   double gap = std::numeric_limits<double>::infinity();
   std::vector<Tri3>&old_t = scratch.old_t, &new_t = scratch.new_t;
@@ -508,8 +515,9 @@ bool try_collapse(State& s, PassBalls& balls, Id v, Id w, CollapseScratch& scrat
     new_t.push_back({n[0], n[1], n[2]});
     new_ids.push_back(t);
     const Vec3 n_old = tri_normal(c[0], c[1], c[2]), n_new = tri_normal(n[0], n[1], n[2]);
-    if (dot(n_old, n_new) < kCosTurn || quality(tri_metric(s, t, v, &s.m[us(w)]), n[0], n[1], n[2]) < qfloor)
-      return false;
+    if (dot(n_old, n_new) < kCosTurn) return false;
+    const double q = quality(tri_metric(s, t, v, &s.m[us(w)]), n[0], n[1], n[2]);
+    if (q < 0.3 && q < worst_old()) return false;
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
   if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)], old_t) ||
