@@ -59,30 +59,34 @@ double to_triangle(const Vec3& p, const Vec3 (&c)[3]) {
 /// A new triangle prepared for the A -> B check: TriangleProbe's plane and edge lines with their
 /// offsets folded in (one dot product each: these tests run millions of times).
 struct CoverProbe {
-  Vec3 n{}, in[3]{};
-  double dn = 0.0, din[3]{};
+  // Rows: the plane's unit normal, then the three edges' inward unit normals (edge e runs from
+  // corner e), by component, with their offsets: one evaluation gives all four signed
+  // distances (laid out so that the compiler evaluates them two at a time).
+  alignas(16) double cx[4]{}, cy[4]{}, cz[4]{}, off[4]{};
   Tri3 t{};
   bool flat = false;
 
   explicit CoverProbe(const Tri3& tri) : t(tri) {
     const TriangleProbe tp(tri[0], tri[1], tri[2]);
     flat = tp.flat;
-    n = tp.n;
-    dn = dot(n, tri[0]);
-    for (int e = 0; e < 3; ++e) {
-      in[e] = tp.inward[e];
-      din[e] = dot(in[e], tri[e]);  // edge e runs from corner e
+    const Vec3 rows[4] = {tp.n, tp.inward[0], tp.inward[1], tp.inward[2]};
+    const Vec3* at[4] = {&tri[0], &tri[0], &tri[1], &tri[2]};
+    for (int i = 0; i < 4; ++i) {
+      cx[i] = rows[i][0];
+      cy[i] = rows[i][1];
+      cz[i] = rows[i][2];
+      off[i] = dot(rows[i], *at[i]);
     }
   }
   /// Without the exact distance: 1 within r, 0 farther, 2 unknown (in the band along an edge,
   /// or a degenerate triangle).
   int quick(const Vec3& p, double r) const {
     if (!flat) return 2;
-    if (std::abs(dot(p, n) - dn) > r) return 0;
-    const double s0 = dot(p, in[0]) - din[0], s1 = dot(p, in[1]) - din[1],
-                 s2 = dot(p, in[2]) - din[2];
-    if (s0 < -r || s1 < -r || s2 < -r) return 0;
-    return s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0 ? 1 : 2;
+    double v[4];
+    for (int i = 0; i < 4; ++i) v[i] = cx[i] * p[0] + cy[i] * p[1] + cz[i] * p[2] - off[i];
+    if (std::abs(v[0]) > r) return 0;
+    if (v[1] < -r || v[2] < -r || v[3] < -r) return 0;
+    return v[1] >= 0.0 && v[2] >= 0.0 && v[3] >= 0.0 ? 1 : 2;
   }
   bool exact(const Vec3& p, double r2) const {
     const Vec3 d = p - closest_point_on_triangle(p, t[0], t[1], t[2]);
