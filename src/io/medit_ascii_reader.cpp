@@ -14,6 +14,8 @@ std::string_view AsciiMeditReader::token(std::string_view keyword, const char* e
 }
 
 std::int64_t AsciiMeditReader::integer(std::string_view keyword) {
+  std::int64_t fast = 0;
+  if (in_.next_int(fast)) return fast;
   const std::string_view t = token(keyword, "an integer");
   std::int64_t value = 0;
   if (!io_detail::parse_int(t, value)) fail_here(keyword, "expected an integer, found " + quote(t));
@@ -36,6 +38,12 @@ std::int32_t AsciiMeditReader::ref(std::string_view keyword) {
 }
 
 double AsciiMeditReader::real(std::string_view keyword) {
+  const io_detail::TextScanner::Mark before = in_.mark();
+  double fast = 0;
+  if (in_.next_real(fast)) {
+    if (std::isfinite(fast)) return fast;
+    in_.reset(before);  // the message below quotes the token
+  }
   const std::string_view t = token(keyword, "a real number");
   double value = 0;
   if (!io_detail::parse_real(t, value))

@@ -2,6 +2,7 @@
 // Tokenizer for the Medit ASCII formats (.mesh, .sol): whitespace-separated tokens, '#' comments
 // to the end of the line, "quoted strings" (FreeFem's Identifier/Geometry) as single tokens.
 // Keeps the line number of each token for error messages.
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -20,6 +21,12 @@ class TextScanner {
   std::size_t line() const { return token_line_; }
   /// Bytes not yet scanned.
   std::size_t remaining() const { return text_.size() - pos_; }
+
+  /// The next token when it is a plain number (what from_chars reads, up to a blank or the
+  /// end): consumed and true. Otherwise false with nothing consumed but blanks and comments, so
+  /// that next() then gives the token (signs, 'D' exponents, out-of-range values, errors).
+  bool next_real(double& value);
+  bool next_int(std::int64_t& value);
 
   struct Mark {
     std::size_t pos, line;
@@ -73,6 +80,38 @@ inline bool TextScanner::next(std::string_view& token) {
     }
   }
   token = text_.substr(begin, pos_ - begin);
+  return true;
+}
+
+namespace scanner_detail {
+inline bool is_blank(char c) {
+  return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+}  // namespace scanner_detail
+
+inline bool TextScanner::next_real(double& value) {
+  skip_blanks();
+  const char* b = text_.data() + pos_;
+  const char* e = text_.data() + text_.size();
+  if (b == e) return false;
+  const auto r = std::from_chars(b, e, value);
+  if (r.ec != std::errc() || r.ptr == b || (r.ptr != e && !scanner_detail::is_blank(*r.ptr)))
+    return false;
+  token_line_ = line_;
+  pos_ += static_cast<std::size_t>(r.ptr - b);
+  return true;
+}
+
+inline bool TextScanner::next_int(std::int64_t& value) {
+  skip_blanks();
+  const char* b = text_.data() + pos_;
+  const char* e = text_.data() + text_.size();
+  if (b == e) return false;
+  const auto r = std::from_chars(b, e, value);
+  if (r.ec != std::errc() || r.ptr == b || (r.ptr != e && !scanner_detail::is_blank(*r.ptr)))
+    return false;
+  token_line_ = line_;
+  pos_ += static_cast<std::size_t>(r.ptr - b);
   return true;
 }
 

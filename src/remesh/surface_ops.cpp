@@ -771,15 +771,26 @@ void State::compact() {
 }
 
 void State::init_cover(const SurfaceProjection& projection) {
+  std::vector<Vec3> pts;
   std::vector<Id> owner;
-  projection.check_points_by_triangle(check_pts, &owner);
+  projection.check_points_by_triangle(pts, &owner);
+  // Numbered triangle by triangle (each list in the lattice's order): a list is one run of
+  // memory, and the runs stay together as the lists merge.
+  std::vector<Id> start(num_triangles() + 1, 0);
+  for (Id t : owner) ++start[us(t) + 1];
+  for (std::size_t t = 0; t < num_triangles(); ++t) start[t + 1] += start[t];
+  check_pts.resize(pts.size());
   cover_head.assign(num_triangles(), kNoId);
-  cover_next.assign(check_pts.size(), kNoId);
-  for (std::size_t p = check_pts.size(); p-- > 0;) {  // lists in increasing point order
+  cover_next.assign(pts.size(), kNoId);
+  std::vector<Id> fill(start.begin(), start.end() - 1);
+  for (std::size_t p = 0; p < pts.size(); ++p) {
     const auto t = us(owner[p]);
-    cover_next[p] = cover_head[t];
-    cover_head[t] = static_cast<Id>(p);
+    const Id id = fill[t]++;
+    check_pts[us(id)] = pts[p];
+    if (id > start[t]) cover_next[us(id - 1)] = id;
   }
+  for (std::size_t t = 0; t < num_triangles(); ++t)
+    if (start[t + 1] > start[t]) cover_head[t] = start[t];
 }
 
 }  // namespace riemesh::surface_detail
