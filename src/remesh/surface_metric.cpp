@@ -119,6 +119,9 @@ std::vector<SymMat3> geometric_surface_metric(const Mesh& mesh, const Adjacency&
     g.mode = GradationMode::kHShock;
     g.threshold = options.hgrad;
     g.measure = options.gradation_measures;
+    // An isotropic field (no user tensor) stays isotropic through the H-shock gradation: its
+    // scalar form (one size per vertex, no eigen-decompositions) gives the same sizes.
+    g.anisotropic = options.anisotropic || (options.user_metric && !options.user_metric->empty());
     r.gradation = gradate<3>(std::span<const double>(mesh.coords),
                              std::span<const int32_t>(adj.edges), std::span<SymMat3>(m), g);
   }
