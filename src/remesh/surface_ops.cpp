@@ -460,9 +460,11 @@ class PassBalls {
 
 /// Scratch vectors of try_collapse, reused from edge to edge (thousands of tries per pass).
 struct CollapseScratch {
-  std::vector<Id> bv, bw, nv, nw, common, new_ids;
+  std::vector<Id> bv, bw, nv, new_ids;
   std::vector<Tri3> old_t, new_t;
   CoverScratch cover;
+  std::vector<std::uint32_t> mark;  // per vertex: the stamp of the last ball that met it
+  std::uint32_t stamp = 0;
 };
 
 /// Tries to collapse v into w (see surface_adapt.hpp); applies it and returns true when allowed.
@@ -477,13 +479,29 @@ bool try_collapse(State& s, PassBalls& balls, Id v, Id w, CollapseScratch& scrat
     nt += s.tri[3 * us(t)] == w || s.tri[3 * us(t) + 1] == w || s.tri[3 * us(t) + 2] == w;
   if (nt < 1 || nt > 2 || (nt == 1 && !feat)) return false;
   balls.ball_of(s, w, bw);
-  // Link condition: the common neighbours of v and w are the apexes of the edge's triangles.
-  std::vector<Id>&nv = scratch.nv, &nw = scratch.nw, &common = scratch.common;
-  neighbours(s, bv, v, nv);
-  neighbours(s, bw, w, nw);
-  common.clear();
-  std::set_intersection(nv.begin(), nv.end(), nw.begin(), nw.end(), std::back_inserter(common));
-  if (static_cast<int>(common.size()) != nt) return false;
+  // Link condition: the common neighbours of v and w are the apexes of the edge's triangles
+  // (v's neighbours stamped, w's counted among them).
+  std::vector<Id>& nv = scratch.nv;
+  std::vector<std::uint32_t>& mark = scratch.mark;
+  const std::uint32_t sv = ++scratch.stamp, sw = ++scratch.stamp;
+  nv.clear();
+  for (Id t : bv)
+    for (int i = 0; i < 3; ++i) {
+      const Id x = s.tri[3 * us(t) + i];
+      if (x != v && mark[us(x)] != sv) {
+        mark[us(x)] = sv;
+        nv.push_back(x);
+      }
+    }
+  int common = 0;
+  for (Id t : bw)
+    for (int i = 0; i < 3; ++i) {
+      const Id x = s.tri[3 * us(t) + i];
+      if (x == w || mark[us(x)] == sw) continue;
+      common += mark[us(x)] == sv;
+      mark[us(x)] = sw;
+    }
+  if (common != nt) return false;
   // New edges not too long.
   for (Id x : nv)
     if (x != w && s.size_length(w, x) > kSqrt2) return false;
@@ -567,6 +585,7 @@ std::size_t collapse_pass(State& s) {
   PassBalls balls(s, topo);
   std::size_t count = 0;
   CollapseScratch scratch;
+  scratch.mark.assign(s.num_vertices(), 0);
   for (const auto& [l, e] : cand) {
     const Id a = topo.adj.edges[2 * us(e)], b = topo.adj.edges[2 * us(e) + 1];
     if (try_collapse(s, balls, a, b, scratch) || try_collapse(s, balls, b, a, scratch)) ++count;
