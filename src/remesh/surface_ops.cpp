@@ -60,9 +60,11 @@ double to_triangle(const Vec3& p, const Vec3 (&c)[3]) {
 /// offsets folded in (one dot product each: these tests run millions of times).
 struct CoverProbe {
   // Rows: the plane's unit normal, then the three edges' inward unit normals (edge e runs from
-  // corner e), by component, with their offsets: one evaluation gives all four signed
-  // distances (laid out so that the compiler evaluates them two at a time).
-  alignas(16) double cx[4]{}, cy[4]{}, cz[4]{}, off[4]{};
+  // corner e), by component in pairs (rows 0-1, rows 2-3), with their offsets: the four signed
+  // distances in two-lane vector arithmetic (the same operations, in the same order, as
+  // dot(row, p) - offset).
+  using V2 = double __attribute__((vector_size(16)));
+  V2 x01{}, x23{}, y01{}, y23{}, z01{}, z23{}, off01{}, off23{};
   Tri3 t{};
   bool flat = false;
 
@@ -71,22 +73,23 @@ struct CoverProbe {
     flat = tp.flat;
     const Vec3 rows[4] = {tp.n, tp.inward[0], tp.inward[1], tp.inward[2]};
     const Vec3* at[4] = {&tri[0], &tri[0], &tri[1], &tri[2]};
-    for (int i = 0; i < 4; ++i) {
-      cx[i] = rows[i][0];
-      cy[i] = rows[i][1];
-      cz[i] = rows[i][2];
-      off[i] = dot(rows[i], *at[i]);
-    }
+    double off[4];
+    for (int i = 0; i < 4; ++i) off[i] = dot(rows[i], *at[i]);
+    x01 = V2{rows[0][0], rows[1][0]}, x23 = V2{rows[2][0], rows[3][0]};
+    y01 = V2{rows[0][1], rows[1][1]}, y23 = V2{rows[2][1], rows[3][1]};
+    z01 = V2{rows[0][2], rows[1][2]}, z23 = V2{rows[2][2], rows[3][2]};
+    off01 = V2{off[0], off[1]}, off23 = V2{off[2], off[3]};
   }
   /// Without the exact distance: 1 within r, 0 farther, 2 unknown (in the band along an edge,
   /// or a degenerate triangle).
   int quick(const Vec3& p, double r) const {
     if (!flat) return 2;
-    double v[4];
-    for (int i = 0; i < 4; ++i) v[i] = cx[i] * p[0] + cy[i] * p[1] + cz[i] * p[2] - off[i];
-    if (std::abs(v[0]) > r) return 0;
-    if (v[1] < -r || v[2] < -r || v[3] < -r) return 0;
-    return v[1] >= 0.0 && v[2] >= 0.0 && v[3] >= 0.0 ? 1 : 2;
+    const V2 px{p[0], p[0]}, py{p[1], p[1]}, pz{p[2], p[2]};
+    const V2 v01 = x01 * px + y01 * py + z01 * pz - off01;
+    const V2 v23 = x23 * px + y23 * py + z23 * pz - off23;
+    if (std::abs(v01[0]) > r) return 0;
+    if (v01[1] < -r || v23[0] < -r || v23[1] < -r) return 0;
+    return v01[1] >= 0.0 && v23[0] >= 0.0 && v23[1] >= 0.0 ? 1 : 2;
   }
   bool exact(const Vec3& p, double r2) const {
     const Vec3 d = p - closest_point_on_triangle(p, t[0], t[1], t[2]);
