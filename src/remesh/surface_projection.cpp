@@ -181,15 +181,31 @@ bool SurfaceProjection::within(const Vec3& p, double r, Id* hint) const {
   for (int step = 0; step < kMaxSteps && t != kNoId && static_cast<std::size_t>(t) < tri_tree_.num_triangles();
        ++step) {
     const TriangleProbe& tp = tri_tree_.probe(t);
-    if (tp.within(p, r, r2)) {
-      *hint = t;
-      return true;
+    if (!tp.flat) {
+      if (tp.within(p, r, r2)) {
+        *hint = t;
+        return true;
+      }
+      break;
     }
-    if (!tp.flat) break;
+    // TriangleProbe::within, with the edge distances kept for the step.
+    const Vec3 pa = p - tp.a;
+    const bool near_plane = std::abs(dot(pa, tp.n)) <= r;
+    const double s[3] = {dot(pa, tp.inward[0]), dot(p - tp.b, tp.inward[1]),
+                         dot(p - tp.c, tp.inward[2])};
+    if (near_plane && s[0] >= -r && s[1] >= -r && s[2] >= -r) {
+      bool in = s[0] >= 0.0 && s[1] >= 0.0 && s[2] >= 0.0;
+      if (!in) {
+        const Vec3 d = p - closest_point_on_triangle(p, tp.a, tp.b, tp.c);
+        in = dot(d, d) <= r2;
+      }
+      if (in) {
+        *hint = t;
+        return true;
+      }
+    }
     // Across the edge whose line p is farthest outside of: edges ab, bc, ca are the faces
     // opposite c, a, b (adjacency.hpp numbering).
-    const double s[3] = {dot(p - tp.a, tp.inward[0]), dot(p - tp.b, tp.inward[1]),
-                         dot(p - tp.c, tp.inward[2])};
     int e = 0;
     for (int k = 1; k < 3; ++k)
       if (s[k] < s[e]) e = k;
