@@ -261,6 +261,23 @@ TEST(SurfaceAdapt, RealSurfacesKeepTopologyAndDoNotSelfIntersect) {
   }
 }
 
+TEST(SurfaceAdapt, RotorRefinedAtTheFineSettingDoesNotSelfIntersect) {
+  // PEERS.md's second setting (0.05%) on the coarse rotor (1,200 triangles -> ~10 k), isotropic
+  // and anisotropic: many nearly coplanar neighbours, where a floating-point intersection test
+  // reported 8 and 7 crossing pairs that exact arithmetic refutes (test_self_intersection.cpp).
+  const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/surf/rotor.mesh");
+  for (const bool aniso : {false, true}) {
+    SurfaceAdaptOptions o;
+    o.hausd = 0.0005 * bounding_box_diagonal(in);
+    o.anisotropic = aniso;
+    const Outcome r = run(in, o);
+    EXPECT_TRUE(check_mesh(r.out).valid()) << aniso;
+    EXPECT_EQ(euler(r.out), euler(in)) << aniso;
+    EXPECT_EQ(find_self_intersections(r.out).pairs, 0u) << aniso;
+    EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12) << aniso;
+  }
+}
+
 TEST(SurfaceAdapt, Deterministic) {
   const Mesh in = param_grid(saddle_param(), 24, 24, -1, 1, -1, 1, false, false);
   SurfaceAdaptOptions o;
