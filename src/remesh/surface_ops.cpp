@@ -440,9 +440,13 @@ namespace {
 /// the triangles of v). Collapses can thus follow one another in a pass without a rebuild.
 class PassBalls {
  public:
-  PassBalls(const State& s, const Topology& t) : topo_(&t), gained_(s.num_vertices()) {}
+  PassBalls(const State& s, const Topology& t)
+      : topo_(&t), gained_(s.num_vertices()), dead_(s.num_vertices(), 0) {}
   /// Triangle t took vertex v in this pass.
   void gain(Id v, Id t) { gained_[us(v)].push_back(t); }
+  /// Vertex v was collapsed away: no triangle holds it any more.
+  void kill(Id v) { dead_[us(v)] = 1; }
+  bool dead(Id v) const { return dead_[us(v)] != 0; }
   /// The triangles holding v now, into out.
   void ball_of(const State& s, Id v, std::vector<Id>& out) const {
     out.clear();
@@ -459,6 +463,7 @@ class PassBalls {
  private:
   const Topology* topo_;
   std::vector<std::vector<Id>> gained_;
+  std::vector<char> dead_;
 };
 
 /// Scratch vectors of try_collapse, reused from edge to edge (thousands of tries per pass).
@@ -472,6 +477,7 @@ struct CollapseScratch {
 
 /// Tries to collapse v into w (see surface_adapt.hpp); applies it and returns true when allowed.
 bool try_collapse(State& s, PassBalls& balls, Id v, Id w, CollapseScratch& scratch) {
+  if (balls.dead(v) || balls.dead(w)) return false;  // the edge went with an earlier collapse
   if (s.tag[us(v)] & (kTagCorner | kTagRequired)) return false;
   const bool feat = s.is_feature(v, w);
   if ((s.tag[us(v)] & kTagRidge) && !feat) return false;
@@ -572,6 +578,7 @@ bool try_collapse(State& s, PassBalls& balls, Id v, Id w, CollapseScratch& scrat
   }
   hand_over(s, bv, new_ids, scratch.cover);
   for (Id t : new_ids) balls.gain(w, t);
+  balls.kill(v);
   return true;
 }
 
