@@ -77,7 +77,13 @@ void SurfaceProjection::check_points_by_triangle(std::vector<Vec3>& pts,
   // Owner: an input triangle the point lies on (a vertex's first, an edge's first by id).
   constexpr int n = 4;
   pts.clear();
-  if (owner) owner->clear();
+  const std::size_t count = mesh_.num_vertices() + (n - 1) * adj_.num_edges() +
+                            (n - 1) * (n - 2) / 2 * mesh_.num_triangles();
+  pts.reserve(count);
+  if (owner) {
+    owner->clear();
+    owner->reserve(count);
+  }
   for (std::size_t v = 0; v < mesh_.num_vertices(); ++v) {
     const auto b = ball(adj_, static_cast<Id>(v));
     if (b.empty()) continue;
