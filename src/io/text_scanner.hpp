@@ -25,8 +25,8 @@ class TextScanner {
   /// The next token when it is a plain number (what from_chars reads, up to a blank or the
   /// end): consumed and true. Otherwise false with nothing consumed but blanks and comments, so
   /// that next() then gives the token (signs, 'D' exponents, out-of-range values, errors).
-  bool next_real(double& value);
-  bool next_int(std::int64_t& value);
+  bool next_real(double& value) { return next_plain(value); }
+  bool next_int(std::int64_t& value) { return next_plain(value); }
 
   struct Mark {
     std::size_t pos, line;
@@ -36,6 +36,8 @@ class TextScanner {
 
  private:
   void skip_blanks();
+  template <class T>
+  bool next_plain(T& value);
 
   std::string_view text_;
   std::size_t pos_ = 0;
@@ -89,20 +91,8 @@ inline bool is_blank(char c) {
 }
 }  // namespace scanner_detail
 
-inline bool TextScanner::next_real(double& value) {
-  skip_blanks();
-  const char* b = text_.data() + pos_;
-  const char* e = text_.data() + text_.size();
-  if (b == e) return false;
-  const auto r = std::from_chars(b, e, value);
-  if (r.ec != std::errc() || r.ptr == b || (r.ptr != e && !scanner_detail::is_blank(*r.ptr)))
-    return false;
-  token_line_ = line_;
-  pos_ += static_cast<std::size_t>(r.ptr - b);
-  return true;
-}
-
-inline bool TextScanner::next_int(std::int64_t& value) {
+template <class T>
+inline bool TextScanner::next_plain(T& value) {
   skip_blanks();
   const char* b = text_.data() + pos_;
   const char* e = text_.data() + text_.size();
