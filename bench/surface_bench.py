@@ -8,6 +8,13 @@ quality (4√3 A / Σ l²), the validity (`riemesh check`), the wall time and th
 
 usage: bench/surface_bench.py [--riemesh build/riemesh] [--data ../shared/data/surf]
                               [--hausd 0.002,0.0005] [--runs 3] [--json OUT.json] [--aniso]
+                              [--reference OTHER_BINARY] [--surfaces fandisk,...]
+
+--reference runs another build of riemesh on the same command, alternating with --riemesh run by
+run, and prints the wall time ratio: on a shared machine whose speed drifts from minute to minute
+the ratio is steadier than either time (the wall times of the two are medians of the same
+minutes). The wall and CPU times are those of the whole command, file reading and writing
+included, as mmgs's in PEERS.md.
 """
 import argparse, json, math, os, statistics, subprocess, sys, tempfile, time
 
@@ -63,20 +70,28 @@ def main():
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--json")
     ap.add_argument("--aniso", action="store_true", help="anisotropic geometric metric")
+    ap.add_argument("--reference", help="another riemesh binary, timed alternately on each case")
+    ap.add_argument("--surfaces", default="bunny,elephant,fandisk,rotor")
     a = ap.parse_args()
     rows = []
     tmp = tempfile.mkdtemp()
+    ref_head = "| reference wall s | ratio " if a.reference else ""
     print("| surface | hausd | input tris | output tris | measured / hausd | q min | q mean | valid | wall s | cpu s "
-          "| mmgs tris | mmgs measured/hausd | mmgs q min | mmgs wall s |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-    for name in ["bunny", "elephant", "fandisk", "rotor"]:
+          + ref_head + "| mmgs tris | mmgs measured/hausd | mmgs q min | mmgs wall s |")
+    print("|" + "---|" * (14 + (2 if a.reference else 0)))
+    for name in a.surfaces.split(","):
         src = os.path.join(a.data, name + ".mesh")
         diag = bbox_diagonal(src)
         for frac in [float(x) for x in a.hausd.split(",")]:
             hausd = frac * diag
             out = os.path.join(tmp, "%s_%g.mesh" % (name, frac))
-            times, cpus = [], []
+            times, cpus, ref_times = [], [], []
             for _ in range(a.runs):
+                if a.reference:
+                    t0 = time.perf_counter()
+                    subprocess.run([a.reference, "adapt", src, "-o", out + ".ref.mesh", "--hausd", repr(hausd),
+                                    "--quiet"] + (["--aniso"] if a.aniso else []), check=True)
+                    ref_times.append(time.perf_counter() - t0)
                 t0 = time.perf_counter()
                 c0 = os.times()
                 subprocess.run([a.riemesh, "adapt", src, "-o", out, "--hausd", repr(hausd), "--quiet"]
@@ -93,12 +108,16 @@ def main():
             row = dict(surface=name, hausd_fraction=frac, hausd=hausd, input_tris=tin, output_tris=ntri,
                        hausdorff=d["hausdorff"], ratio=d["hausdorff"] / hausd, q_min=qmin, q_mean=qmean,
                        valid=valid, wall_s=statistics.median(times), cpu_s=statistics.median(cpus))
+            ref = ""
+            if a.reference:
+                row["reference_wall_s"] = statistics.median(ref_times)
+                ref = "| %.3f | %.2f " % (row["reference_wall_s"], row["reference_wall_s"] / row["wall_s"])
             rows.append(row)
             mm = MMGS.get((name, frac))
             mms = "| %d | %.3f | %.3f | %.2f |" % (mm[0], mm[1], mm[2], mm[4]) if mm else "| | | | |"
-            print("| %s | %g%% | %d | %d | %.3f | %.3f | %.3f | %s | %.2f | %.2f %s" % (
+            print("| %s | %g%% | %d | %d | %.3f | %.3f | %.3f | %s | %.3f | %.3f %s%s" % (
                 name, 100 * frac, tin, ntri, row["ratio"], qmin, qmean, "yes" if valid else "NO",
-                row["wall_s"], row["cpu_s"], mms))
+                row["wall_s"], row["cpu_s"], ref, mms))
             sys.stdout.flush()
     if a.json:
         with open(a.json, "w") as f:
