@@ -26,12 +26,20 @@ void tune_memory() {
   // thousands of 4 KiB ones, each of which costs microseconds on a virtual machine. Freed, the
   // block stays in the heap (below the trim threshold).
   mallopt(M_MMAP_THRESHOLD, static_cast<int>(32 * kMiB));
-  const auto before = reinterpret_cast<std::uintptr_t>(sbrk(0));
+  void* const no_break = reinterpret_cast<void*>(-1);  // sbrk's failure
+  void* const start = sbrk(0);
   void* block = std::malloc(30 * kMiB);
   if (block) static_cast<void>(*static_cast<volatile char*>(block));  // not elided: used
-  const auto after = reinterpret_cast<std::uintptr_t>(sbrk(0));
-  const std::uintptr_t lo = (before + kHuge - 1) & ~(kHuge - 1), hi = after & ~(kHuge - 1);
-  if (block && hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+  void* const end = sbrk(0);
+  const auto before = reinterpret_cast<std::uintptr_t>(start);
+  const auto after = reinterpret_cast<std::uintptr_t>(end);
+  const auto at = reinterpret_cast<std::uintptr_t>(block);
+  // Only when the block came from the heap's growth (not from a mapping of its own).
+  if (block && start != no_break && end != no_break && at >= before - kMiB && at < after &&
+      after - before >= 2 * kHuge) {
+    const std::uintptr_t lo = (before + kHuge - 1) & ~(kHuge - 1), hi = after & ~(kHuge - 1);
+    if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+  }
   std::free(block);
   // Blocks above 4 MiB (a large mesh's arrays) mapped on their own and returned to the system
   // when freed. Peak RSS of the 1 M-triangle uniform refinement of the square 159 -> 146 MB.
