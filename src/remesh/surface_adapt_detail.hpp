@@ -1,5 +1,6 @@
 #pragma once
-// Internal state of the surface remesher (surface_adapt.cpp drives, surface_ops.cpp operates).
+// Internal state of the surface remesher (surface_adapt.cpp drives, surface_ops.cpp operates,
+// surface_cover.cpp keeps the input's check points covered).
 #include <cmath>
 #include <cstdint>
 #include <span>

@@ -8,6 +8,7 @@
 
 #include "mesh/distance.hpp"
 #include "remesh/surface_adapt_detail.hpp"
+#include "remesh/surface_cover.hpp"
 #include "remesh/surface_hausdorff.hpp"
 
 namespace riemesh::surface_detail {
@@ -15,9 +16,6 @@ namespace {
 
 constexpr double kSqrt2 = 1.4142135623730951;
 constexpr double kCosTurn = 0.8660254037844387;  // cos 30°: largest turn of a triangle's normal
-/// The Hausdorff checks bound the distance by this fraction of hausd at the lattice points
-/// (margin for rounding and for users who sample more densely).
-constexpr double kCheckMargin = 0.95;
 /// Smoothing leaves a vertex alone when the worst triangle of its ball is at least this good.
 constexpr double kSmoothEnough = 0.9;
 
@@ -54,148 +52,6 @@ void corners(const State& s, Id t, Id from, const Vec3& p, Vec3 (&c)[3]) {
 /// Distance from p to triangle abc.
 double to_triangle(const Vec3& p, const Vec3 (&c)[3]) {
   return norm(p - closest_point_on_triangle(p, c[0], c[1], c[2]));
-}
-
-/// A new triangle prepared for the A -> B check: TriangleProbe's plane and edge lines with their
-/// offsets folded in (one dot product each: these tests run millions of times).
-struct CoverProbe {
-  // Rows: the plane's unit normal, then the three edges' inward unit normals (edge e runs from
-  // corner e), by component in pairs (rows 0-1, rows 2-3), with their offsets: the four signed
-  // distances in two-lane vector arithmetic (the same operations, in the same order, as
-  // dot(row, p) - offset).
-  using V2 = double __attribute__((vector_size(16)));
-  V2 x01{}, x23{}, y01{}, y23{}, z01{}, z23{}, off01{}, off23{};
-  Tri3 t{};
-  bool flat = false;
-
-  explicit CoverProbe(const Tri3& tri) : t(tri) {
-    const TriangleProbe tp(tri[0], tri[1], tri[2]);
-    flat = tp.flat;
-    const Vec3 rows[4] = {tp.n, tp.inward[0], tp.inward[1], tp.inward[2]};
-    const Vec3* at[4] = {&tri[0], &tri[0], &tri[1], &tri[2]};
-    double off[4];
-    for (int i = 0; i < 4; ++i) off[i] = dot(rows[i], *at[i]);
-    x01 = V2{rows[0][0], rows[1][0]}, x23 = V2{rows[2][0], rows[3][0]};
-    y01 = V2{rows[0][1], rows[1][1]}, y23 = V2{rows[2][1], rows[3][1]};
-    z01 = V2{rows[0][2], rows[1][2]}, z23 = V2{rows[2][2], rows[3][2]};
-    off01 = V2{off[0], off[1]}, off23 = V2{off[2], off[3]};
-  }
-  /// Without the exact distance: 1 within r, 0 farther, 2 unknown (in the band along an edge,
-  /// or a degenerate triangle).
-  int quick(const Vec3& p, double r) const {
-    if (!flat) return 2;
-    const V2 px{p[0], p[0]}, py{p[1], p[1]}, pz{p[2], p[2]};
-    const V2 v01 = x01 * px + y01 * py + z01 * pz - off01;
-    const V2 v23 = x23 * px + y23 * py + z23 * pz - off23;
-    if (std::abs(v01[0]) > r) return 0;
-    if (v01[1] < -r || v23[0] < -r || v23[1] < -r) return 0;
-    return v01[1] >= 0.0 && v23[0] >= 0.0 && v23[1] >= 0.0 ? 1 : 2;
-  }
-  bool exact(const Vec3& p, double r2) const {
-    const Vec3 d = p - closest_point_on_triangle(p, t[0], t[1], t[2]);
-    return dot(d, d) <= r2;
-  }
-};
-
-/// Scratch of the A -> B check: the check points that leave their triangle and the new triangle
-/// (index in new_t) that takes each, in the order met; run[j] is where old triangle j's begin.
-struct CoverScratch {
-  std::vector<CoverProbe> probe;
-  std::vector<Id> pts;
-  std::vector<int> by;
-  std::vector<std::size_t> run;
-};
-
-/// The A -> B check (State::check_pts): every check point that the triangles `old_ids` answer
-/// for is within kCheckMargin × hausd of a triangle of new_t, new_ids[k] being the id new_t[k]
-/// takes once applied. A point is tried first against its own triangle's successor (the new
-/// triangle with its id: it usually still answers, and the point then stays in its list), then
-/// against the one that answered last. The points that move are kept in c for hand_over. A
-/// point the old triangles were close to but do not answer for has another triangle,
-/// unchanged, close to it: it is not tested.
-bool new_triangles_cover(const State& s, std::span<const Id> old_ids,
-                         const std::vector<Tri3>& new_t, std::span<const Id> new_ids,
-                         CoverScratch& c) {
-  const double h = kCheckMargin * s.opt->hausd, h2 = h * h;
-  c.pts.clear();
-  c.by.clear();
-  c.run.clear();
-  c.probe.clear();
-  for (const Tri3& t : new_t) c.probe.emplace_back(t);
-  const int nn = static_cast<int>(new_t.size());
-  int last = 0;
-  for (Id t : old_ids) {
-    c.run.push_back(c.pts.size());
-    int own = -1;  // the new triangle that keeps t's id
-    for (int k = 0; k < nn; ++k)
-      if (new_ids[us(k)] == t) own = k;
-    if (own >= 0) last = own;
-    for (Id p = s.cover_head[us(t)]; p != kNoId; p = s.cover_next[us(p)]) {
-      const Vec3& x = s.check_pts[us(p)];
-      int k = -1;
-      if (nn > 0) {
-        // Cheap answers first (inside a triangle's prism near its plane), the exact distance of
-        // the edge bands only when no triangle says yes cheaply.
-        int maybe = 0;
-        const int a = c.probe[us(last)].quick(x, h);
-        if (a == 1) k = last;
-        maybe |= a == 2;
-        for (int j = 0; k < 0 && j < nn; ++j) {
-          if (j == last) continue;
-          const int b = c.probe[us(j)].quick(x, h);
-          if (b == 1) k = j;
-          maybe |= b == 2;
-        }
-        if (k < 0 && maybe) {
-          for (int j = 0; k < 0 && j < nn; ++j) {
-            const int jj = j == 0 ? last : (j == last ? 0 : j);
-            if (c.probe[us(jj)].exact(x, h2)) k = jj;
-          }
-        }
-      }
-      if (k < 0) return false;
-      last = k;
-      if (k != own) {
-        c.pts.push_back(p);
-        c.by.push_back(k);
-      }
-    }
-  }
-  c.run.push_back(c.pts.size());
-  return true;
-}
-
-/// After an applied operation: the points that new_triangles_cover found leaving their triangle
-/// go to the front of their new triangle's list (new_ids[k]: the id of new_t[k] in s.tri,
-/// possibly just appended); the others stay where they are.
-void hand_over(State& s, std::span<const Id> old_ids, std::span<const Id> new_ids,
-               const CoverScratch& c) {
-  s.cover_head.resize(s.num_triangles(), kNoId);
-  for (std::size_t j = 0; j < old_ids.size(); ++j) {
-    const Id t = old_ids[j];
-    const bool kept = std::find(new_ids.begin(), new_ids.end(), t) != new_ids.end();
-    if (!kept) {
-      s.cover_head[us(t)] = kNoId;
-      continue;
-    }
-    // Unlink the moved points: they are met in list order.
-    std::size_t r = c.run[j];
-    const std::size_t end = c.run[j + 1];
-    Id* link = &s.cover_head[us(t)];
-    while (r < end && *link != kNoId) {
-      if (*link == c.pts[r]) {
-        *link = s.cover_next[us(*link)];
-        ++r;
-      } else {
-        link = &s.cover_next[us(*link)];
-      }
-    }
-  }
-  for (std::size_t k = 0; k < c.pts.size(); ++k) {
-    const auto t = us(new_ids[us(c.by[k])]);
-    s.cover_next[us(c.pts[k])] = s.cover_head[t];
-    s.cover_head[t] = c.pts[k];
-  }
 }
 
 /// The B -> A check of surface_hausdorff.hpp at kCheckMargin × hausd. The lattice points of every
@@ -797,29 +653,6 @@ void State::compact() {
   if (!cover_head.empty()) cover_head.swap(h2);
   feature.swap(f2);
   feature_tag.swap(ft2);
-}
-
-void State::init_cover(const SurfaceProjection& projection) {
-  std::vector<Vec3> pts;
-  std::vector<Id> owner;
-  projection.check_points_by_triangle(pts, &owner);
-  // Numbered triangle by triangle (each list in the lattice's order): a list is one run of
-  // memory, and the runs stay together as the lists merge.
-  std::vector<Id> start(num_triangles() + 1, 0);
-  for (Id t : owner) ++start[us(t) + 1];
-  for (std::size_t t = 0; t < num_triangles(); ++t) start[t + 1] += start[t];
-  check_pts.resize(pts.size());
-  cover_head.assign(num_triangles(), kNoId);
-  cover_next.assign(pts.size(), kNoId);
-  std::vector<Id> fill(start.begin(), start.end() - 1);
-  for (std::size_t p = 0; p < pts.size(); ++p) {
-    const auto t = us(owner[p]);
-    const Id id = fill[t]++;
-    check_pts[us(id)] = pts[p];
-    if (id > start[t]) cover_next[us(id - 1)] = id;
-  }
-  for (std::size_t t = 0; t < num_triangles(); ++t)
-    if (start[t + 1] > start[t]) cover_head[t] = start[t];
 }
 
 }  // namespace riemesh::surface_detail
