@@ -25,6 +25,20 @@ TetMesh cube_tet_mesh(int n) {
   return build_tet_mesh(cube, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()));
 }
 
+/// Splits each edge (a, b) still in m at its midpoint (identity metric); the count applied.
+int split_at_midpoints(TetMesh& m, const std::vector<std::pair<Id, Id>>& edges) {
+  int splits = 0;
+  for (const auto& [a, b] : edges) {
+    if (find_edge_tet(m, a, b) == kNoId) continue;
+    NewVertex3 nv;
+    nv.p = 0.5 * (m.xyz[a] + m.xyz[b]);
+    nv.metric = SymMat3::identity();
+    Id x = kNoId;
+    splits += split_edge(m, a, b, nv, 0.0, &x) == Outcome::kApplied;
+  }
+  return splits;
+}
+
 }  // namespace
 
 TEST(TetMesh, RoundTripsTheUnitCube) {
@@ -71,16 +85,7 @@ TEST(TetMesh, KeepsMoreDistinctFaceRefsThanItsOneByteTable) {
   for (std::size_t f = 0; f < cube.num_triangles(); ++f)
     for (int k = 0; k < 3; ++k)
       edges.emplace_back(cube.triangles[3 * f + k], cube.triangles[3 * f + (k + 1) % 3]);
-  int splits = 0;
-  for (const auto& [a, b] : edges) {
-    if (find_edge_tet(m, a, b) == kNoId) continue;
-    NewVertex3 nv;
-    nv.p = 0.5 * (m.xyz[a] + m.xyz[b]);
-    nv.metric = SymMat3::identity();
-    Id x = kNoId;
-    splits += split_edge(m, a, b, nv, 0.0, &x) == Outcome::kApplied;
-  }
-  EXPECT_GT(splits, 300);
+  EXPECT_GT(split_at_midpoints(m, edges), 300);
   EXPECT_EQ(check_tet_mesh(m), "");
   const Mesh back = to_mesh(m, {});
   EXPECT_EQ(back.num_triangles(), 4 * cube.num_triangles());
@@ -105,14 +110,7 @@ TEST(TetMesh, RenumberTailKeepsTheMesh) {
   std::vector<std::pair<Id, Id>> edges;
   for (std::size_t t = 0; t < cube.num_tets(); ++t)
     for (const auto& [i, j] : kTetEdge) edges.emplace_back(cube.tets[4 * t + i], cube.tets[4 * t + j]);
-  for (const auto& [a, b] : edges) {
-    if (find_edge_tet(m, a, b) == kNoId) continue;
-    NewVertex3 nv;
-    nv.p = 0.5 * (m.xyz[a] + m.xyz[b]);
-    nv.metric = SymMat3::identity();
-    Id x = kNoId;
-    split_edge(m, a, b, nv, 0.0, &x);
-  }
+  split_at_midpoints(m, edges);
   Id gone = kNoId;
   std::vector<Id> ball, around;
   for (Id v = static_cast<Id>(m.vertex_capacity()) - 1; v >= head && gone == kNoId; --v) {
