@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/eigen.hpp"
+#include "core/fast_exp.hpp"
 #include "core/symmat.hpp"
 
 namespace riemesh {
@@ -60,12 +61,37 @@ inline SymMat<D> commuting_product(const SymMat<D>& x, const SymMat<D>& y) {
   }
 }
 
-/// exp_sym without an eigendecomposition, for hot loops: exp(m) = e^{tr m / D} exp(B) with B the
-/// trace-free part, B scaled by 2^-s until ‖B‖_F <= 1/4, its Taylor series to degree 9
-/// (Paterson–Stockmeyer: 4 products; truncation below 3e-13 relative), then s squarings.
-/// Relative error ~1e-13·2^s against exp_sym (tests/core/test_spd.cpp); about 3x cheaper.
+/// exp of a symmetric 2x2 tensor in closed form: with μ = tr m / 2 and B = m − μ I trace-free,
+/// B² = δ² I (δ² = −det B), so exp(m) = e^μ (cosh δ I + (sinh δ / δ) B) = ½ (e⁺ + e⁻) I +
+/// (e⁺ − e⁻) / (2δ) B with e± = e^(μ±δ), the exponentials of the eigenvalues. The difference
+/// loses digits as δ → 0, but only in a term of size δ: the result keeps ~1e-16 relative in norm;
+/// below δ = 1e-3 the series of cosh and sinh / δ (next terms < 1e-20). Exact on isotropic input
+/// up to fast_exp (within 2 ulp of e^x).
+inline SymMat<2> exp_sym_2d(const SymMat<2>& m) {
+  const double mu = 0.5 * (m.c[0] + m.c[2]), h = 0.5 * (m.c[0] - m.c[2]), b = m.c[1];
+  const double d2 = h * h + b * b;
+  double even, odd;  // e^μ cosh δ, e^μ sinh δ / δ
+  if (d2 < 1e-6) {
+    const double e = fast_exp(mu);
+    even = e * (1.0 + d2 * (0.5 + d2 / 24.0));
+    odd = e * (1.0 + d2 * (1.0 / 6.0 + d2 / 120.0));
+  } else {
+    const double delta = std::sqrt(d2), plus = fast_exp(mu + delta),
+                 minus = fast_exp(mu - delta);
+    even = 0.5 * (plus + minus);
+    odd = 0.5 * (plus - minus) / delta;
+  }
+  return SymMat<2>{{even + odd * h, odd * b, even - odd * h}};
+}
+
+/// exp_sym without an eigendecomposition, for hot loops. In 2D the closed form exp_sym_2d; in 3D
+/// exp(m) = e^{tr m / D} exp(B) with B the trace-free part, B scaled by 2^-s until ‖B‖_F <= 1/4,
+/// its Taylor series to degree 9 (Paterson–Stockmeyer: 4 products; truncation below 3e-13
+/// relative), then s squarings. Relative error ~1e-13·2^s against exp_sym
+/// (tests/core/test_spd.cpp); about 3x cheaper.
 template <int D>
 inline SymMat<D> exp_sym_series(const SymMat<D>& m) {
+  if constexpr (D == 2) return exp_sym_2d(m);
   const double shift = trace(m) / D;
   SymMat<D> x = m - SymMat<D>::diagonal(shift);
   double n2 = 0.0;

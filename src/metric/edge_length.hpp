@@ -108,7 +108,15 @@ template <int D>
 /// when their logarithms do. The common quick answer (both diagonal) inline, the rest out of line.
 template <int D>
 inline bool commute(const SymMat<D>& a, const SymMat<D>& b) {
-  return (is_diagonal(a) && is_diagonal(b)) || detail::commute_general(a, b);
+  if constexpr (D == 2) {  // commute_general's operations, in its order, inline (the 2D hot path)
+    if (a.c[1] == 0.0 && b.c[1] == 0.0) return true;
+    const double ab = a.c[0] * b.c[1] + a.c[1] * b.c[2], ba = a.c[1] * b.c[0] + a.c[2] * b.c[1];
+    const double na = a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2];
+    const double nb = b.c[0] * b.c[0] + b.c[1] * b.c[1] + b.c[2] * b.c[2];
+    return (ab - ba) * (ab - ba) <= 1e-24 * na * nb;
+  } else {
+    return (is_diagonal(a) && is_diagonal(b)) || detail::commute_general(a, b);
+  }
 }
 
 /// Edge length by Simpson's rule on the log-Euclidean interpolated field: (l_A + 4 l_M + l_B) / 6

@@ -53,7 +53,7 @@ inline SymMat2 tri_metric(const SymMat2& ma, const SymMat2* la, const SymMat2& m
                           const SymMat2* lb, const SymMat2& mc, const SymMat2* lc) {
   if (commute(ma, mb) && commute(ma, mc) && commute(mb, mc)) return (1.0 / 3.0) * (ma + mb + mc);
   const auto log_or = [](const SymMat2& m, const SymMat2* l) { return l ? *l : log_spd(m); };
-  return exp_sym((1.0 / 3.0) * (log_or(ma, la) + log_or(mb, lb) + log_or(mc, lc)));
+  return exp_sym_2d((1.0 / 3.0) * (log_or(ma, la) + log_or(mb, lb) + log_or(mc, lc)));
 }
 
 /// Quality of a triangle in tri_metric, used consistently for every decision.
