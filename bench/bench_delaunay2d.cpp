@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "generate/delaunay2d.hpp"
@@ -64,7 +65,7 @@ void Brio(benchmark::State& state) {
 BENCHMARK(Brio)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 /// FNV-1a over the ids.
-std::uint64_t hash_ids(const std::vector<Id>& ids, std::uint64_t h) {
+std::uint64_t hash_ids(std::span<const Id> ids, std::uint64_t h) {
   for (const Id v : ids) {
     h ^= static_cast<std::uint32_t>(v);
     h *= 0x100000001b3ULL;

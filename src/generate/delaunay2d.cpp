@@ -39,8 +39,8 @@ inline int prev_slot(int e) { return (0x12 >> (2 * e)) & 3; }
 
 /// Reserves room for `size` elements of a fresh array in huge pages (a hint; see
 /// huge_page_allocator.hpp): the pages are first touched after the advice.
-template <class T>
-void reserve_huge(std::vector<T>& a, std::size_t size) {
+template <class T, class A>
+void reserve_huge(std::vector<T, A>& a, std::size_t size) {
   a.reserve(size);
   detail::advise_huge_pages(a.data(), size * sizeof(T));
 }
@@ -267,7 +267,8 @@ class Builder {
     last_ = prev;
   }
 
-  /// Makes room for num_triangles_ triangles (within the reserved capacity).
+  /// Makes room for num_triangles_ triangles (within the reserved capacity). The new chunk is left
+  /// unwritten (TriangleIds: no zero fill); fill_cavity writes every triangle it makes.
   void grow() {
     constexpr std::size_t kChunk = 3 * 4096;  // 48 KB per array
     const std::size_t size =

@@ -18,6 +18,7 @@
 #include <span>
 #include <vector>
 
+#include "generate/huge_page_allocator.hpp"
 #include "mesh/mesh.hpp"
 
 namespace riemesh {
@@ -28,15 +29,19 @@ enum class InsertionOrder {
   kAsGiven,  ///< the input order (for inputs already sorted)
 };
 
+/// Vertex or half-edge ids of a Triangulation2d: a vector that `resize` does not zero-fill (the
+/// kernel writes every triangle it makes; NoFillAllocator).
+using TriangleIds = std::vector<Id, NoFillAllocator<Id>>;
+
 /// A triangulation of points in the plane covering a super-triangle.
 struct Triangulation2d {
   /// 2 coordinates per vertex: the input points (same ids), then the super-triangle's 3 vertices.
   std::vector<double> xy;
   std::size_t num_points = 0;  ///< input points; super-triangle vertices are num_points + 0..2
-  std::vector<Id> tri;         ///< 3 vertices per triangle, counter-clockwise
+  TriangleIds tri;             ///< 3 vertices per triangle, counter-clockwise
   /// 3 per triangle: across the edge opposite vertex i of t, the half-edge 3·t' + j of the
   /// neighbour t' (its edge opposite its vertex j); kNoId on the super-triangle's sides.
-  std::vector<Id> nbr;
+  TriangleIds nbr;
   /// For each input point, the vertex that represents it: itself, or an earlier input point at
   /// exactly the same place (duplicates are not inserted).
   std::vector<Id> representative;
