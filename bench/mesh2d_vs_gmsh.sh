@@ -3,7 +3,8 @@
 # 2D meshes, at the same sizes: (keep) the boundary kept edge for edge, sizes from the boundary
 # edges; (h) a uniform size h, the boundary remeshed. Prints triangles, Euclidean quality (min,
 # mean, as `riemesh stats` measures it), the median edge length and the median wall time of RUNS
-# runs, for each tool.
+# runs, for each tool. Then the Gmsh .geo geometries of tests/data/geo, read by both tools from
+# the same file (sizes from the points' lc; size "lc").
 #   bench/mesh2d_vs_gmsh.sh [RUNS] [OUT]    (default 5, /tmp/riemesh-mesh2d)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -44,4 +45,13 @@ for name in aile lac-leman naca0012; do
     printf '%-10s %-5s | %s %5ss | %s %5ss\n' "$name" "$mode" \
       "$(quality "$out/$name-$mode-riemesh.mesh")" "$tr" "$(quality "$out/$name-$mode-gmsh.msh")" "$tg"
   done
+done
+for geo in tests/data/geo/*.geo; do
+  name=$(basename "$geo" .geo)
+  "$R" mesh "$geo" -o "$out/$name-geo-riemesh.mesh" -q >/dev/null
+  tr=$(median_time "$R" mesh "$geo" -o "$out/$name-geo-riemesh.mesh" -q)
+  gmsh -2 -format msh41 "$geo" -o "$out/$name-geo-gmsh.msh" >/dev/null
+  tg=$(median_time gmsh -2 -format msh41 "$geo" -o "$out/$name-geo-gmsh.msh")
+  printf '%-10s %-5s | %s %5ss | %s %5ss\n' "${name:0:10}" lc \
+    "$(quality "$out/$name-geo-riemesh.mesh")" "$tr" "$(quality "$out/$name-geo-gmsh.msh")" "$tg"
 done

@@ -11,7 +11,9 @@
 #include "apps/mesh_args.hpp"
 #include "apps/parse.hpp"
 #include "core/error.hpp"
+#include "generate/geometry2d.hpp"
 #include "generate/mesh2d.hpp"
+#include "io/geo.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
 #include "metric/element.hpp"
@@ -30,6 +32,88 @@ struct MeshArgs {
   const CLI::Option* hgrad = nullptr;
 };
 
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+/// Runs mesh_domain2d on a domain, errors prefixed with the input's name, progress unless quiet.
+Mesh2dResult mesh_domain(const MeshArgs& a, const Mesh& domain) {
+  try {
+    return mesh_domain2d(domain, a.opt, [&](const PassStats& s) {
+      if (!a.quiet)
+        std::fprintf(stderr, "pass %2d: %zu vertices %zu triangles, q_min %.3f (%.2f s)\n", s.pass,
+                     s.vertices, s.triangles, s.q_min, s.seconds);
+    });
+  } catch (const InputError& e) {
+    throw InputError(a.input + ": " + e.what());
+  }
+}
+
+/// Notes and warnings of the optimisation, the output, and its summary line.
+void finish(const MeshArgs& a, const Mesh2dResult& r) {
+  if (!a.quiet) {
+    for (const std::string& note : r.report.notes)
+      std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
+    if (!r.report.converged)
+      std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
+                   r.report.passes.size(), r.report.stall_reason.c_str());
+  }
+  write_mesh(r.mesh, a.output);
+  const double q_min = r.report.passes.empty() ? 0.0 : r.report.passes.back().q_min;
+  std::printf("%s: %zu vertices, %zu triangles, %d region%s, %d hole%s, q_min %.3f\n",
+              a.output.c_str(), r.mesh.num_vertices(), r.mesh.num_triangles(), r.regions,
+              r.regions == 1 ? "" : "s", r.holes, r.holes == 1 ? "" : "s", q_min);
+}
+
+/// A .geo geometry: its curves meshed to the sizes (--hsiz, the points' lc, curvature within
+/// --hausd), then the domain they bound, its boundary kept, sizes inside from the boundary's.
+void mesh_geometry(MeshArgs& a) {
+  if (!a.metric.empty() || !a.holes.empty())
+    throw InputError(a.input + ": --metric and --hole apply to a domain .mesh; a .geo is sized "
+                     "by --hsiz, its points' lc and --hausd, and its holes are its Plane "
+                     "Surfaces' inner Curve Loops");
+  const Geometry2d geometry = read_geo(a.input);
+  GeometryMeshOptions go;
+  go.hsiz = a.opt.hsiz;
+  go.hausd = a.hausd->count() > 0 ? a.opt.adapt.hausd : 0.0;
+  go.hmin = a.opt.adapt.hmin;
+  go.hmax = std::isfinite(a.opt.adapt.hmax) ? a.opt.adapt.hmax : 0.0;  // inf: no limit
+  GeometryBoundary boundary;
+  try {
+    boundary = mesh_geometry_boundary(geometry, go);
+  } catch (const InputError& e) {
+    std::string msg = e.what();
+    if (msg.rfind("line ", 0) == 0) msg = a.input + ":" + msg.substr(5);
+    else msg = a.input + ": " + msg;
+    throw InputError(msg);
+  }
+  if (!a.quiet) {
+    for (const std::string& ignored : geometry.ignored)
+      std::fprintf(stderr, "riemesh: note: %s: %s ignored\n", a.input.c_str(), ignored.c_str());
+    char sizes[96];
+    if (a.opt.hsiz > 0.0)
+      std::snprintf(sizes, sizeof sizes, "--hsiz %g", a.opt.hsiz);
+    else if (boundary.sized_by_points == boundary.curves)
+      std::snprintf(sizes, sizeof sizes, "the points' lc");
+    else if (boundary.sized_by_points > 0)
+      std::snprintf(sizes, sizeof sizes, "the points' lc, else %g", boundary.size);
+    else
+      std::snprintf(sizes, sizeof sizes, "%g (default: no lc, no --hsiz)", boundary.size);
+    std::fprintf(stderr, "%s: %d curves meshed into %zu edges (sizes: %s; chords within %g)\n",
+                 a.input.c_str(), boundary.curves, boundary.domain.num_edges(), sizes,
+                 boundary.hausd);
+  }
+  // The curves' nodes lie on the exact curves: the boundary is kept as meshed, and the sizes
+  // inside are those of its edges (hsiz would override the curvature's finer edges).
+  a.opt.keep_boundary = true;
+  a.opt.hsiz = 0.0;
+  a.opt.adapt.hausd = 0.0;
+  if (a.hgrad->count() == 0) a.opt.adapt.hgrad = 0.0;
+  Mesh2dResult r = mesh_domain(a, boundary.domain);
+  assign_surface_refs(boundary, r.mesh);
+  finish(a, r);
+}
+
 void run(MeshArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
   if (a.opt.hsiz > 0.0 && !a.metric.empty())
@@ -44,6 +128,7 @@ void run(MeshArgs& a) {
   if (a.interp.empty()) a.interp = a.metric.empty() ? "iso-linear" : "log";
   a.opt.adapt.interp = parse_interp_scheme(a.interp);
   mesh_format(a.output);  // an unknown output extension fails before any work
+  if (ends_with(a.input, ".geo")) return mesh_geometry(a);
   const Mesh domain = read_mesh(a.input);
   if (domain.dim == 3) {  // a closed surface: the volume inside it
     if (!a.metric.empty() || a.hausd->count() > 0 || !a.holes.empty())
@@ -67,31 +152,7 @@ void run(MeshArgs& a) {
   // finer parts of the boundary), and triangles on those edges could then only be slivers: with
   // a kept boundary the sizes are interpolated, not graded, unless --hgrad says otherwise.
   if (a.opt.keep_boundary && a.hgrad->count() == 0) a.opt.adapt.hgrad = 0.0;
-  Mesh2dResult r;
-  try {
-    r = mesh_domain2d(domain, a.opt, [&](const PassStats& s) {
-      if (!a.quiet)
-        std::fprintf(stderr, "pass %2d: %zu vertices %zu triangles, q_min %.3f (%.2f s)\n", s.pass,
-                     s.vertices, s.triangles, s.q_min, s.seconds);
-    });
-  } catch (const InputError& e) {
-    std::string msg = a.input;
-    msg += ": ";
-    msg += e.what();
-    throw InputError(msg);
-  }
-  if (!a.quiet) {
-    for (const std::string& note : r.report.notes)
-      std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
-    if (!r.report.converged)
-      std::fprintf(stderr, "riemesh: warning: stopped after %zu passes: %s\n",
-                   r.report.passes.size(), r.report.stall_reason.c_str());
-  }
-  write_mesh(r.mesh, a.output);
-  const double q_min = r.report.passes.empty() ? 0.0 : r.report.passes.back().q_min;
-  std::printf("%s: %zu vertices, %zu triangles, %d region%s, %d hole%s, q_min %.3f\n",
-              a.output.c_str(), r.mesh.num_vertices(), r.mesh.num_triangles(), r.regions,
-              r.regions == 1 ? "" : "s", r.holes, r.holes == 1 ? "" : "s", q_min);
+  finish(a, mesh_domain(a, domain));
 }
 
 }  // namespace
@@ -105,7 +166,9 @@ void register_mesh(CLI::App& app) {
               "boundary's sizes, inserted by Delaunay, optimised with the surface kept)");
   cmd->add_option("input", a->input,
                   "Domain: a 2D .mesh/.meshb/.msh whose Edges (with refs) bound it, each with "
-                  "the domain on its left (outer loops counter-clockwise, holes clockwise)")
+                  "the domain on its left (outer loops counter-clockwise, holes clockwise); or a "
+                  "Gmsh .geo geometry (points, lines, circle arcs, splines, curve loops, plane "
+                  "surfaces, physical groups: see the README); or a closed surface .mesh")
       ->required();
   cmd->add_option("-o,--output", a->output, "Output mesh (.mesh, .meshb, .msh, .vtu)");
   cmd->add_option("--hsiz", a->opt.hsiz, "Uniform size (default: from the boundary edges)");

@@ -1,0 +1,269 @@
+#include "generate/geometry2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "core/error.hpp"
+#include "generate/curve2d.hpp"
+
+namespace riemesh {
+
+namespace {
+
+std::string line_of(std::size_t line) { return "line " + std::to_string(line) + ": "; }
+
+/// Twice the signed area of a closed polygon (counter-clockwise positive).
+double twice_area(const std::vector<Vec2>& ring) {
+  double a = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) a += cross(ring[i], ring[(i + 1) % ring.size()]);
+  return a;
+}
+
+/// Whether p is inside the closed polygon (crossing number; p on no edge).
+bool inside(const std::vector<Vec2>& ring, const Vec2& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Vec2 &a = ring[i], &b = ring[j];
+    if ((a[1] > p[1]) != (b[1] > p[1]) &&
+        p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+      in = !in;
+  }
+  return in;
+}
+
+/// The geometry with its ids indexed, and the curves meshed on demand (each once).
+class BoundaryBuilder {
+ public:
+  BoundaryBuilder(const Geometry2d& g, const GeometryMeshOptions& o) : g_(g) {
+    for (std::size_t i = 0; i < g.points.size(); ++i) point_[g.points[i].id] = i;
+    for (std::size_t i = 0; i < g.curves.size(); ++i) curve_[g.curves[i].id] = i;
+    for (std::size_t i = 0; i < g.loops.size(); ++i) loop_[g.loops[i].id] = i;
+    for (const GeoPhysical& p : g.physical_curves)
+      for (const int id : p.ids) curve_ref_.emplace(id, p.tag);  // the first group wins
+    for (const GeoPhysical& p : g.physical_surfaces)
+      for (const int id : p.ids) surface_ref_.emplace(id, p.tag);
+    double lo[2] = {0, 0}, hi[2] = {0, 0};
+    for (std::size_t i = 0; i < g.points.size(); ++i) {
+      const double xy[2] = {g.points[i].x, g.points[i].y};
+      for (int c = 0; c < 2; ++c) {
+        lo[c] = i == 0 ? xy[c] : std::min(lo[c], xy[c]);
+        hi[c] = i == 0 ? xy[c] : std::max(hi[c], xy[c]);
+      }
+    }
+    const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    if (!(diagonal > 0.0)) throw InputError("the geometry's points all lie at one place");
+    size_ = o.hsiz > 0.0 ? o.hsiz : diagonal / 25.0;
+    hsiz_ = o.hsiz > 0.0;
+    sizing_.hausd = o.hausd > 0.0 ? o.hausd : 1e-3 * diagonal;
+    sizing_.hmin = o.hmin > 0.0 ? o.hmin : 1e-6 * diagonal;
+    if (o.hmax > 0.0) sizing_.hmax = o.hmax;
+    out_.domain.dim = 2;
+  }
+
+  /// Start and end point ids of a curve.
+  std::pair<int, int> ends(const GeoCurve& c) const {
+    return {c.points.front(), c.kind == GeoCurveKind::kCircle ? c.points[2] : c.points.back()};
+  }
+  const GeoCurve& curve(int id) const { return g_.curves[curve_.at(id)]; }
+  const GeoLoop& loop(int id) const { return g_.loops[loop_.at(id)]; }
+  int curve_ref(int id) const {
+    const auto it = curve_ref_.find(id);
+    return it == curve_ref_.end() ? id : it->second;
+  }
+  int surface_ref(int id) const {
+    const auto it = surface_ref_.find(id);
+    return it == surface_ref_.end() ? id : it->second;
+  }
+
+  /// The mesh vertex of a geometry point (a corner), made at its first use.
+  Id vertex(int point_id) {
+    const auto [it, fresh] = vertex_.emplace(point_id, kNoId);
+    if (fresh) {
+      const GeoPoint& p = g_.points[point_.at(point_id)];
+      it->second = add_vertex(Vec2{{p.x, p.y}}, kTagCorner);
+    }
+    return it->second;
+  }
+
+  /// The vertices of a curve's mesh from its start to its end.
+  const std::vector<Id>& nodes(int id) {
+    const auto found = nodes_.find(id);
+    if (found != nodes_.end()) return found->second;
+    const GeoCurve& c = curve(id);
+    const auto at = [&](int k) {
+      const GeoPoint& p = g_.points[point_.at(c.points[k])];
+      return Vec2{{p.x, p.y}};
+    };
+    const auto [first, last] = ends(c);
+    Curve2d shape = Curve2d::segment(at(0), at(1));
+    CurveSizing sizing = sizing_;
+    if (c.kind == GeoCurveKind::kCircle) {
+      shape = Curve2d::arc(at(0), at(1), at(2));
+      sizing.min_segments = 2;
+    } else if (c.kind == GeoCurveKind::kSpline) {
+      std::vector<Vec2> through;
+      for (std::size_t k = 0; k < c.points.size(); ++k) through.push_back(at(static_cast<int>(k)));
+      shape = Curve2d::spline(std::move(through), first == last);
+      sizing.min_segments = first == last ? 3 : 2;
+    }
+    // Sizes: --hsiz; else the lc of the end points, linear along the curve (one given: that
+    // one); else the default.
+    const double la = g_.points[point_.at(first)].lc, lb = g_.points[point_.at(last)].lc;
+    if (hsiz_ || (la <= 0.0 && lb <= 0.0)) {
+      sizing.size = [s = size_](double) { return s; };
+    } else {
+      const double a = la > 0.0 ? la : lb, b = lb > 0.0 ? lb : la;
+      sizing.size = [a, b](double t) { return a + t * (b - a); };
+      ++out_.sized_by_points;
+    }
+    std::vector<double> ts;
+    try {
+      ts = mesh_curve(shape, sizing);
+    } catch (const InputError& e) {
+      throw InputError(line_of(c.line) + "curve " + std::to_string(id) + ": " + e.what());
+    }
+    std::vector<Id> ids{vertex(first)};
+    for (std::size_t k = 1; k + 1 < ts.size(); ++k) ids.push_back(add_vertex(shape.at(ts[k]).p, 0));
+    ids.push_back(vertex(last));
+    ++out_.curves;
+    return nodes_.emplace(id, std::move(ids)).first->second;
+  }
+
+  Vec2 xy(Id v) const {
+    return Vec2{{out_.domain.coords[2 * static_cast<std::size_t>(v)],
+                 out_.domain.coords[2 * static_cast<std::size_t>(v) + 1]}};
+  }
+  void add_edge(Id a, Id b, int ref) {
+    out_.domain.edges.insert(out_.domain.edges.end(), {a, b});
+    out_.domain.edge_ref.push_back(ref);
+    out_.domain.edge_tag.push_back(kTagNone);
+  }
+
+  GeometryBoundary& result() { return out_; }
+  double size() const { return size_; }
+  double hausd() const { return sizing_.hausd; }
+
+ private:
+  Id add_vertex(const Vec2& p, std::uint8_t tag) {
+    Mesh& m = out_.domain;
+    m.coords.insert(m.coords.end(), {p[0], p[1]});
+    m.vert_ref.push_back(0);
+    m.vert_tag.push_back(tag);
+    return static_cast<Id>(m.num_vertices() - 1);
+  }
+
+  const Geometry2d& g_;
+  std::map<int, std::size_t> point_, curve_, loop_;
+  std::map<int, int> curve_ref_, surface_ref_;
+  std::map<int, Id> vertex_;
+  std::map<int, std::vector<Id>> nodes_;
+  CurveSizing sizing_;
+  double size_ = 0.0;
+  bool hsiz_ = false;
+  GeometryBoundary out_;
+};
+
+}  // namespace
+
+void GeometryMeshOptions::validate() const {
+  const std::pair<const char*, double> values[] = {
+      {"--hsiz", hsiz}, {"--hausd", hausd}, {"--hmin", hmin}, {"--hmax", hmax}};
+  for (const auto& [name, v] : values)
+    if (!(v >= 0.0) || !std::isfinite(v))
+      throw InputError(std::string(name) + " must be a positive number, got " + std::to_string(v));
+  if (hmin > 0.0 && hmax > 0.0 && hmin > hmax)
+    throw InputError("--hmin (" + std::to_string(hmin) + ") is larger than --hmax (" +
+                     std::to_string(hmax) + ")");
+}
+
+GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
+                                        const GeometryMeshOptions& options) {
+  options.validate();
+  if (geometry.surfaces.empty())
+    throw InputError("no Plane Surface: nothing to mesh (add e.g. 'Plane Surface(1) = {1};' "
+                     "over a Curve Loop)");
+  BoundaryBuilder b(geometry, options);
+  for (const GeoSurface& s : geometry.surfaces) {
+    SurfacePolygons polygons;
+    polygons.ref = b.surface_ref(s.id);
+    for (std::size_t k = 0; k < s.loops.size(); ++k) {
+      const GeoLoop& loop = b.loop(s.loops[k]);
+      const std::string where = line_of(loop.line) + "Curve Loop " + std::to_string(loop.id);
+      // The loop's vertices in its order (each curve's last node is the next one's first) and,
+      // for the edge from ring[i] to ring[i + 1], the ref of its curve.
+      std::vector<Id> ring;
+      std::vector<int> refs;
+      int first_point = 0, at_point = 0;
+      for (std::size_t i = 0; i < loop.curves.size(); ++i) {
+        const int signed_id = loop.curves[i], id = std::abs(signed_id);
+        auto [from, to] = b.ends(b.curve(id));
+        if (signed_id < 0) std::swap(from, to);
+        if (i == 0) first_point = from;
+        else if (from != at_point)
+          throw InputError(where + ": curve " + std::to_string(signed_id) + " starts at point " +
+                           std::to_string(from) + ", not at point " + std::to_string(at_point) +
+                           " where the curve before it ends");
+        at_point = to;
+        std::vector<Id> nodes = b.nodes(id);
+        if (signed_id < 0) std::reverse(nodes.begin(), nodes.end());
+        ring.insert(ring.end(), nodes.begin(), nodes.end() - 1);
+        refs.insert(refs.end(), nodes.size() - 1, b.curve_ref(id));
+      }
+      if (at_point != first_point)
+        throw InputError(where + " is not closed: it ends at point " + std::to_string(at_point) +
+                         ", not at point " + std::to_string(first_point) + " where it starts");
+      std::vector<Vec2> xy;
+      for (const Id v : ring) xy.push_back(b.xy(v));
+      const double area = twice_area(xy);
+      if (ring.size() < 3 || !(std::abs(area) > 0.0))
+        throw InputError(where + " encloses no area");
+      // Outer loops counter-clockwise, holes clockwise (the domain on the left of each edge).
+      if ((area > 0.0) != (k == 0)) {
+        std::reverse(ring.begin() + 1, ring.end());
+        std::reverse(refs.begin(), refs.end());
+        std::reverse(xy.begin() + 1, xy.end());
+      }
+      if (k > 0 && !inside(polygons.loops.front(), xy.front()))
+        throw InputError(line_of(s.line) + "Plane Surface " + std::to_string(s.id) + ": hole " +
+                         "Curve Loop " + std::to_string(loop.id) +
+                         " lies outside its outer Curve Loop " + std::to_string(s.loops[0]));
+      for (std::size_t i = 0; i < ring.size(); ++i)
+        b.add_edge(ring[i], ring[(i + 1) % ring.size()], refs[i]);
+      polygons.loops.push_back(std::move(xy));
+    }
+    b.result().surfaces.push_back(std::move(polygons));
+  }
+  GeometryBoundary& out = b.result();
+  out.size = b.size();
+  out.hausd = b.hausd();
+  return std::move(out);
+}
+
+void assign_surface_refs(const GeometryBoundary& boundary, Mesh& mesh) {
+  std::map<int, int> ref_of_region;
+  for (std::size_t t = 0; t < mesh.num_triangles(); ++t) {
+    const int region = mesh.tri_ref[t];
+    if (ref_of_region.count(region)) continue;
+    Vec2 c{};
+    for (int k = 0; k < 3; ++k)
+      for (int d = 0; d < 2; ++d)
+        c[d] += mesh.coords[2 * static_cast<std::size_t>(mesh.triangles[3 * t + k]) + d] / 3.0;
+    int ref = region;
+    for (const SurfacePolygons& s : boundary.surfaces) {
+      bool in = inside(s.loops.front(), c);
+      for (std::size_t h = 1; h < s.loops.size() && in; ++h) in = !inside(s.loops[h], c);
+      if (in) {
+        ref = s.ref;
+        break;
+      }
+    }
+    ref_of_region[region] = ref;
+  }
+  for (auto& r : mesh.tri_ref) r = ref_of_region.at(r);
+}
+
+}  // namespace riemesh

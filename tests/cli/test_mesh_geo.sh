@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# riemesh mesh on Gmsh .geo geometries (issue #8: parametric curves): the square with a circular
+# hole and the NACA 0012 in a disc of tests/data/geo mesh into valid meshes whose boundary nodes
+# lie on the exact curves, with the physical groups' refs; --hsiz refines; Gmsh and meshio read the
+# output; bad geometries give one-line errors naming the file and line, and no output.
+set -u
+. "$(dirname "$0")/cli_lib.sh"
+GEO="$(dirname "$0")/../data/geo"
+
+"$R" mesh -h | grep -q -- "Gmsh .geo" && ok "help" || ko "help"
+
+summary() {  # summary MESH: refs of triangles and edges, and the largest |r - R| over the vertices
+  /usr/bin/python3 - "$@" <<'PY'
+import sys, meshio, numpy as np
+m = meshio.read(sys.argv[1])
+tri = [c for c in m.cells if c.type == "triangle"][0]
+ref = lambda t: sorted(set(int(r) for r in np.concatenate([d for c, d in zip(m.cells, m.cell_data["medit:ref"]) if c.type == t])))
+cx, cy, radius = map(float, sys.argv[2:5])
+xy = m.points[:, :2]
+r = np.hypot(xy[:, 0] - cx, xy[:, 1] - cy)
+near = np.abs(r - radius) < 0.05 * radius
+print(ref("triangle"), ref("line"), int(near.sum()), float(np.max(np.abs(r[near] - radius))))
+PY
+}
+
+# Square with a hole of radius 0.2 at (0.5, 0.5): triangle ref 3, edge refs 1 (sides) and 2
+# (circle), every vertex near the circle on it.
+"$R" mesh "$GEO/square_hole.geo" -o "$TMP/sq.mesh" -q >"$TMP/out" &&
+  grep -q "1 region, 1 hole" "$TMP/out" && "$R" check "$TMP/sq.mesh" >/dev/null &&
+  ok "square-hole ($(cat "$TMP/out"))" || ko "square-hole"
+s=$(summary "$TMP/sq.mesh" 0.5 0.5 0.2)
+/usr/bin/python3 -c "import sys; a=sys.argv[1]; assert a.startswith('[3] [1, 2] '), a; n, d = a.split()[-2:]; assert int(n) >= 16 and float(d) < 1e-12, a" "$s" &&
+  ok "square-hole-on-circle ($s)" || ko "square-hole-on-circle ($s)"
+
+# --hsiz: more triangles when smaller.
+tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin)['counts']['triangles'])"; }
+"$R" mesh "$GEO/square_hole.geo" -o "$TMP/sq1.mesh" --hsiz 0.1 -q >/dev/null &&
+  "$R" mesh "$GEO/square_hole.geo" -o "$TMP/sq2.mesh" --hsiz 0.02 -q >/dev/null &&
+  [ "$(tris "$TMP/sq1.mesh")" -lt "$(tris "$TMP/sq2.mesh")" ] &&
+  [ "$(tris "$TMP/sq2.mesh")" -gt 3000 ] && ok "hsiz ($(tris "$TMP/sq1.mesh") < $(tris "$TMP/sq2.mesh"))" || ko "hsiz"
+
+# NACA 0012 in a disc of radius 5 centred at (0.5, 0): far-field nodes on the circle, refs of the
+# physical groups (fluid 1; farfield 1, wall 2), Gmsh reads the output.
+"$R" mesh "$GEO/naca0012.geo" -o "$TMP/naca.mesh" -q >"$TMP/out" &&
+  "$R" check "$TMP/naca.mesh" >/dev/null && ok "naca ($(cat "$TMP/out"))" || ko "naca"
+s=$(summary "$TMP/naca.mesh" 0.5 0 5)
+/usr/bin/python3 -c "import sys; a=sys.argv[1]; assert a.startswith('[1] [1, 2] '), a; n, d = a.split()[-2:]; assert int(n) >= 30 and float(d) < 1e-12, a" "$s" &&
+  ok "naca-far-field-on-circle ($s)" || ko "naca-far-field-on-circle ($s)"
+if command -v gmsh >/dev/null; then
+  "$R" mesh "$GEO/naca0012.geo" -o "$TMP/naca.msh" -q >/dev/null &&
+    gmsh "$TMP/naca.msh" -0 -o "$TMP/naca-gmsh.msh" >/dev/null 2>&1 && ok "gmsh-reads-output" || ko "gmsh-reads-output"
+fi
+
+# Options that do not apply, and bad geometries: one line naming file and line, no output.
+expect_error geo-metric mesh "$GEO/square_hole.geo" -o "$TMP/o1.mesh" --metric "$TMP/none.sol"
+printf 'Point(1) = {0, 0, 0};\nPoint(2) = {1, 0, 0};\nLine(1) = {1, 2};\nExtrude {0, 1, 0} { Curve{1}; }\n' >"$TMP/extrude.geo"
+expect_error geo-unsupported mesh "$TMP/extrude.geo" -o "$TMP/o2.mesh"
+"$R" mesh "$TMP/extrude.geo" -o "$TMP/o2.mesh" 2>&1 | grep -q "extrude.geo:4: 'Extrude' is not supported" &&
+  ok "geo-unsupported-names-line" || ko "geo-unsupported-names-line"
+expect_no_file geo-unsupported-no-file "$TMP/o2.mesh"
+cat >"$TMP/open.geo" <<'GEO'
+Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3};
+Curve Loop(1) = {1, 2};
+Plane Surface(1) = {1};
+GEO
+expect_error geo-open-loop mesh "$TMP/open.geo" -o "$TMP/o3.mesh"
+"$R" mesh "$TMP/open.geo" -o "$TMP/o3.mesh" 2>&1 | grep -q "open.geo:3: Curve Loop 1 is not closed" &&
+  ok "geo-open-loop-names-line" || ko "geo-open-loop-names-line"
+expect_no_file geo-open-loop-no-file "$TMP/o3.mesh"
+printf 'Point(1) = {0, 0, 0};\nLine(1) = {1, 2};\n' >"$TMP/undefined.geo"
+expect_error geo-undefined-point mesh "$TMP/undefined.geo" -o "$TMP/o4.mesh"
+exit $fail
