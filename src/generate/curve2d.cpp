@@ -110,6 +110,15 @@ std::vector<double> mesh_curve(const Curve2d& curve, const CurveSizing& sizing) 
     prev = density;
   }
   const double length = run[samples];
+  // A bound on the work (sizes far below the curve's length: a typing error in lc or --hmin).
+  constexpr double kMostSegments = 1e7;
+  const auto too_many = [&](double count) {
+    if (!(count <= kMostSegments))
+      throw InputError("the curve would need " + std::to_string(static_cast<long long>(count)) +
+                       " segments or more (sizes from " + std::to_string(sizing.hmin) +
+                       "): more than 10,000,000");
+  };
+  too_many(length);
   long n = std::max<long>(sizing.min_segments, std::lround(length));
   n = std::max<long>(n, 1);
   std::vector<double> nodes;
@@ -130,6 +139,7 @@ std::vector<double> mesh_curve(const Curve2d& curve, const CurveSizing& sizing) 
         close = chord_distance(curve, nodes[i], nodes[i + 1]) <= sizing.hausd;
     if (close || attempt == 64) break;
     n += std::max<long>(1, n / 32);
+    too_many(static_cast<double>(n));
   }
   return nodes;
 }

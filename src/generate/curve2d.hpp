@@ -59,7 +59,8 @@ struct CurveSizing {
 /// The parameters 0 = t_0 < t_1 < ... < t_n = 1 of the curve's nodes: n = max(min_segments,
 /// round(L)) segments of equal length in the metric of the sizes, n raised (at most 64 times, by
 /// 1 or n / 32) until every chord is within hausd of the curve (16 samples per chord). Throws
-/// InputError when a size is not positive and finite.
+/// InputError when a size is not positive and finite, or when the curve would need more than
+/// 10^7 segments.
 std::vector<double> mesh_curve(const Curve2d& curve, const CurveSizing& sizing);
 
 /// The largest distance from the curve between parameters t0 and t1 to their chord (16 samples).

@@ -102,6 +102,7 @@ TEST(MeshCurve, SegmentCountsFollowTheMetricLength) {
   EXPECT_EQ(t.size(), 27u);
   EXPECT_LT(t[1], t.back() - t[t.size() - 2]);  // short edges at the fine end
   EXPECT_THROW(mesh_curve(seg, uniform(0.0)), InputError);
+  EXPECT_THROW(mesh_curve(seg, uniform(1e-8)), InputError);  // over 10^7 segments: refused
 }
 
 TEST(MeshCurve, ArcChordsWithinHausd) {
