@@ -114,9 +114,9 @@ std::vector<double> mesh_curve(const Curve2d& curve, const CurveSizing& sizing) 
   constexpr double kMostSegments = 1e7;
   const auto too_many = [&](double count) {
     if (!(count <= kMostSegments))
-      throw InputError("the curve would need " + std::to_string(static_cast<long long>(count)) +
-                       " segments or more (sizes from " + std::to_string(sizing.hmin) +
-                       "): more than 10,000,000");
+      throw InputError("the curve would need " +
+                       (count < 1e18 ? std::to_string(static_cast<long long>(count)) : "over 1e18") +
+                       " segments at the sizes asked, more than 10000000");
   };
   too_many(length);
   long n = std::max<long>(sizing.min_segments, std::lround(length));

@@ -56,6 +56,9 @@ class BoundaryBuilder {
     }
     const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(diagonal > 0.0)) throw InputError("the geometry's points all lie at one place");
+    if (!std::isfinite(diagonal))
+      throw InputError("the geometry's points lie too far apart for double precision (their box "
+                       "has no finite diagonal)");
     size_ = o.hsiz > 0.0 ? o.hsiz : diagonal / 25.0;
     hsiz_ = o.hsiz > 0.0;
     sizing_.hausd = o.hausd > 0.0 ? o.hausd : 1e-3 * diagonal;
@@ -187,6 +190,9 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
     throw InputError("no Plane Surface: nothing to mesh (add e.g. 'Plane Surface(1) = {1};' "
                      "over a Curve Loop)");
   BoundaryBuilder b(geometry, options);
+  // Which surface has each curve on its left, in each direction: two surfaces on the same side
+  // of a curve overlap (mesh_domain2d would merge them silently).
+  std::map<std::pair<int, bool>, int> left_of;
   for (const GeoSurface& s : geometry.surfaces) {
     SurfacePolygons polygons;
     polygons.ref = b.surface_ref(s.id);
@@ -222,7 +228,18 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
       if (ring.size() < 3 || !(std::abs(area) > 0.0))
         throw InputError(where + " encloses no area");
       // Outer loops counter-clockwise, holes clockwise (the domain on the left of each edge).
-      if ((area > 0.0) != (k == 0)) {
+      const bool flip = (area > 0.0) != (k == 0);
+      for (const int signed_id : loop.curves) {
+        const int id = std::abs(signed_id);
+        const auto [it, fresh] = left_of.emplace(std::pair{id, (signed_id > 0) != flip}, s.id);
+        if (fresh) continue;
+        const std::string surface = line_of(s.line) + "Plane Surface " + std::to_string(s.id);
+        if (it->second == s.id)
+          throw InputError(surface + " uses curve " + std::to_string(id) + " twice on one side");
+        throw InputError(surface + " overlaps Plane Surface " + std::to_string(it->second) +
+                         ": both lie on the same side of curve " + std::to_string(id));
+      }
+      if (flip) {
         std::reverse(ring.begin() + 1, ring.end());
         std::reverse(refs.begin(), refs.end());
         std::reverse(xy.begin() + 1, xy.end());

@@ -47,7 +47,8 @@ struct GeometryBoundary {
 
 /// Meshes the curves of the geometry's Plane Surfaces. Throws InputError "line N: message" (the
 /// line of the entity at fault) for: no Plane Surface, a loop whose curves do not chain end to
-/// start or do not close, a loop of zero area, a surface whose hole lies outside its outer loop.
+/// start or do not close, a loop of zero area, a surface whose hole lies outside its outer loop,
+/// two surfaces on the same side of a curve (overlapping), a curve twice in one surface's loops.
 GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
                                         const GeometryMeshOptions& options);
 

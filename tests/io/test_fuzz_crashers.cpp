@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "../../fuzz/geo_input.hpp"
 #include "../../fuzz/sol_input.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -43,6 +44,15 @@ bool replay(const std::string& target, const std::string& bytes) {
            medit_detail::read_sol_bytes(in.path, in.bytes, in.num_vertices, in.dim))
         EXPECT_EQ(f.values.size(),
                   in.num_vertices * static_cast<std::size_t>(field_components(f.kind, in.dim)));
+    } catch (const Error&) {
+    }
+    return true;
+  }
+  if (target == "geo") {
+    try {
+      fuzz::mesh_geo_text(bytes, [](const Mesh& m) {
+        EXPECT_NO_THROW(medit_detail::check_writable(m, "crasher"));
+      });
     } catch (const Error&) {
     }
     return true;
