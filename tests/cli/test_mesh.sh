@@ -48,6 +48,9 @@ tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(js
   "$R" mesh "$TMP/hole.mesh" -o "$TMP/m-fine.mesh" --hsiz 0.02 -q >/dev/null &&
   [ "$(tris "$TMP/m-coarse.mesh")" -lt "$(tris "$TMP/m-metric.mesh")" ] &&
   [ "$(tris "$TMP/m-metric.mesh")" -lt "$(tris "$TMP/m-fine.mesh")" ] && ok "metric-sizes" || ko "metric-sizes"
+# A size far too small for the domain is refused at once (about 1e14 triangles asked).
+expect_error mesh-size-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-6
+expect_no_file mesh-size-too-small-no-file "$TMP/o7.mesh"
 expect_error mesh-metric-and-hsiz mesh "$TMP/hole.mesh" -o "$TMP/o6.mesh" --metric "$TMP/sizes.sol" --hsiz 0.1
 
 # Errors: open loop, crossing edges, hole point outside, bad --hole, no output.

@@ -223,6 +223,16 @@ TEST(GeometryBoundary, Errors) {
   g = square_with_hole(0.2);
   o.hmin = 0.2, o.hmax = 0.1;
   EXPECT_THROW(mesh_geometry_boundary(g, o), InputError);
+  g = square_with_hole(0.2);
+  g.surfaces.push_back({2, {1}, 19});  // on the square again: overlaps surface 1
+  try {
+    mesh_geometry_boundary(g, GeometryMeshOptions{});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "line 19: Plane Surface 2 overlaps Plane Surface 1: both lie on the same side of "
+              "curve 1");
+  }
   // A reversed curve in a loop is fine: the same loop, its last side walked backwards.
   g = square_with_hole(0.2);
   g.curves[3].points = {1, 4};
