@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 
 #include "core/error.hpp"
+#include "core/predicates.hpp"
 #include "mesh/distance.hpp"
 #include "metric/metric.hpp"
 #include "remesh/simplex_geometry.hpp"
@@ -204,7 +206,28 @@ FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions option
   const auto sizes_of = [&](const Mesh& v) {
     return hsiz > 0.0 ? std::vector<double>(v.num_vertices(), hsiz) : boundary_sizes(v);
   };
-  FieldPoints3 points = field_points3d(first.volume, sizes_of(first.volume));
+  const std::vector<double> first_sizes = sizes_of(first.volume);
+  // The tet count the sizes ask for, 6√2 ∫ h⁻³ (each tet in the mean of its vertices' h⁻³),
+  // before any point is added: a size far too small (a mistyped --hsiz) is refused at once
+  // instead of running for hours.
+  double count = 0.0;
+  const Mesh& v = first.volume;
+  for (std::size_t t = 0; t < v.num_tets(); ++t) {
+    const double* p[4];
+    double density = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const auto id = static_cast<std::size_t>(v.tets[4 * t + k]);
+      p[k] = &v.coords[3 * id];
+      density += 0.25 / (first_sizes[id] * first_sizes[id] * first_sizes[id]);
+    }
+    count += 8.485281374238571 * std::abs(orient3d(p[0], p[1], p[2], p[3])) / 6.0 * density;
+  }
+  if (!(count <= 2e8))
+    throw InputError("the sizes ask for " +
+                     (count < 1e18 ? "about " + std::to_string(static_cast<long long>(count))
+                                   : std::string("over 1e18")) +
+                     " tetrahedra, more than 200000000: check the sizes (--hsiz)");
+  FieldPoints3 points = field_points3d(first.volume, first_sizes);
   first = {};
   BoundaryRecoveryOptions ro;
   ro.interior_points = std::move(points.coords);

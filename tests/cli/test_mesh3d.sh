@@ -69,5 +69,8 @@ else
 fi
 expect_error mesh3d-fill-nofill-hsiz mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --hsiz 0.25 --nofill
 expect_error mesh3d-metric-refused mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --metric "$TMP/none.sol"
+# A size far too small for the volume is refused at once (over 1e18 tets asked).
+expect_error mesh3d-size-too-small mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --hsiz 1e-6
+expect_no_file mesh3d-size-too-small-no-file "$TMP/y.mesh"
 expect_no_file mesh3d-refused-no-output "$TMP/y.mesh"
 exit $fail
