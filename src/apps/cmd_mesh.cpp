@@ -160,7 +160,8 @@ void run(MeshArgs& a) {
 void register_mesh(CLI::App& app) {
   auto a = std::make_shared<MeshArgs>();
   auto* cmd = app.add_subcommand(
-      "mesh", "Mesh a planar domain from its boundary Edges (Delaunay, then optimisation), or the "
+      "mesh", "Mesh a planar domain from its boundary Edges or from a Gmsh .geo geometry (curves "
+              "meshed to the sizes within --hausd; Delaunay, then optimisation), or the "
               "volume inside a closed surface (Delaunay of its vertices, boundary recovered by "
               "Steiner points on the surface, reported; then field points at --hsiz or the "
               "boundary's sizes, inserted by Delaunay, optimised with the surface kept)");
