@@ -10,9 +10,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   riemesh::fuzz::run_reader([&] {
-    riemesh::fuzz::mesh_geo_text(text, [](const riemesh::Mesh& m) {
-      riemesh::fuzz::expect_writable(m);
-    });
+    riemesh::fuzz::mesh_geo_text(text,
+                                 [](const riemesh::Mesh& m) { riemesh::fuzz::expect_writable(m); });
   });
   return 0;
 }

@@ -111,6 +111,7 @@ void mesh_geometry(MeshArgs& a) {
   if (a.hgrad->count() == 0) a.opt.adapt.hgrad = 0.0;
   Mesh2dResult r = mesh_domain(a, boundary.domain);
   assign_surface_refs(boundary, r.mesh);
+  keep_point_corners(boundary, r.mesh);
   finish(a, r);
 }
 

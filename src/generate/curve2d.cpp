@@ -25,7 +25,8 @@ Curve2d Curve2d::arc(const Vec2& start, const Vec2& centre, const Vec2& end) {
   c.angle0_ = std::atan2(u[1], u[0]);
   // The signed angle from u to w: the shorter way round; opposite ends (a half circle, within
   // 1e-9 of the radius) counter-clockwise, as Gmsh draws it.
-  c.sweep_ = norm(u + w) <= 1e-9 * c.radius_ ? std::numbers::pi : std::atan2(cross(u, w), dot(u, w));
+  c.sweep_ =
+      norm(u + w) <= 1e-9 * c.radius_ ? std::numbers::pi : std::atan2(cross(u, w), dot(u, w));
   return c;
 }
 
@@ -114,9 +115,10 @@ std::vector<double> mesh_curve(const Curve2d& curve, const CurveSizing& sizing) 
   constexpr double kMostSegments = 1e7;
   const auto too_many = [&](double count) {
     if (!(count <= kMostSegments))
-      throw InputError("the curve would need " +
-                       (count < 1e18 ? std::to_string(static_cast<long long>(count)) : "over 1e18") +
-                       " segments at the sizes asked, more than 10000000");
+      throw InputError(
+          "the curve would need " +
+          (count < 1e18 ? std::to_string(static_cast<long long>(count)) : "over 1e18") +
+          " segments at the sizes asked, more than 10000000");
   };
   too_many(length);
   long n = std::max<long>(sizing.min_segments, std::lround(length));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -57,8 +58,9 @@ class BoundaryBuilder {
     const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(diagonal > 0.0)) throw InputError("the geometry's points all lie at one place");
     if (!std::isfinite(diagonal))
-      throw InputError("the geometry's points lie too far apart for double precision (their box "
-                       "has no finite diagonal)");
+      throw InputError(
+          "the geometry's points lie too far apart for double precision (their box "
+          "has no finite diagonal)");
     size_ = o.hsiz > 0.0 ? o.hsiz : diagonal / 25.0;
     hsiz_ = o.hsiz > 0.0;
     sizing_.hausd = o.hausd > 0.0 ? o.hausd : 1e-3 * diagonal;
@@ -187,8 +189,9 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
                                         const GeometryMeshOptions& options) {
   options.validate();
   if (geometry.surfaces.empty())
-    throw InputError("no Plane Surface: nothing to mesh (add e.g. 'Plane Surface(1) = {1};' "
-                     "over a Curve Loop)");
+    throw InputError(
+        "no Plane Surface: nothing to mesh (add e.g. 'Plane Surface(1) = {1};' "
+        "over a Curve Loop)");
   BoundaryBuilder b(geometry, options);
   // Which surface has each curve on its left, in each direction: two surfaces on the same side
   // of a curve overlap (mesh_domain2d would merge them silently).
@@ -208,7 +211,8 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
         const int signed_id = loop.curves[i], id = std::abs(signed_id);
         auto [from, to] = b.ends(b.curve(id));
         if (signed_id < 0) std::swap(from, to);
-        if (i == 0) first_point = from;
+        if (i == 0)
+          first_point = from;
         else if (from != at_point)
           throw InputError(where + ": curve " + std::to_string(signed_id) + " starts at point " +
                            std::to_string(from) + ", not at point " + std::to_string(at_point) +
@@ -225,8 +229,7 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
       std::vector<Vec2> xy;
       for (const Id v : ring) xy.push_back(b.xy(v));
       const double area = twice_area(xy);
-      if (ring.size() < 3 || !(std::abs(area) > 0.0))
-        throw InputError(where + " encloses no area");
+      if (ring.size() < 3 || !(std::abs(area) > 0.0)) throw InputError(where + " encloses no area");
       // Outer loops counter-clockwise, holes clockwise (the domain on the left of each edge).
       const bool flip = (area > 0.0) != (k == 0);
       for (const int signed_id : loop.curves) {
@@ -281,6 +284,17 @@ void assign_surface_refs(const GeometryBoundary& boundary, Mesh& mesh) {
     ref_of_region[region] = ref;
   }
   for (auto& r : mesh.tri_ref) r = ref_of_region.at(r);
+}
+
+void keep_point_corners(const GeometryBoundary& boundary, Mesh& mesh) {
+  const Mesh& d = boundary.domain;
+  std::set<std::pair<double, double>> points;  // the geometry's points, kept exactly
+  for (std::size_t v = 0; v < d.num_vertices(); ++v)
+    if (d.vert_tag[v] & kTagCorner) points.emplace(d.coords[2 * v], d.coords[2 * v + 1]);
+  for (std::size_t v = 0; v < mesh.num_vertices() && v < mesh.vert_tag.size(); ++v)
+    if ((mesh.vert_tag[v] & kTagCorner) &&
+        !points.count({mesh.coords[2 * v], mesh.coords[2 * v + 1]}))
+      mesh.vert_tag[v] = static_cast<std::uint8_t>(mesh.vert_tag[v] & ~kTagCorner);
 }
 
 }  // namespace riemesh

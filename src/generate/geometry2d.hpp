@@ -56,4 +56,9 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
 /// the ref of the Plane Surface holding its centroid.
 void assign_surface_refs(const GeometryBoundary& boundary, Mesh& mesh);
 
+/// Leaves the corner tag on the geometry's points only: mesh_domain2d, keeping the boundary, tags
+/// every boundary vertex a corner, but the curves are smooth between the points, so a later
+/// `riemesh adapt` may move and add nodes along them.
+void keep_point_corners(const GeometryBoundary& boundary, Mesh& mesh);
+
 }  // namespace riemesh

@@ -31,10 +31,13 @@ CurveSizing uniform(double h, double hausd = 0.0) {
 /// (0.5, 0.5) made of four arcs (curves 5-8, loop 2).
 Geometry2d square_with_hole(double r) {
   Geometry2d g;
-  const double xy[9][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}, {0.5 + r, 0.5},
+  const double xy[9][2] = {{0, 0},         {1, 0},         {1, 1},
+                           {0, 1},         {0.5, 0.5},     {0.5 + r, 0.5},
                            {0.5, 0.5 + r}, {0.5 - r, 0.5}, {0.5, 0.5 - r}};
-  for (int i = 0; i < 9; ++i) g.points.push_back({i + 1, xy[i][0], xy[i][1], 0.0, std::size_t(i + 1)});
-  for (int i = 0; i < 4; ++i) g.curves.push_back({i + 1, GeoCurveKind::kLine, {i + 1, (i + 1) % 4 + 1}, 10});
+  for (int i = 0; i < 9; ++i)
+    g.points.push_back({i + 1, xy[i][0], xy[i][1], 0.0, std::size_t(i + 1)});
+  for (int i = 0; i < 4; ++i)
+    g.curves.push_back({i + 1, GeoCurveKind::kLine, {i + 1, (i + 1) % 4 + 1}, 10});
   for (int i = 0; i < 4; ++i)
     g.curves.push_back({i + 5, GeoCurveKind::kCircle, {i + 6, 5, (i + 1) % 4 + 6}, 11});
   g.loops.push_back({1, {1, 2, 3, 4}, 13});
@@ -143,8 +146,9 @@ TEST(GeometryBoundary, SquareWithACircularHole) {
   // Outer loop counter-clockwise, hole clockwise: the edges' signed areas add up to the domain's.
   double area = 0.0;
   for (std::size_t e = 0; e < d.num_edges(); ++e)
-    area += 0.5 * cross(Vec2{{d.coords[2 * d.edges[2 * e]], d.coords[2 * d.edges[2 * e] + 1]}},
-                        Vec2{{d.coords[2 * d.edges[2 * e + 1]], d.coords[2 * d.edges[2 * e + 1] + 1]}});
+    area +=
+        0.5 * cross(Vec2{{d.coords[2 * d.edges[2 * e]], d.coords[2 * d.edges[2 * e] + 1]}},
+                    Vec2{{d.coords[2 * d.edges[2 * e + 1]], d.coords[2 * d.edges[2 * e + 1] + 1]}});
   EXPECT_NEAR(area, 1.0 - std::numbers::pi * 0.04, 2e-3);
 
   Mesh2dOptions mo;
@@ -160,6 +164,11 @@ TEST(GeometryBoundary, SquareWithACircularHole) {
   }
   EXPECT_NEAR(tri_area, area, 1e-12);
   EXPECT_EQ(r.holes, 1);
+  // Corners: the 8 points of the geometry (square corners, arc ends) only.
+  keep_point_corners(b, r.mesh);
+  int corners = 0;
+  for (const std::uint8_t tag : r.mesh.vert_tag) corners += (tag & kTagCorner) != 0;
+  EXPECT_EQ(corners, 8);
 }
 
 TEST(GeometryBoundary, FilledHoleIsASecondSurfaceWithItsRef) {
@@ -175,9 +184,9 @@ TEST(GeometryBoundary, FilledHoleIsASecondSurfaceWithItsRef) {
   assign_surface_refs(b, r.mesh);
   std::map<int, double> area;
   for (std::size_t t = 0; t < r.mesh.num_triangles(); ++t)
-    area[r.mesh.tri_ref[t]] += 0.5 * twice_area(r.mesh, r.mesh.triangles[3 * t],
-                                                r.mesh.triangles[3 * t + 1],
-                                                r.mesh.triangles[3 * t + 2]);
+    area[r.mesh.tri_ref[t]] +=
+        0.5 * twice_area(r.mesh, r.mesh.triangles[3 * t], r.mesh.triangles[3 * t + 1],
+                         r.mesh.triangles[3 * t + 2]);
   ASSERT_EQ(area.size(), 2u);
   EXPECT_NEAR(area[1] + area[2], 1.0, 1e-12);
   EXPECT_NEAR(area[2], std::numbers::pi * 0.04, 2e-3);
