@@ -33,7 +33,8 @@ struct MeshArgs {
 };
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 /// Runs mesh_domain2d on a domain, errors prefixed with the input's name, progress unless quiet.
@@ -69,7 +70,8 @@ void finish(const MeshArgs& a, const Mesh2dResult& r) {
 /// --hausd), then the domain they bound, its boundary kept, sizes inside from the boundary's.
 void mesh_geometry(MeshArgs& a) {
   if (!a.metric.empty() || !a.holes.empty())
-    throw InputError(a.input + ": --metric and --hole apply to a domain .mesh; a .geo is sized "
+    throw InputError(a.input +
+                     ": --metric and --hole apply to a domain .mesh; a .geo is sized "
                      "by --hsiz, its points' lc and --hausd, and its holes are its Plane "
                      "Surfaces' inner Curve Loops");
   const Geometry2d geometry = read_geo(a.input);
@@ -83,8 +85,10 @@ void mesh_geometry(MeshArgs& a) {
     boundary = mesh_geometry_boundary(geometry, go);
   } catch (const InputError& e) {
     std::string msg = e.what();
-    if (msg.rfind("line ", 0) == 0) msg = a.input + ":" + msg.substr(5);
-    else msg = a.input + ": " + msg;
+    if (msg.rfind("line ", 0) == 0)
+      msg = a.input + ":" + msg.substr(5);
+    else
+      msg = a.input + ": " + msg;
     throw InputError(msg);
   }
   if (!a.quiet) {
@@ -161,11 +165,12 @@ void run(MeshArgs& a) {
 void register_mesh(CLI::App& app) {
   auto a = std::make_shared<MeshArgs>();
   auto* cmd = app.add_subcommand(
-      "mesh", "Mesh a planar domain from its boundary Edges or from a Gmsh .geo geometry (curves "
-              "meshed to the sizes within --hausd; Delaunay, then optimisation), or the "
-              "volume inside a closed surface (Delaunay of its vertices, boundary recovered by "
-              "Steiner points on the surface, reported; then field points at --hsiz or the "
-              "boundary's sizes, inserted by Delaunay, optimised with the surface kept)");
+      "mesh",
+      "Mesh a planar domain from its boundary Edges or from a Gmsh .geo geometry (curves "
+      "meshed to the sizes within --hausd; Delaunay, then optimisation), or the "
+      "volume inside a closed surface (Delaunay of its vertices, boundary recovered by "
+      "Steiner points on the surface, reported; then field points at --hsiz or the "
+      "boundary's sizes, inserted by Delaunay, optimised with the surface kept)");
   cmd->add_option("input", a->input,
                   "Domain: a 2D .mesh/.meshb/.msh whose Edges (with refs) bound it, each with "
                   "the domain on its left (outer loops counter-clockwise, holes clockwise); or a "

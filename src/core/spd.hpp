@@ -76,8 +76,7 @@ inline SymMat<2> exp_sym_2d(const SymMat<2>& m) {
     even = e * (1.0 + d2 * (0.5 + d2 / 24.0));
     odd = e * (1.0 + d2 * (1.0 / 6.0 + d2 / 120.0));
   } else {
-    const double delta = std::sqrt(d2), plus = fast_exp(mu + delta),
-                 minus = fast_exp(mu - delta);
+    const double delta = std::sqrt(d2), plus = fast_exp(mu + delta), minus = fast_exp(mu - delta);
     even = 0.5 * (plus + minus);
     odd = 0.5 * (plus - minus) / delta;
   }

@@ -84,8 +84,9 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   const double triangles = 2.3094 * complexity;  // (4 / √3) C
   if (!(triangles <= kMostTriangles))
     throw InputError("the sizes ask for " +
-                     (triangles < 1e18 ? "about " + std::to_string(static_cast<long long>(triangles))
-                                   : std::string("over 1e18")) +
+                     (triangles < 1e18
+                          ? "about " + std::to_string(static_cast<long long>(triangles))
+                          : std::string("over 1e18")) +
                      " triangles, more than 200000000: check the sizes (--hsiz, --hmin, the "
                      "metric or the geometry's lc)");
   // Field points on the boundary-only triangulation, before any tag meant for adapt2d.

@@ -69,7 +69,7 @@ struct GeoPhysical {
 };
 
 struct Geometry2d {
-  std::vector<GeoPoint> points;    ///< in the order of the file
+  std::vector<GeoPoint> points;  ///< in the order of the file
   std::vector<GeoCurve> curves;
   std::vector<GeoLoop> loops;
   std::vector<GeoSurface> surfaces;
