@@ -1,11 +1,11 @@
 #include "generate/mesh2d.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/error.hpp"
 #include "metric/metric.hpp"
+#include "remesh/prepare_metrics.hpp"
 
 namespace riemesh {
 
@@ -65,30 +65,9 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   } else {
     metrics = boundary_sizes(start);
   }
-  // The size field's triangle count, estimated before any point is added ((4/√3) ∫ sqrt(det M),
-  // each triangle of the boundary-only triangulation in the mean of its vertex metrics): a size
-  // far too small for the domain (a mistyped --hsiz or lc) is refused at once instead of
-  // exhausting the memory.
-  double complexity = 0.0;
-  for (std::size_t t = 0; t < start.num_triangles(); ++t) {
-    const Id* v = &start.triangles[3 * t];
-    const double* a = &start.coords[2 * static_cast<std::size_t>(v[0])];
-    const double* b = &start.coords[2 * static_cast<std::size_t>(v[1])];
-    const double* c = &start.coords[2 * static_cast<std::size_t>(v[2])];
-    const double area =
-        0.5 * std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-    const SymMat2 mean = (1.0 / 3.0) * (metrics[v[0]] + metrics[v[1]] + metrics[v[2]]);
-    complexity += area * std::sqrt(det(mean));
-  }
-  constexpr double kMostTriangles = 2e8;
-  const double triangles = 2.3094 * complexity;  // (4 / √3) C
-  if (!(triangles <= kMostTriangles))
-    throw InputError("the sizes ask for " +
-                     (triangles < 1e18
-                          ? "about " + std::to_string(static_cast<long long>(triangles))
-                          : std::string("over 1e18")) +
-                     " triangles, more than 200000000: check the sizes (--hsiz, --hmin, the "
-                     "metric or the geometry's lc)");
+  // A size far too small for the domain (a mistyped --hsiz or lc) is refused before any point
+  // is added instead of exhausting the memory: at most 1e8 vertices (about 2e8 triangles).
+  require_reachable_complexity<2>(start, metrics, kMostVertices2d);
   // Field points on the boundary-only triangulation, before any tag meant for adapt2d.
   const FieldPointStats field_points = insert_field_points2d(start, metrics, options.adapt.interp);
   bool given_required = false;

@@ -7,12 +7,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <string>
 
 #include "core/error.hpp"
-#include "core/predicates.hpp"
 #include "mesh/distance.hpp"
 #include "metric/metric.hpp"
+#include "remesh/prepare_metrics.hpp"
 #include "remesh/simplex_geometry.hpp"
 
 namespace riemesh {
@@ -207,26 +206,12 @@ FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions option
     return hsiz > 0.0 ? std::vector<double>(v.num_vertices(), hsiz) : boundary_sizes(v);
   };
   const std::vector<double> first_sizes = sizes_of(first.volume);
-  // The tet count the sizes ask for, 6√2 ∫ h⁻³ (each tet in the mean of its vertices' h⁻³),
-  // before any point is added: a size far too small (a mistyped --hsiz) is refused at once
-  // instead of running for hours.
-  double count = 0.0;
-  const Mesh& v = first.volume;
-  for (std::size_t t = 0; t < v.num_tets(); ++t) {
-    const double* p[4];
-    double density = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const auto id = static_cast<std::size_t>(v.tets[4 * t + k]);
-      p[k] = &v.coords[3 * id];
-      density += 0.25 / (first_sizes[id] * first_sizes[id] * first_sizes[id]);
-    }
-    count += 8.485281374238571 * std::abs(orient3d(p[0], p[1], p[2], p[3])) / 6.0 * density;
-  }
-  if (!(count <= 2e8))
-    throw InputError("the sizes ask for " +
-                     (count < 1e18 ? "about " + std::to_string(static_cast<long long>(count))
-                                   : std::string("over 1e18")) +
-                     " tetrahedra, more than 200000000: check the sizes (--hsiz)");
+  // A size far too small (a mistyped --hsiz) is refused before any point is added instead of
+  // running for hours: at most 3.5e7 vertices (about 2e8 tets).
+  std::vector<SymMat3> first_metrics(first_sizes.size());
+  for (std::size_t v = 0; v < first_sizes.size(); ++v)
+    first_metrics[v] = isotropic_metric<3>(first_sizes[v]);
+  require_reachable_complexity<3>(first.volume, first_metrics, kMostVertices3d);
   FieldPoints3 points = field_points3d(first.volume, first_sizes);
   first = {};
   BoundaryRecoveryOptions ro;

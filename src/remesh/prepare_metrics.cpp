@@ -25,12 +25,11 @@ std::string num(double v) {
 template <int D>
 constexpr double kVerticesPerComplexity = D == 2 ? 1.1547005383792515 : 1.4142135623730951;
 
-/// Throws InputError if the unit mesh of the metric would need more vertices than ids hold, or
-/// if the count overflows (a tensor whose determinant is infinite), naming the place of the
-/// finest size (by coordinates: the drivers work on a renumbered copy). Without it such a field
-/// ran for hours (complexity 1e12) or crashed on non-finite lengths (a tensor of 1e308).
+}  // namespace
+
 template <int D>
-void require_reachable_complexity(const Mesh& in, const std::vector<SymMat<D>>& m) {
+void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m,
+                                  double max_vertices) {
   // Only the order of magnitude matters here: each element's measure times the mean of its
   // vertices' sqrt(det M) (an upper bound of the log-Euclidean complexity, one root per vertex).
   const std::vector<Id>& elems = D == 2 ? in.triangles : in.tets;
@@ -48,7 +47,8 @@ void require_reachable_complexity(const Mesh& in, const std::vector<SymMat<D>>& 
     total += std::abs(simplex_measure(p)) * mean;
   }
   const double vertices = kVerticesPerComplexity<D> * total;
-  if (vertices <= static_cast<double>(std::numeric_limits<Id>::max())) return;
+  const double ids = static_cast<double>(std::numeric_limits<Id>::max());
+  if (vertices <= std::min(max_vertices, ids)) return;
   std::size_t finest = 0;
   for (std::size_t v = 1; v < m.size(); ++v)
     if (!(det(m[v]) <= det(m[finest]))) finest = v;
@@ -58,12 +58,15 @@ void require_reachable_complexity(const Mesh& in, const std::vector<SymMat<D>>& 
   throw InputError(
       "the metric asks for " +
       (std::isfinite(vertices) ? "about " + num(vertices) : std::string("an unbounded number of")) +
-      " vertices, more than the 2^31 - 1 ids hold; finest size " +
+      " vertices, more than " +
+      (max_vertices < ids ? num(max_vertices) : std::string("the 2^31 - 1 ids hold")) +
+      "; finest size " +
       (std::isfinite(d) ? num(std::pow(d, -0.5 / D)) : std::string("~0 (determinant overflows)")) +
       " near " + where + ") (see --hmin)");
 }
 
-}  // namespace
+template void require_reachable_complexity<2>(const Mesh&, std::span<const SymMat2>, double);
+template void require_reachable_complexity<3>(const Mesh&, std::span<const SymMat3>, double);
 
 template <int D>
 std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,

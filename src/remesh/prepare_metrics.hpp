@@ -22,6 +22,16 @@ namespace riemesh {
 template <int D>
 void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics);
 
+/// Throws InputError if the unit mesh of the metrics m (one per vertex of `in`, whose triangles
+/// (D = 2) or tets (D = 3) cover the domain) would need more than max_vertices vertices, or more
+/// than 32-bit ids hold, or if the count overflows (a tensor whose determinant is infinite),
+/// naming the place of the finest size (by coordinates: the drivers work on a renumbered copy).
+/// An order of magnitude: each element in the mean of its vertices' sqrt(det M). Without it such
+/// a field ran for hours (complexity 1e12) or crashed on non-finite lengths (a tensor of 1e308).
+template <int D>
+void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m,
+                                  double max_vertices = 2147483647.0);
+
 template <int D>
 std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
                                        std::span<const SymMat<D>> metrics,
