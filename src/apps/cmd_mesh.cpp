@@ -84,12 +84,7 @@ void mesh_geometry(MeshArgs& a) {
   try {
     boundary = mesh_geometry_boundary(geometry, go);
   } catch (const InputError& e) {
-    std::string msg = e.what();
-    if (msg.rfind("line ", 0) == 0)
-      msg = a.input + ":" + msg.substr(5);
-    else
-      msg = a.input + ": " + msg;
-    throw InputError(msg);
+    throw InputError(geo_message(a.input, e.what()));
   }
   if (!a.quiet) {
     for (const std::string& ignored : geometry.ignored)

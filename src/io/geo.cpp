@@ -397,14 +397,17 @@ void Parser::physical(const Token& head, const Token& sub) {
 
 Geometry2d parse_geo(std::string_view text) { return Parser(text).run(); }
 
+std::string geo_message(const std::string& path, std::string_view message) {
+  if (message.starts_with("line ")) return path + ":" + std::string(message.substr(5));
+  return path + ": " + std::string(message);
+}
+
 Geometry2d read_geo(const std::string& path) {
   const std::string text = read_file_bytes(path);  // "PATH: cannot open for reading: ..."
   try {
     return parse_geo(text);
   } catch (const InputError& e) {
-    std::string_view message = e.what();
-    if (message.starts_with("line ")) message.remove_prefix(5);
-    throw InputError(path + ":" + std::string(message));
+    throw InputError(geo_message(path, e.what()));
   }
 }
 

@@ -87,4 +87,8 @@ Geometry2d parse_geo(std::string_view text);
 /// Reads a .geo file: parse_geo with errors as "PATH:N: message" (and "PATH: cannot open").
 Geometry2d read_geo(const std::string& path);
 
+/// An error message of a stage reading the geometry of file `path`: "line N: text" becomes
+/// "PATH:N: text", any other message "PATH: message".
+std::string geo_message(const std::string& path, std::string_view message);
+
 }  // namespace riemesh
