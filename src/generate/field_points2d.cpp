@@ -4,15 +4,19 @@
 #include <cmath>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 
 #include "core/error.hpp"
-#include "core/predicates.hpp"
 #include "generate/cdt2d.hpp"
+#include "generate/filtered_predicates2d.hpp"
 #include "mesh/hilbert.hpp"
 
 namespace riemesh {
 
 namespace {
+
+using detail::incircle_sign;
+using detail::orient2d_sign;
 
 double metric_length(const SymMat2& m, double dx, double dy) {
   return std::sqrt(m.c[0] * dx * dx + 2.0 * m.c[1] * dx * dy + m.c[2] * dy * dy);
@@ -81,9 +85,10 @@ class Refiner {
     const double p[2] = {c.x, c.y};
     const Id t = locate(p, last_ != kNoId ? last_ : c.hint);
     if (t == kNoId) return false;
+    last_ = t;  // the next candidate is near (Hilbert order), inserted or not
     if (!find_cavity(t, p)) return false;
     for (const Border& b : border_) {
-      if (!(orient2d(pt(b.a), pt(b.b), p) > 0)) return false;  // not star-shaped: keep out
+      if (!(orient2d_sign(pt(b.a), pt(b.b), p) > 0)) return false;  // not star-shaped: keep out
       if (metric_length(c.metric, pt(b.a)[0] - p[0], pt(b.a)[1] - p[1]) < std::sqrt(0.5)) return false;
       if (b.locked && distance_to_edge(c.metric, p, b.a, b.b) < 0.5) return false;
     }
@@ -95,13 +100,28 @@ class Refiner {
     return true;
   }
 
-  void write(Mesh& m) const {
-    m.coords = xy_;
+  /// Room for `more` vertices (each adds 2 triangles): one reallocation per round instead of a
+  /// doubling and a copy of every array as they grow.
+  void reserve(std::size_t more) {
+    const std::size_t nv = xy_.size() / 2 + more, nt = num_triangles() + 2 * more;
+    xy_.reserve(2 * nv);
+    metrics_.reserve(nv);
+    fan_.reserve(nv);
+    tri_.reserve(3 * nt);
+    nbr_.reserve(3 * nt);
+    locked_.reserve(3 * nt);
+    tref_.reserve(nt);
+    mark_.reserve(nt);
+  }
+
+  /// Moves the triangulation into m (the refiner is left empty).
+  void write(Mesh& m) {
+    m.coords = std::move(xy_);
     m.vert_ref.resize(m.num_vertices(), 0);
     m.vert_tag.resize(m.num_vertices(), kTagNone);
-    m.triangles = tri_;
-    m.tri_ref = tref_;
-    m.tri_tag.assign(num_triangles(), kTagNone);
+    m.triangles = std::move(tri_);
+    m.tri_ref = std::move(tref_);
+    m.tri_tag.assign(m.num_triangles(), kTagNone);
   }
 
  private:
@@ -118,7 +138,8 @@ class Refiner {
       int cross = -1;
       for (int k = 0; k < 3 && cross < 0; ++k) {
         const int e = (k + static_cast<int>(step % 3)) % 3;
-        if (orient2d(pt(tri_[3 * t + (e + 1) % 3]), pt(tri_[3 * t + (e + 2) % 3]), p) < 0) cross = e;
+        if (orient2d_sign(pt(tri_[3 * t + (e + 1) % 3]), pt(tri_[3 * t + (e + 2) % 3]), p) < 0)
+          cross = e;
       }
       if (cross < 0) return t;
       const Id g = nbr_[3 * t + cross];
@@ -127,8 +148,8 @@ class Refiner {
     }
     for (std::size_t k = 0; k < num_triangles(); ++k) {
       const Id* v = &tri_[3 * k];
-      if (orient2d(pt(v[0]), pt(v[1]), p) >= 0 && orient2d(pt(v[1]), pt(v[2]), p) >= 0 &&
-          orient2d(pt(v[2]), pt(v[0]), p) >= 0)
+      if (orient2d_sign(pt(v[0]), pt(v[1]), p) >= 0 && orient2d_sign(pt(v[1]), pt(v[2]), p) >= 0 &&
+          orient2d_sign(pt(v[2]), pt(v[0]), p) >= 0)
         return static_cast<Id>(k);
     }
     return kNoId;
@@ -143,9 +164,10 @@ class Refiner {
     border_.clear();
     for (int s = 0; s < 3; ++s) {
       const Id h = 3 * t + s;
-      if (locked_[h] && orient2d(pt(from(h)), pt(to(h)), p) == 0) return false;
+      if (locked_[h] && orient2d_sign(pt(from(h)), pt(to(h)), p) == 0) return false;
     }
-    if (!(incircle(pt(tri_[3 * t]), pt(tri_[3 * t + 1]), pt(tri_[3 * t + 2]), p) > 0)) return false;
+    if (!(incircle_sign(pt(tri_[3 * t]), pt(tri_[3 * t + 1]), pt(tri_[3 * t + 2]), p) > 0))
+      return false;
     cavity_.push_back(t);
     mark_[t] = in;
     for (std::size_t k = 0; k < cavity_.size(); ++k) {
@@ -157,7 +179,7 @@ class Refiner {
           if (mark_[n] == in) continue;
           if (mark_[n] != out) {
             const Id* v = &tri_[3 * n];
-            if (incircle(pt(v[0]), pt(v[1]), pt(v[2]), p) > 0) {
+            if (incircle_sign(pt(v[0]), pt(v[1]), pt(v[2]), p) > 0) {
               mark_[n] = in;
               cavity_.push_back(n);
               continue;
@@ -239,6 +261,7 @@ FieldPointStats insert_field_points2d(Mesh& mesh, std::vector<SymMat2>& metrics,
     xy.reserve(2 * cands.size());
     for (const Candidate& c : cands) xy.insert(xy.end(), {c.x, c.y});
     std::size_t added = 0;
+    r.reserve(cands.size());
     for (const Id k : hilbert_order(xy, 2)) {
       if (r.insert(cands[k])) ++added;
       else ++stats.rejected;
