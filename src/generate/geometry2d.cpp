@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <set>
@@ -10,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "generate/curve2d.hpp"
+#include "generate/mesh2d.hpp"  // kMostVertices2d
 
 namespace riemesh {
 
@@ -84,6 +86,73 @@ class BoundaryBuilder {
     return it == surface_ref_.end() ? id : it->second;
   }
 
+  /// The curve's shape on t in [0, 1].
+  Curve2d shape(const GeoCurve& c) const {
+    const auto at = [&](std::size_t k) {
+      const GeoPoint& p = g_.points[point_.at(c.points[k])];
+      return Vec2{{p.x, p.y}};
+    };
+    if (c.kind == GeoCurveKind::kCircle) return Curve2d::arc(at(0), at(1), at(2));
+    if (c.kind == GeoCurveKind::kSpline) {
+      std::vector<Vec2> through;
+      for (std::size_t k = 0; k < c.points.size(); ++k) through.push_back(at(k));
+      const auto [first, last] = ends(c);
+      return Curve2d::spline(std::move(through), first == last);
+    }
+    return Curve2d::segment(at(0), at(1));
+  }
+
+  /// The sizes asked at the curve's start and end (linear in between): --hsiz; else the lc of
+  /// its end points (one given: that one, as Gmsh); else the default.
+  std::pair<double, double> end_sizes(const GeoCurve& c) const {
+    if (!sized_by_points(c)) return {size_, size_};
+    const auto [first, last] = ends(c);
+    const double la = g_.points[point_.at(first)].lc, lb = g_.points[point_.at(last)].lc;
+    return {la > 0.0 ? la : lb, lb > 0.0 ? lb : la};
+  }
+  bool sized_by_points(const GeoCurve& c) const {
+    const auto [first, last] = ends(c);
+    return !hsiz_ && (g_.points[point_.at(first)].lc > 0.0 || g_.points[point_.at(last)].lc > 0.0);
+  }
+
+  /// Refuses a surface whose sizes ask for more than kMostVertices2d vertices before any curve
+  /// is meshed (a mistyped lc or --hsiz would otherwise first mesh millions of boundary nodes).
+  /// A lower bound on the count: no size inside exceeds 1.5 h, h the largest size asked on the
+  /// surface's curves clamped to [hmin, hmax] (a curve's segments are at most 1.5 times its
+  /// sizes, the sizes inside interpolate the boundary's, gradation only shrinks them), and
+  /// a unit equilateral triangle covers √3/4 h², two per vertex: (2/√3) area / (1.5 h)²,
+  /// with half the area of the loops sampled 16 times per curve piece (chords).
+  void require_reachable_size(const GeoSurface& s) const {
+    double largest = 0.0, twice = 0.0;
+    for (std::size_t k = 0; k < s.loops.size(); ++k) {
+      std::vector<Vec2> ring;
+      for (const int signed_id : loop(s.loops[k]).curves) {
+        const GeoCurve& c = curve(std::abs(signed_id));
+        const auto [a, b] = end_sizes(c);
+        largest = std::max({largest, a, b});
+        const Curve2d shape = this->shape(c);
+        const int n = 16 * shape.pieces();
+        for (int i = 0; i < n; ++i) {
+          const double t = static_cast<double>(signed_id > 0 ? i : n - i) / n;
+          ring.push_back(shape.at(t).p);
+        }
+      }
+      const double a = std::abs(twice_area(ring));
+      twice += k == 0 ? a : -a;
+    }
+    const double h = std::min(std::max(largest, sizing_.hmin), sizing_.hmax);
+    const double area = 0.5 * std::max(0.0, 0.5 * twice);
+    const double vertices = 2.0 / std::sqrt(3.0) * area / (2.25 * h * h);
+    if (vertices > kMostVertices2d) {
+      char msg[256];
+      std::snprintf(msg, sizeof msg,
+                    "Plane Surface %d: its sizes (at most %g) ask for more than %g vertices "
+                    "over its area (about %g); see --hsiz, --hmin and the points' lc",
+                    s.id, h, kMostVertices2d, 0.5 * twice);
+      throw InputError(line_of(s.line) + msg);
+    }
+  }
+
   /// The mesh vertex of a geometry point (a corner), made at its first use.
   Id vertex(int point_id) {
     const auto [it, fresh] = vertex_.emplace(point_id, kNoId);
@@ -99,32 +168,14 @@ class BoundaryBuilder {
     const auto found = nodes_.find(id);
     if (found != nodes_.end()) return found->second;
     const GeoCurve& c = curve(id);
-    const auto at = [&](int k) {
-      const GeoPoint& p = g_.points[point_.at(c.points[k])];
-      return Vec2{{p.x, p.y}};
-    };
     const auto [first, last] = ends(c);
-    Curve2d shape = Curve2d::segment(at(0), at(1));
+    const Curve2d shape = this->shape(c);
     CurveSizing sizing = sizing_;
-    if (c.kind == GeoCurveKind::kCircle) {
-      shape = Curve2d::arc(at(0), at(1), at(2));
-      sizing.min_segments = 2;
-    } else if (c.kind == GeoCurveKind::kSpline) {
-      std::vector<Vec2> through;
-      for (std::size_t k = 0; k < c.points.size(); ++k) through.push_back(at(static_cast<int>(k)));
-      shape = Curve2d::spline(std::move(through), first == last);
-      sizing.min_segments = first == last ? 3 : 2;
-    }
-    // Sizes: --hsiz; else the lc of the end points, linear along the curve (one given: that
-    // one); else the default.
-    const double la = g_.points[point_.at(first)].lc, lb = g_.points[point_.at(last)].lc;
-    if (hsiz_ || (la <= 0.0 && lb <= 0.0)) {
-      sizing.size = [s = size_](double) { return s; };
-    } else {
-      const double a = la > 0.0 ? la : lb, b = lb > 0.0 ? lb : la;
-      sizing.size = [a, b](double t) { return a + t * (b - a); };
-      ++out_.sized_by_points;
-    }
+    if (c.kind == GeoCurveKind::kCircle) sizing.min_segments = 2;
+    if (c.kind == GeoCurveKind::kSpline) sizing.min_segments = first == last ? 3 : 2;
+    const auto [a, b] = end_sizes(c);
+    sizing.size = [a, b](double t) { return a + t * (b - a); };
+    if (sized_by_points(c)) ++out_.sized_by_points;
     std::vector<double> ts;
     try {
       ts = mesh_curve(shape, sizing);
@@ -193,6 +244,7 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
         "no Plane Surface: nothing to mesh (add e.g. 'Plane Surface(1) = {1};' "
         "over a Curve Loop)");
   BoundaryBuilder b(geometry, options);
+  for (const GeoSurface& s : geometry.surfaces) b.require_reachable_size(s);
   // Which surface has each curve on its left, in each direction: two surfaces on the same side
   // of a curve overlap (mesh_domain2d would merge them silently).
   std::map<std::pair<int, bool>, int> left_of;

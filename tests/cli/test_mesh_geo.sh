@@ -70,4 +70,12 @@ expect_error geo-open-loop mesh "$TMP/open.geo" -o "$TMP/o3.mesh"
 expect_no_file geo-open-loop-no-file "$TMP/o3.mesh"
 printf 'Point(1) = {0, 0, 0};\nLine(1) = {1, 2};\n' >"$TMP/undefined.geo"
 expect_error geo-undefined-point mesh "$TMP/undefined.geo" -o "$TMP/o4.mesh"
+# A size far too small (a mistyped lc): refused before the curves are meshed (it took ~10 s to
+# mesh 2.8 M boundary nodes first), naming the surface's line; no output.
+sed 's/lc = 0.05/lc = 1e-9/' "$GEO/square_hole.geo" >"$TMP/tiny.geo"
+grep -q "lc = 1e-9" "$TMP/tiny.geo" || ko "geo-tiny-lc: the test geometry has no 'lc = 0.05'"
+expect_error geo-tiny-lc mesh "$TMP/tiny.geo" -o "$TMP/o5.mesh"
+"$R" mesh "$TMP/tiny.geo" -o "$TMP/o5.mesh" 2>&1 | grep -Eq "tiny.geo:[0-9]+: Plane Surface [0-9]+: its sizes \(at most [0-9.e+-]+\) ask for more than 1e\+08 vertices" &&
+  ok "geo-tiny-lc-names-surface" || ko "geo-tiny-lc-names-surface"
+expect_no_file geo-tiny-lc-no-file "$TMP/o5.mesh"
 exit $fail

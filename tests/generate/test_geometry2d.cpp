@@ -208,6 +208,31 @@ TEST(GeometryBoundary, PointSizesAndCurvature) {
   EXPECT_NEAR(b.hausd, 1e-4, 0.0);
 }
 
+TEST(GeometryBoundary, SizesFarTooSmallAreRefusedBeforeTheCurvesAreMeshed) {
+  // The square with a hole, area about 0.87: at 1e-5 at least ~2e9 vertices (refused at once,
+  // not after meshing 4e5 boundary nodes); at 1e-4 the lower bound, ~2e7, lets it through (the
+  // domain's own complexity check then decides, with the boundary meshed).
+  GeometryMeshOptions o;
+  o.hsiz = 1e-5;
+  try {
+    mesh_geometry_boundary(square_with_hole(0.2), o);
+    FAIL();
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("line ", 0), 0u) << what;
+    EXPECT_NE(what.find("Plane Surface 1: its sizes (at most 1e-05) ask for more than 1e+08 "
+                        "vertices over its area (about 0.87"),
+              std::string::npos)
+        << what;
+  }
+  Geometry2d g = square_with_hole(0.2);
+  for (GeoPoint& p : g.points) p.lc = 1e-6;  // the points' lc, clamped by hmin
+  o = GeometryMeshOptions{};
+  EXPECT_THROW(mesh_geometry_boundary(g, o), InputError);
+  o.hsiz = 1e-4;
+  EXPECT_NO_THROW(mesh_geometry_boundary(square_with_hole(0.2), o));
+}
+
 TEST(GeometryBoundary, Errors) {
   GeometryMeshOptions o;
   Geometry2d g = square_with_hole(0.2);
