@@ -1,5 +1,6 @@
 // The 2D Delaunay kernel: random points in the unit square.
 //   Sorted/N    points already in Hilbert order, inserted as given (the target: ≥ 5 M/s)
+//   SortedRounds/N  the same points in BRIO's rounds over their order (kRounds: no sort)
 //   Brio/N      unsorted points; BRIO ordering (Hilbert sort per round) included in the time
 // Run: build/bench/riemesh_bench_delaunay2d --benchmark_repetitions=5
 //        --benchmark_report_aggregates_only=true
@@ -52,6 +53,17 @@ void Sorted(benchmark::State& state) {
       benchmark::Counter(double(state.range(0)), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(Sorted)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void SortedRounds(benchmark::State& state) {
+  const std::vector<double> xy = hilbert_sorted(random_square(state.range(0)));
+  for (auto _ : state) {
+    Triangulation2d t = delaunay2d(xy, InsertionOrder::kRounds);
+    benchmark::DoNotOptimize(t.tri.data());
+  }
+  state.counters["points/s"] =
+      benchmark::Counter(double(state.range(0)), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(SortedRounds)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void Brio(benchmark::State& state) {
   const std::vector<double> xy = random_square(state.range(0));

@@ -1,5 +1,6 @@
 // The 3D Delaunay kernel: random points in the unit cube.
 //   Sorted/N    points already in Hilbert order, inserted as given (the issue's target: ≥ 1.5 M/s)
+//   SortedRounds/N  the same points in BRIO's rounds over their order (kRounds: no sort)
 //   Hilbert/N   unsorted points; the Hilbert sort is included in the time
 //   Brio/N      unsorted points; BRIO ordering (Hilbert sort per round) included in the time
 // "points/s" counts the points over the whole call (ordering, insertion, compaction of the result).
@@ -9,8 +10,9 @@
 //      build/bench/riemesh_bench_delaunay3d --node FILE.node [--runs R] [--order brio|hilbert|given]
 //   prints "points N tets T median_seconds S" (median over R runs of delaunay3d, reading excluded).
 // Or the kernel's work per point on N random points, Hilbert-sorted beforehand (as Sorted/N) or in
-// BRIO order, with one run only (for valgrind --tool=callgrind, whose counts the load does not
-// disturb): build/bench/riemesh_bench_delaunay3d --counts N [--order brio]
+// BRIO order, or Hilbert-sorted in rounds (as SortedRounds/N), with one run only (for valgrind
+// --tool=callgrind, whose counts the load does not disturb):
+//      build/bench/riemesh_bench_delaunay3d --counts N [--order brio|rounds]
 // With --hash (and --counts N or --node FILE): prints "tets T hash H raw R", H an FNV-1a hash of
 // the tets, each with its vertices sorted, in sorted order (the same triangulation), R one of the
 // arrays as returned (the same tet numbering and neighbours), to check that a change of the kernel
@@ -68,6 +70,11 @@ void Sorted(benchmark::State& state) {
   run(state, hilbert_sorted(random_cube(state.range(0))), InsertionOrder::kAsGiven);
 }
 BENCHMARK(Sorted)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void SortedRounds(benchmark::State& state) {
+  run(state, hilbert_sorted(random_cube(state.range(0))), InsertionOrder::kRounds);
+}
+BENCHMARK(SortedRounds)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void Hilbert(benchmark::State& state) {
   run(state, random_cube(state.range(0)), InsertionOrder::kHilbert);
@@ -135,9 +142,11 @@ int run_node_file(const char* path, int runs, InsertionOrder order, bool hash) {
   return 0;
 }
 
-int run_counts(std::size_t n, bool brio) {
+/// order: kBrio on random points, kAsGiven or kRounds on Hilbert-sorted ones.
+int run_counts(std::size_t n, InsertionOrder order) {
+  const bool brio = order == InsertionOrder::kBrio;
   const std::vector<double> xyz = brio ? random_cube(n) : hilbert_sorted(random_cube(n));
-  std::vector<Id> ids = insertion_order(xyz, brio ? InsertionOrder::kBrio : InsertionOrder::kAsGiven);
+  std::vector<Id> ids = insertion_order(xyz, order);
   Delaunay3d kernel(&xyz, ids);
   kernel.reserve(ids.size());
   for (std::size_t k = 4; k < ids.size(); ++k) kernel.insert(ids[k]);
@@ -155,7 +164,8 @@ int main(int argc, char** argv) {
   const char* node = nullptr;
   std::size_t counts = 0;
   bool hash = false;
-  bool brio = false;  // --order brio given (for --counts, whose default is Hilbert-sorted points)
+  bool brio = false;    // --order brio given (for --counts, whose default is Hilbert-sorted points)
+  bool rounds = false;  // --order rounds (for --counts: Hilbert-sorted points in rounds)
   int runs = 5;
   InsertionOrder order = InsertionOrder::kBrio;
   for (int i = 1; i < argc; ++i)
@@ -163,6 +173,8 @@ int main(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; ++i) {
     if (std::strcmp(argv[i], "--node") == 0) node = argv[i + 1];
     if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "brio") == 0) brio = true;
+    if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "rounds") == 0)
+      rounds = true;
     if (std::strcmp(argv[i], "--counts") == 0) counts = std::strtoull(argv[i + 1], nullptr, 10);
     if (std::strcmp(argv[i], "--runs") == 0) runs = std::max(1, std::atoi(argv[i + 1]));
     if (std::strcmp(argv[i], "--order") == 0)
@@ -173,7 +185,10 @@ int main(int argc, char** argv) {
   if (node) return run_node_file(node, runs, order, hash);
   if (counts >= 4 && hash)
     return print_hash(random_cube(counts), brio ? InsertionOrder::kBrio : InsertionOrder::kHilbert);
-  if (counts >= 4) return run_counts(counts, brio);
+  if (counts >= 4)
+    return run_counts(counts, brio     ? InsertionOrder::kBrio
+                              : rounds ? InsertionOrder::kRounds
+                                       : InsertionOrder::kAsGiven);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <string>
 
 #include "core/error.hpp"
@@ -325,8 +326,11 @@ double add_super_triangle(Triangulation2d& t) {
 }  // namespace
 
 std::vector<Id> brio_order(std::span<const double> xy) {
-  const std::size_t n = xy.size() / 2;
-  const std::vector<Id> along = hilbert_order(std::vector<double>(xy.begin(), xy.end()), 2);
+  return brio_rounds(hilbert_order(std::vector<double>(xy.begin(), xy.end()), 2));
+}
+
+std::vector<Id> brio_rounds(const std::vector<Id>& along) {
+  const std::size_t n = along.size();
   // Round of a point: the last round holds about half the points, the one before a quarter, ...
   // down to rounds of ~1000 points (smaller first rounds would only add cache misses).
   int rounds = 1;
@@ -340,7 +344,7 @@ std::vector<Id> brio_order(std::span<const double> xy) {
   }
   for (int r = 0; r < rounds; ++r) count[r + 1] += count[r];
   std::vector<Id> order(n);
-  for (const Id v : along) order[count[round[v]]++] = v;  // stable: Hilbert order in each round
+  for (const Id v : along) order[count[round[v]]++] = v;  // stable: the sequence's order
   return order;
 }
 
@@ -370,6 +374,10 @@ Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
   };
   if (order == InsertionOrder::kAsGiven) {
     for (Id v = 0; v < n; ++v) insert(v);
+  } else if (order == InsertionOrder::kRounds) {
+    std::vector<Id> given(static_cast<std::size_t>(n));
+    std::iota(given.begin(), given.end(), Id{0});
+    for (const Id v : brio_rounds(given)) insert(v);
   } else {
     const std::vector<Id> sequence =
         order == InsertionOrder::kBrio

@@ -26,7 +26,10 @@ namespace riemesh {
 enum class InsertionOrder {
   kBrio,     ///< biased randomised rounds, Hilbert-sorted in each (default)
   kHilbert,  ///< one pass along the Hilbert curve
-  kAsGiven,  ///< the input order (for inputs already sorted)
+  kAsGiven,  ///< the input order
+  /// BRIO's rounds over the input order, kept inside each round (brio_rounds): for inputs
+  /// already sorted along a space-filling curve, BRIO's work per point without its sort
+  kRounds,
 };
 
 /// Vertex or half-edge ids of a Triangulation2d: a vector that `resize` does not zero-fill (the
@@ -57,6 +60,13 @@ Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order = In
 
 /// The insertion order used by delaunay2d for kBrio: order[k] = the point inserted k-th.
 std::vector<Id> brio_order(std::span<const double> xy);
+
+/// BRIO's rounds over a sequence of the point ids 0..n-1 (each once): every point's round from
+/// a fixed coin flip of its id — the last round about half the points, the one before a quarter,
+/// ... down to a first round of about 1000 — and the sequence's order kept inside each round.
+/// Deterministic. brio_order is this over the Hilbert order; the kRounds orders of both kernels
+/// over the given order.
+std::vector<Id> brio_rounds(const std::vector<Id>& along);
 
 /// The triangles not touching the super-triangle (3 vertex ids each, counter-clockwise).
 std::vector<Id> delaunay_triangles(const Triangulation2d& t);

@@ -35,7 +35,8 @@ Tetrahedralization delaunay3d(const std::vector<double>& coords,
                               InsertionOrder order = InsertionOrder::kBrio);
 
 /// The insertion order `delaunay3d` uses: order[k] = the point inserted k-th. kBrio: rounds
-/// [n/2, n), [n/4, n/2), ... of a fixed-seed shuffle, each sorted along the Hilbert curve.
+/// [n/2, n), [n/4, n/2), ... of a fixed-seed shuffle, each sorted along the Hilbert curve;
+/// kRounds: brio_rounds over the given order (for points already sorted along a curve).
 std::vector<Id> insertion_order(const std::vector<double>& coords, InsertionOrder order);
 
 /// Counters of one run (for benchmarks and tests of the kernel's work).

@@ -38,6 +38,10 @@ std::vector<Id> insertion_order(const std::vector<double>& coords, InsertionOrde
   std::vector<Id> ids(n);
   std::iota(ids.begin(), ids.end(), Id{0});
   if (order == InsertionOrder::kAsGiven || n == 0) return ids;
+  // Points already sorted along a curve: BRIO's rounds over their order, no sort. Inserted as
+  // given, each point lands on the frontier of the region triangulated so far, next to its flat
+  // hull tets: a third more conflict tests and deleted tets per point than with rounds.
+  if (order == InsertionOrder::kRounds) return brio_rounds(ids);
   const std::vector<std::uint64_t> keys = hilbert_keys(coords, 3);
   if (order == InsertionOrder::kHilbert) {
     sort_by_key(ids, 0, n, keys);

@@ -72,11 +72,39 @@ std::vector<double> random_points(std::size_t n, unsigned seed) {
 
 TEST(Delaunay2d, RandomPointsAllOrders) {
   const std::vector<double> xy = random_points(3000, 1);
-  for (InsertionOrder o : {InsertionOrder::kBrio, InsertionOrder::kHilbert, InsertionOrder::kAsGiven}) {
+  for (InsertionOrder o : {InsertionOrder::kBrio, InsertionOrder::kHilbert, InsertionOrder::kAsGiven,
+                           InsertionOrder::kRounds}) {
     const Triangulation2d t = delaunay2d(xy, o);
     expect_delaunay(t, 3000);
     expect_empty_circles(t);
   }
+}
+
+TEST(Delaunay2d, BrioRoundsKeepTheOrderInsideHalvingRounds) {
+  // A reversed sequence of 20,000 ids: a permutation of it, each id once; inside each round
+  // (a maximal run going down, the sequence's order) the order kept; rounds growing about
+  // twofold to a last one of about half the points; the same again (deterministic).
+  const std::size_t n = 20000;
+  std::vector<Id> along(n);
+  for (std::size_t k = 0; k < n; ++k) along[k] = static_cast<Id>(n - 1 - k);
+  const std::vector<Id> order = brio_rounds(along);
+  ASSERT_EQ(order.size(), n);
+  std::vector<int> seen(n, 0);
+  for (const Id v : order) ++seen[static_cast<std::size_t>(v)];
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(n));
+  std::vector<std::size_t> rounds{1};
+  for (std::size_t k = 1; k < n; ++k) {
+    if (order[k] < order[k - 1])
+      ++rounds.back();
+    else
+      rounds.push_back(1);
+  }
+  ASSERT_GE(rounds.size(), 4u);
+  ASSERT_LE(rounds.size(), 6u);  // rounds down to about 1000 points: 20000 / 2^4 = 1250
+  EXPECT_NEAR(static_cast<double>(rounds.back()), n / 2.0, 0.05 * n);
+  for (std::size_t r = 1; r + 1 < rounds.size(); ++r)
+    EXPECT_NEAR(static_cast<double>(rounds[r + 1]) / static_cast<double>(rounds[r]), 2.0, 0.3);
+  EXPECT_EQ(order, brio_rounds(along));
 }
 
 TEST(Delaunay2d, LargeRandomSet) {
@@ -95,7 +123,7 @@ TEST(Delaunay2d, GridIsFullyCocircular) {
       rotated.insert(rotated.end(), {0.1 + (i - j) * std::sqrt(0.5), 1e3 + (i + j) * std::sqrt(0.5)});
     }
   for (const auto* pts : {&grid, &rotated}) {
-    for (InsertionOrder o : {InsertionOrder::kBrio, InsertionOrder::kAsGiven}) {
+    for (InsertionOrder o : {InsertionOrder::kBrio, InsertionOrder::kAsGiven, InsertionOrder::kRounds}) {
       const Triangulation2d t = delaunay2d(*pts, o);
       expect_delaunay(t, n * n);
       expect_empty_circles(t);
