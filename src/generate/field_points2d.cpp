@@ -22,6 +22,22 @@ double metric_length(const SymMat2& m, double dx, double dy) {
   return std::sqrt(m.c[0] * dx * dx + 2.0 * m.c[1] * dx * dy + m.c[2] * dy * dy);
 }
 
+/// > 0 when p lies strictly inside the circumcircle of the counter-clockwise a, b, c measured in
+/// the metric m (its circumellipse): the in-circle determinant of the points mapped by L, LᵀL =
+/// m, which is det L times the one with each point's lift |q − p|² replaced by (q − p)ᵀ m (q − p)
+/// (BOOK.md §4, anisotropic Delaunay kernel). Double precision: it chooses the cavity, whose
+/// validity (star-shaped from p) is checked exactly afterwards.
+double metric_incircle(const double* a, const double* b, const double* c, const double* p,
+                       const SymMat2& m) {
+  const auto lift = [&](double x, double y) {
+    return m.c[0] * x * x + 2.0 * m.c[1] * x * y + m.c[2] * y * y;
+  };
+  const double ax = a[0] - p[0], ay = a[1] - p[1], bx = b[0] - p[0], by = b[1] - p[1];
+  const double cx = c[0] - p[0], cy = c[1] - p[1];
+  return lift(ax, ay) * (bx * cy - cx * by) + lift(bx, by) * (cx * ay - ax * cy) +
+         lift(cx, cy) * (ax * by - bx * ay);
+}
+
 struct Candidate {
   double x, y;
   SymMat2 metric;
@@ -86,7 +102,12 @@ class Refiner {
     const Id t = locate(p, last_ != kNoId ? last_ : c.hint);
     if (t == kNoId) return false;
     last_ = t;  // the next candidate is near (Hilbert order), inserted or not
-    if (!find_cavity(t, p)) return false;
+    // The cavity in the candidate's metric (anisotropic Delaunay), unless it is isotropic (the
+    // Euclidean test decides the same, exactly); a metric cavity that p does not see whole
+    // (the mesh is not Delaunay in that metric) gives way to the Euclidean one.
+    const bool isotropic = c.metric.c[1] == 0.0 && c.metric.c[0] == c.metric.c[2];
+    if (!find_cavity(t, p, isotropic ? nullptr : &c.metric)) return false;
+    if (!isotropic && !star_shaped(p) && !find_cavity(t, p, nullptr)) return false;
     for (const Border& b : border_) {
       if (!(orient2d_sign(pt(b.a), pt(b.b), p) > 0)) return false;  // not star-shaped: keep out
       if (metric_length(c.metric, pt(b.a)[0] - p[0], pt(b.a)[1] - p[1]) < std::sqrt(0.5)) return false;
@@ -155,9 +176,21 @@ class Refiner {
     return kNoId;
   }
 
+  /// Whether p sees every edge of the cavity's border from inside (exact).
+  bool star_shaped(const double* p) const {
+    for (const Border& b : border_)
+      if (!(orient2d_sign(pt(b.a), pt(b.b), p) > 0)) return false;
+    return true;
+  }
+
   /// The triangles reachable from t without crossing a locked edge whose circumcircle contains
-  /// p strictly. False if p is on a vertex or a locked edge of t.
-  bool find_cavity(Id t, const double* p) {
+  /// p strictly (with `metric`: whose circumcircle in that metric, metric_incircle). False if p
+  /// is on a vertex or a locked edge of t.
+  bool find_cavity(Id t, const double* p, const SymMat2* metric) {
+    const auto conflict = [&](const Id* v) {
+      return metric ? metric_incircle(pt(v[0]), pt(v[1]), pt(v[2]), p, *metric) > 0.0
+                    : incircle_sign(pt(v[0]), pt(v[1]), pt(v[2]), p) > 0;
+    };
     ++stamp_;
     const std::int64_t in = 2 * stamp_, out = in + 1;
     cavity_.clear();
@@ -166,8 +199,7 @@ class Refiner {
       const Id h = 3 * t + s;
       if (locked_[h] && orient2d_sign(pt(from(h)), pt(to(h)), p) == 0) return false;
     }
-    if (!(incircle_sign(pt(tri_[3 * t]), pt(tri_[3 * t + 1]), pt(tri_[3 * t + 2]), p) > 0))
-      return false;
+    if (!conflict(&tri_[3 * t])) return false;
     cavity_.push_back(t);
     mark_[t] = in;
     for (std::size_t k = 0; k < cavity_.size(); ++k) {
@@ -178,8 +210,7 @@ class Refiner {
           const Id n = g / 3;
           if (mark_[n] == in) continue;
           if (mark_[n] != out) {
-            const Id* v = &tri_[3 * n];
-            if (incircle_sign(pt(v[0]), pt(v[1]), pt(v[2]), p) > 0) {
+            if (conflict(&tri_[3 * n])) {
               mark_[n] = in;
               cavity_.push_back(n);
               continue;

@@ -3,7 +3,10 @@
 // unit metric length"): rounds of candidate points placed at unit metric spacing along every
 // edge longer than √2 in the metric, each inserted by constrained Bowyer–Watson (the cavity never
 // crosses a boundary or interface edge) unless it would come closer than 1/√2 to a vertex, or 1/2
-// to a boundary edge, measured in its own metric. The nearest vertex of a Delaunay insertion is on
+// to a boundary edge, measured in its own metric. The cavity is chosen in the candidate's metric
+// (the anisotropic Delaunay kernel, BOOK.md §4: circumcircles measured in that metric), falling
+// back to the Euclidean one when the point does not see the whole metric cavity; isotropic
+// metrics decide with the exact Euclidean test. The nearest vertex of a Delaunay insertion is on
 // its cavity's border, so that check is local. Rounds stop when no point is added.
 //
 // The result is a Delaunay-like mesh with roughly unit edges, a good start for the optimiser
