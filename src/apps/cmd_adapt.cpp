@@ -1,5 +1,7 @@
 // `riemesh adapt`: remesh to a metric field (planar triangles or tetrahedra) or to geometric sizes
 // (surfaces), with MMG-compatible spellings.
+#include <sys/resource.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,20 +11,19 @@
 #include <utility>
 #include <vector>
 
-#include <sys/resource.h>
-
 #include "apps/adapt_surface.hpp"
 #include "apps/commands.hpp"
 #include "apps/field_args.hpp"
 #include "apps/mesh_args.hpp"
+#include "apps/pass_report.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
 #include "metric/element.hpp"
 #include "metric/hessian_metric.hpp"
-#include "metric/recovery.hpp"
 #include "metric/metric.hpp"
+#include "metric/recovery.hpp"
 #include "remesh/adapt2d.hpp"
 #include "remesh/adapt3d.hpp"
 #include "remesh/transfer.hpp"
@@ -111,19 +112,6 @@ std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
   if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
   if (!a.field.empty()) return metric_from_field<2>(a, mesh);
   return naming_file(a.input, [&] { return implied_metric_of_used(mesh); });
-}
-
-void print_pass(const PassStats& s, int verbosity, const char* elements = "triangles") {
-  char stage[48] = "";
-  if (s.stages > 1) std::snprintf(stage, sizeof stage, " (toward the metric: stage %d/%d)", s.stage, s.stages);
-  std::fprintf(stderr, "pass %2d%s: %zu vertices %zu %s, lengths in [1/√2, √2] %.1f%%, q_min %.3f (%.2f s)\n",
-               s.pass, stage, s.vertices, s.triangles, elements, 100.0 * s.len_in, s.q_min, s.seconds);
-  if (verbosity > 0)
-    std::fprintf(stderr,
-                 "         %ld splits %ld collapses %ld swaps %ld moves %ld refused; length "
-                 "min %.3f mean %.3f max %.3f; q mean %.3f\n",
-                 s.splits, s.collapses, s.swaps, s.moves, s.rejected, s.len_min, s.len_mean,
-                 s.len_max, s.q_mean);
 }
 
 /// The surface branch: geometric sizes from --hausd, capped by --hsiz (issue #6).

@@ -10,6 +10,7 @@
 #include "apps/field_args.hpp"
 #include "apps/mesh_args.hpp"
 #include "apps/parse.hpp"
+#include "apps/pass_report.hpp"
 #include "core/error.hpp"
 #include "generate/geometry2d.hpp"
 #include "generate/mesh2d.hpp"
@@ -27,6 +28,7 @@ struct MeshArgs {
   std::string input, output, metric, interp;
   std::vector<std::string> holes;
   bool keep_boundary = false, quiet = false, nofill = false;
+  int verbosity = 0;
   Mesh2dOptions opt;
   const CLI::Option* hausd = nullptr;
   const CLI::Option* hgrad = nullptr;
@@ -41,9 +43,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 Mesh2dResult mesh_domain(const MeshArgs& a, const Mesh& domain) {
   try {
     return mesh_domain2d(domain, a.opt, [&](const PassStats& s) {
-      if (!a.quiet)
-        std::fprintf(stderr, "pass %2d: %zu vertices %zu triangles, q_min %.3f (%.2f s)\n", s.pass,
-                     s.vertices, s.triangles, s.q_min, s.seconds);
+      if (!a.quiet) print_pass(s, a.verbosity);
     });
   } catch (const InputError& e) {
     throw InputError(a.input + ": " + e.what());
@@ -141,6 +141,7 @@ void run(MeshArgs& a) {
     f.hsiz = a.opt.hsiz;
     if (a.hgrad->count() > 0) f.hgrad = a.opt.adapt.hgrad;
     f.quiet = a.quiet;
+    f.verbosity = a.verbosity;
     mesh_volume_from_surface(a.input, domain, a.output, f);
     return;
   }
@@ -197,6 +198,8 @@ void register_mesh(CLI::App& app) {
                   "Metric interpolation inside the domain (see riemesh adapt -h); default iso-linear "
                   "(sizes linear between boundary vertices, as Gmsh), log with --metric");
   cmd->add_flag("--quiet,-q", a->quiet, "No progress lines");
+  cmd->add_option("-v,--verbose", a->verbosity,
+                  "Verbosity (1: per-pass operator counts, lengths and mean quality)");
   cmd->footer(
       "Regions between edges get triangle refs 1, 2, ... (in the order of their first edge); a "
       "region whose edges all leave it on their right is a hole unless --hole points are given.");

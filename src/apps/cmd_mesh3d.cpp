@@ -5,6 +5,7 @@
 
 #include <cstdio>
 
+#include "apps/pass_report.hpp"
 #include "core/error.hpp"
 #include "generate/boundary_recovery3d.hpp"
 #include "generate/volume_fill3d.hpp"
@@ -31,9 +32,7 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
       Adapt3dOptions o;
       o.hgrad = args.hgrad;
       FilledVolume filled = mesh_volume(surface, args.hsiz, o, [&](const PassStats& p) {
-        if (!args.quiet)
-          std::fprintf(stderr, "fill pass %2d: %zu vertices %zu tetrahedra, q_min %.3f (%.2f s)\n",
-                       p.pass, p.vertices, p.triangles, p.q_min, p.seconds);
+        if (!args.quiet) print_pass(p, args.verbosity, "tetrahedra", "fill ");
         q_min = p.q_min;
       });
       s = filled.stats;

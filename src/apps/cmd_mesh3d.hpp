@@ -13,6 +13,7 @@ struct VolumeFillArgs {
   double hsiz = 0.0;   ///< interior size; 0: from the boundary edges
   double hgrad = 1.3;  ///< size gradation of the fill (0: off)
   bool quiet = false;
+  int verbosity = 0;  ///< 1: per-pass statistics of the fill
 };
 
 /// Tetrahedralises the closed surface `surface` read from `input` (boundary recovered with

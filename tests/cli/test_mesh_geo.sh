@@ -70,6 +70,11 @@ expect_error geo-open-loop mesh "$TMP/open.geo" -o "$TMP/o3.mesh"
 expect_no_file geo-open-loop-no-file "$TMP/o3.mesh"
 printf 'Point(1) = {0, 0, 0};\nLine(1) = {1, 2};\n' >"$TMP/undefined.geo"
 expect_error geo-undefined-point mesh "$TMP/undefined.geo" -o "$TMP/o4.mesh"
+# -v 1: each pass line (with the fraction of lengths in band) and its detail line.
+"$R" mesh "$GEO/naca0012.geo" -o "$TMP/v.mesh" -v 1 2>&1 |
+  grep -Eq "^ +[0-9]+ splits [0-9]+ collapses [0-9]+ swaps [0-9]+ moves .* q mean [0-9.]+$" &&
+  "$R" mesh "$GEO/naca0012.geo" -o "$TMP/v.mesh" 2>&1 | grep -q "^pass  1: .* lengths in \[1/√2, √2\] [0-9.]*%" &&
+  ok "geo-verbose" || ko "geo-verbose"
 # A size far too small (a mistyped lc): refused before the curves are meshed (it took ~10 s to
 # mesh 2.8 M boundary nodes first), naming the surface's line; no output.
 sed 's/lc = 0.05/lc = 1e-9/' "$GEO/square_hole.geo" >"$TMP/tiny.geo"
