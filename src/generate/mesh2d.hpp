@@ -1,7 +1,8 @@
 #pragma once
 // Meshing a planar domain from its boundary (issue #8, BOOK.md §4): the constrained Delaunay
 // triangulation of the boundary vertices with exterior and holes removed (domain2d.hpp), field
-// points inserted at unit metric spacing (field_points2d.hpp), then the mesh optimised by the 2D
+// points inserted at unit metric spacing (field_points2d.hpp; a boundary to remesh is first cut
+// to the sizes on its smooth reconstruction), then the mesh optimised by the 2D
 // adaptation (adapt2d.hpp: splits, collapses, swaps and smoothing until the edges have unit length
 // in the size field; with the boundary remeshed to the size field unless it is kept).
 //
