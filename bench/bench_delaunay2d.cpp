@@ -43,36 +43,28 @@ std::vector<double> hilbert_sorted(const std::vector<double>& xy) {
   return out;
 }
 
-void Sorted(benchmark::State& state) {
-  const std::vector<double> xy = hilbert_sorted(random_square(state.range(0)));
+/// Triangulates xy with `order` in the timed loop; "points/s" over the whole call.
+void run(benchmark::State& state, const std::vector<double>& xy, InsertionOrder order) {
   for (auto _ : state) {
-    Triangulation2d t = delaunay2d(xy, InsertionOrder::kAsGiven);
+    Triangulation2d t = delaunay2d(xy, order);
     benchmark::DoNotOptimize(t.tri.data());
   }
   state.counters["points/s"] =
       benchmark::Counter(double(state.range(0)), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void Sorted(benchmark::State& state) {
+  run(state, hilbert_sorted(random_square(state.range(0))), InsertionOrder::kAsGiven);
 }
 BENCHMARK(Sorted)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void SortedRounds(benchmark::State& state) {
-  const std::vector<double> xy = hilbert_sorted(random_square(state.range(0)));
-  for (auto _ : state) {
-    Triangulation2d t = delaunay2d(xy, InsertionOrder::kRounds);
-    benchmark::DoNotOptimize(t.tri.data());
-  }
-  state.counters["points/s"] =
-      benchmark::Counter(double(state.range(0)), benchmark::Counter::kIsIterationInvariantRate);
+  run(state, hilbert_sorted(random_square(state.range(0))), InsertionOrder::kRounds);
 }
 BENCHMARK(SortedRounds)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void Brio(benchmark::State& state) {
-  const std::vector<double> xy = random_square(state.range(0));
-  for (auto _ : state) {
-    Triangulation2d t = delaunay2d(xy, InsertionOrder::kBrio);
-    benchmark::DoNotOptimize(t.tri.data());
-  }
-  state.counters["points/s"] =
-      benchmark::Counter(double(state.range(0)), benchmark::Counter::kIsIterationInvariantRate);
+  run(state, random_square(state.range(0)), InsertionOrder::kBrio);
 }
 BENCHMARK(Brio)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
