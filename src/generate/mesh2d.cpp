@@ -131,9 +131,11 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   std::vector<SymMat2> given = options.metric;
   if (given.empty() && options.hsiz > 0.0)
     given.assign(boundary.num_vertices(), isotropic_metric<2>(options.hsiz));
-  const bool cut = !options.keep_boundary && !given.empty();
-  const Mesh split = cut ? split_boundary(boundary, given, options.adapt) : Mesh{};
-  Domain2d domain = triangulate_domain2d(cut ? split : boundary, options.holes);
+  // The boundary as given is checked first (open loops, crossing or zero-length edges, hole
+  // points): cut first, two crossing edges would meet at a shared new vertex.
+  Domain2d domain = triangulate_domain2d(boundary, options.holes);
+  if (!options.keep_boundary && !given.empty())
+    domain = triangulate_domain2d(split_boundary(boundary, given, options.adapt), options.holes);
   Mesh& start = domain.mesh;
   if (start.num_edges() == 0 || start.num_vertices() == 0)
     throw InputError("the domain has no boundary edge left to mesh");

@@ -62,6 +62,11 @@ expect_error mesh-crossing mesh "$TMP/bowtie.mesh" -o "$TMP/o2.mesh"
 "$R" mesh "$TMP/bowtie.mesh" -o "$TMP/o2.mesh" 2>&1 | grep -q "boundary edge 3 (1, 0)-(0, 1) and boundary edge 1 (0, 0)-(1, 1) cross near (0.5, 0.5)" &&
   ok "mesh-crossing-names-edges" || ko "mesh-crossing-names-edges"
 expect_no_file mesh-crossing-no-file "$TMP/o2.mesh"
+# The same with --hsiz (the boundary is then cut to the size before meshing: the crossing is
+# found on the edges as given, where cut first they would meet at a shared midpoint).
+"$R" mesh "$TMP/bowtie.mesh" -o "$TMP/o2.mesh" --hsiz 0.1 2>&1 | grep -q "boundary edge 3 (1, 0)-(0, 1) and boundary edge 1 (0, 0)-(1, 1) cross near (0.5, 0.5)" &&
+  ok "mesh-crossing-hsiz" || ko "mesh-crossing-hsiz"
+expect_no_file mesh-crossing-hsiz-no-file "$TMP/o2.mesh"
 expect_error mesh-hole-outside mesh "$TMP/hole.mesh" -o "$TMP/o3.mesh" --hole 9,9
 expect_error mesh-bad-hole mesh "$TMP/hole.mesh" -o "$TMP/o4.mesh" --hole 1
 expect_error mesh-no-output mesh "$TMP/hole.mesh"
