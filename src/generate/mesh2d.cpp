@@ -134,23 +134,25 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   // The boundary as given is checked first (open loops, crossing or zero-length edges, hole
   // points): cut first, two crossing edges would meet at a shared new vertex.
   Domain2d domain = triangulate_domain2d(boundary, options.holes);
-  if (!options.keep_boundary && !given.empty())
-    domain = triangulate_domain2d(split_boundary(boundary, given, options.adapt), options.holes);
-  Mesh& start = domain.mesh;
-  if (start.num_edges() == 0 || start.num_vertices() == 0)
-    throw InputError("the domain has no boundary edge left to mesh");
   // Every input vertex left lies on a boundary edge unless it was an isolated point inside.
-  std::vector<SymMat2> metrics;
-  if (!given.empty()) {
-    for (const Id v : domain.input_vertex) metrics.push_back(given[v]);
-  } else if (options.hsiz > 0.0) {
-    metrics.assign(start.num_vertices(), isotropic_metric<2>(options.hsiz));
-  } else {
-    metrics = boundary_sizes(start);
-  }
+  const auto sizes = [&](const Domain2d& d) {
+    std::vector<SymMat2> out;
+    if (given.empty()) return boundary_sizes(d.mesh);
+    for (const Id v : d.input_vertex) out.push_back(given[v]);
+    return out;
+  };
+  if (domain.mesh.num_edges() == 0 || domain.mesh.num_vertices() == 0)
+    throw InputError("the domain has no boundary edge left to mesh");
+  std::vector<SymMat2> metrics = sizes(domain);
   // A size far too small for the domain (a mistyped --hsiz or lc) is refused before any point
-  // is added instead of exhausting the memory: at most 1e8 vertices (about 2e8 triangles).
-  require_reachable_complexity<2>(start, metrics, kMostVertices2d);
+  // is added (and before the boundary is cut) instead of exhausting the memory: at most 1e8
+  // vertices (about 2e8 triangles).
+  require_reachable_complexity<2>(domain.mesh, metrics, kMostVertices2d);
+  if (!options.keep_boundary && !given.empty()) {
+    domain = triangulate_domain2d(split_boundary(boundary, given, options.adapt), options.holes);
+    metrics = sizes(domain);
+  }
+  Mesh& start = domain.mesh;
   // Field points on the boundary-only triangulation, before any tag meant for adapt2d.
   const FieldPointStats field_points = insert_field_points2d(start, metrics, options.adapt.interp);
   bool given_required = false;

@@ -51,6 +51,8 @@ tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(js
 # A size far too small for the domain is refused at once (about 1e14 triangles asked).
 expect_error mesh-size-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-6
 expect_no_file mesh-size-too-small-no-file "$TMP/o7.mesh"
+# Refused before the boundary is cut to the size (1e12 points per edge otherwise).
+expect_error mesh-size-far-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-12
 expect_error mesh-metric-and-hsiz mesh "$TMP/hole.mesh" -o "$TMP/o6.mesh" --metric "$TMP/sizes.sol" --hsiz 0.1
 
 # Errors: open loop, crossing edges, hole point outside, bad --hole, no output.
