@@ -173,7 +173,8 @@ class BoundaryBuilder {
     CurveSizing sizing = sizing_;
     if (c.kind == GeoCurveKind::kCircle) sizing.min_segments = 2;
     if (c.kind == GeoCurveKind::kSpline) sizing.min_segments = first == last ? 3 : 2;
-    const auto [a, b] = end_sizes(c);
+    const std::pair<double, double> ends_size = end_sizes(c);
+    const double a = ends_size.first, b = ends_size.second;  // (clang 14: no binding captures)
     sizing.size = [a, b](double t) { return a + t * (b - a); };
     if (sized_by_points(c)) ++out_.sized_by_points;
     std::vector<double> ts;
