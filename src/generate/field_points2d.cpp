@@ -107,9 +107,9 @@ class Refiner {
     // (the mesh is not Delaunay in that metric) gives way to the Euclidean one.
     const bool isotropic = c.metric.c[1] == 0.0 && c.metric.c[0] == c.metric.c[2];
     if (!find_cavity(t, p, isotropic ? nullptr : &c.metric)) return false;
-    if (!isotropic && !star_shaped(p) && !find_cavity(t, p, nullptr)) return false;
+    if (!star_shaped(p) && (isotropic || !find_cavity(t, p, nullptr) || !star_shaped(p)))
+      return false;  // not star-shaped (possible in a constrained triangulation): keep out
     for (const Border& b : border_) {
-      if (!(orient2d_sign(pt(b.a), pt(b.b), p) > 0)) return false;  // not star-shaped: keep out
       if (metric_length(c.metric, pt(b.a)[0] - p[0], pt(b.a)[1] - p[1]) < std::sqrt(0.5)) return false;
       if (b.locked && distance_to_edge(c.metric, p, b.a, b.b) < 0.5) return false;
     }

@@ -43,8 +43,8 @@ std::vector<SymMat2> boundary_sizes(const Mesh& m) {
 /// interpolated (`metrics`, one per vertex, is extended). An edge listed twice (an interface
 /// given in both directions) gets the same vertices. The field points then start from a boundary
 /// at the sizes asked: on a long coarse boundary they kept 1/2 away from edges that adapt2d cut
-/// into hundreds of pieces afterwards, leaving needles it could not repair (a 1:1000 metric on
-/// the square: 41.6% of the edges in band).
+/// into hundreds of pieces afterwards, leaving needles it could not repair (a 1:100 metric on
+/// the square given by 4 edges a side: 72.8% of the edges in band, 99.2% with the cut).
 Mesh split_boundary(const Mesh& boundary, std::vector<SymMat2>& metrics,
                     const Adapt2dOptions& options) {
   Mesh edges_only = boundary;  // the curves of the Edges alone (triangles are ignored here)
