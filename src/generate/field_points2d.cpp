@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 
 #include "core/error.hpp"
@@ -55,17 +53,33 @@ class Refiner {
     tref_.resize(m.num_triangles(), 0);
     nbr_.assign(tri_.size(), kNoId);
     locked_.assign(tri_.size(), 0);
-    std::unordered_set<std::uint64_t> edges;
-    for (std::size_t e = 0; e < m.num_edges(); ++e) edges.insert(edge_key(m.edges[2 * e], m.edges[2 * e + 1]));
-    std::unordered_map<std::uint64_t, Id> open;
-    for (std::size_t h = 0; h < tri_.size(); ++h) {
-      const std::uint64_t k = edge_key(from(static_cast<Id>(h)), to(static_cast<Id>(h)));
-      locked_[h] = edges.count(k) ? 1 : 0;
-      const auto [it, added] = open.emplace(k, static_cast<Id>(h));
-      if (!added) {
-        nbr_[h] = it->second;
-        nbr_[it->second] = static_cast<Id>(h);
-      }
+    // Half-edges bucketed by their smaller vertex (a counting sort: a few per vertex), twins and
+    // Edges matched inside each bucket.
+    const std::size_t nv = xy_.size() / 2;
+    std::vector<std::size_t> start(nv + 1, 0);
+    const auto low = [&](Id h) { return static_cast<std::size_t>(std::min(from(h), to(h))); };
+    const auto high = [&](Id h) { return std::max(from(h), to(h)); };
+    for (std::size_t h = 0; h < tri_.size(); ++h) ++start[low(static_cast<Id>(h)) + 1];
+    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<Id> bucket(tri_.size());
+    {
+      std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+      for (std::size_t h = 0; h < tri_.size(); ++h)
+        bucket[fill[low(static_cast<Id>(h))]++] = static_cast<Id>(h);
+    }
+    for (std::size_t v = 0; v < nv; ++v)
+      for (std::size_t i = start[v]; i < start[v + 1]; ++i)
+        for (std::size_t j = i + 1; j < start[v + 1]; ++j)
+          if (high(bucket[i]) == high(bucket[j]) && nbr_[bucket[i]] == kNoId &&
+              nbr_[bucket[j]] == kNoId) {
+            nbr_[bucket[i]] = bucket[j];
+            nbr_[bucket[j]] = bucket[i];
+          }
+    for (std::size_t e = 0; e < m.num_edges(); ++e) {
+      const Id a = m.edges[2 * e], b = m.edges[2 * e + 1];
+      const auto v = static_cast<std::size_t>(std::min(a, b));
+      for (std::size_t i = start[v]; i < start[v + 1]; ++i)
+        if (high(bucket[i]) == std::max(a, b)) locked_[bucket[i]] = 1;
     }
     mark_.assign(num_triangles(), 0);
     fan_.assign(xy_.size() / 2, kNoId);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "generate/lattice2d.hpp"
 #include "metric/metric.hpp"
 #include "remesh/boundary_curves.hpp"
 #include "remesh/prepare_metrics.hpp"
@@ -107,6 +108,41 @@ Mesh split_boundary(const Mesh& boundary, std::vector<SymMat2>& metrics,
   return out;
 }
 
+/// Lattice points closer than this to the boundary (in the metric) are left out: the first row
+/// kept is 0.43–1.30 away from a boundary edge at unit spacing (1/2 to 1.37 with 1/2), centred
+/// on the √3/2 of a unit equilateral triangle.
+constexpr double kLatticeClearance = 0.43;
+
+/// `bare` (the triangulation of `boundary`'s Edges alone) again with the lattice points of the
+/// constant metric m inside it (lattice2d.hpp), triangulated in m's unit space so that they make
+/// unit equilateral triangles; `given` (the metric per vertex of `boundary`) is extended to them.
+/// The coordinates are those of the points as given, not mapped back and forth.
+Domain2d with_lattice(const Mesh& boundary, Domain2d bare, const SymMat2 m,
+                      std::span<const double> holes, std::vector<SymMat2>& given) {
+  const std::vector<double> points = lattice_points2d(bare.mesh, m, kLatticeClearance);
+  if (points.empty()) return bare;
+  Mesh all = boundary;
+  all.triangles.clear(), all.tri_ref.clear(), all.tri_tag.clear();
+  const std::size_t n0 = all.num_vertices();
+  all.vert_ref.resize(n0, 0), all.vert_tag.resize(n0, kTagNone);
+  all.coords.insert(all.coords.end(), points.begin(), points.end());
+  all.vert_ref.resize(all.num_vertices(), 0), all.vert_tag.resize(all.num_vertices(), kTagNone);
+  given.resize(all.num_vertices(), m);
+  const MetricMap2d map(m);
+  Mesh unit = all;
+  for (std::size_t v = 0; v < unit.num_vertices(); ++v)
+    map.to_unit(&all.coords[2 * v], &unit.coords[2 * v]);
+  std::vector<double> unit_holes(holes.size());
+  for (std::size_t k = 0; 2 * k + 1 < holes.size(); ++k)
+    map.to_unit(&holes[2 * k], &unit_holes[2 * k]);
+  Domain2d d = triangulate_domain2d(unit, unit_holes);
+  for (std::size_t v = 0; v < d.mesh.num_vertices(); ++v) {
+    const auto w = static_cast<std::size_t>(d.input_vertex[v]);
+    d.mesh.coords[2 * v] = all.coords[2 * w], d.mesh.coords[2 * v + 1] = all.coords[2 * w + 1];
+  }
+  return d;
+}
+
 }  // namespace
 
 void Mesh2dOptions::validate() const {
@@ -148,10 +184,19 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   // is added (and before the boundary is cut) instead of exhausting the memory: at most 1e8
   // vertices (about 2e8 triangles).
   require_reachable_complexity<2>(domain.mesh, metrics, kMostVertices2d);
-  if (!options.keep_boundary && !given.empty()) {
-    domain = triangulate_domain2d(split_boundary(boundary, given, options.adapt), options.holes);
-    metrics = sizes(domain);
+  // A constant metric (--hsiz, or one tensor everywhere): its unit lattice fills the inside.
+  const bool constant = constant_metric(given);
+  const Mesh cut = !options.keep_boundary && !given.empty()
+                       ? split_boundary(boundary, given, options.adapt)
+                       : Mesh{};
+  if (!cut.edges.empty()) domain = triangulate_domain2d(cut, options.holes);
+  if (constant) {  // the interpolated metrics of the cut are the same up to rounding: made equal
+    const SymMat2 m = given.front();
+    std::fill(given.begin(), given.end(), m);
+    domain = with_lattice(cut.edges.empty() ? boundary : cut, std::move(domain), m, options.holes,
+                          given);
   }
+  if (!cut.edges.empty() || constant) metrics = sizes(domain);
   Mesh& start = domain.mesh;
   // Field points on the boundary-only triangulation, before any tag meant for adapt2d.
   const FieldPointStats field_points = insert_field_points2d(start, metrics, options.adapt.interp);
