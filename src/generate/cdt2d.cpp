@@ -1,5 +1,6 @@
 #include "generate/cdt2d.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <deque>
 #include <string>
@@ -113,6 +114,7 @@ struct Recovery {
   Flipper f;
   std::span<const Id> edges;
   std::unordered_map<std::uint64_t, Id> constraint;  // recovered edges so far
+  std::vector<Id> touched;  // the triangles of every flip (a triangle keeps its id when flipped)
 
   std::string edge_name(Id e) const {
     std::string s = "boundary edge ";
@@ -193,6 +195,8 @@ struct Recovery {
           queue.push_back(k);
           continue;
         }
+        touched.push_back(h / 3);
+        touched.push_back(t.nbr[h] / 3);
         f.flip(h);
         // h's triangle is now (p, a, q): the new edge is (p, q).
         const Id p = f.vertex(h / 3, 0), q = f.vertex(h / 3, 2);
@@ -205,11 +209,16 @@ struct Recovery {
     constraint.emplace(edge_key(a, b), e);
   }
 
-  /// Lawson's flips: every edge that is not a constraint becomes locally Delaunay.
+  /// Lawson's flips: every edge that is not a constraint becomes locally Delaunay. Only the
+  /// edges of the triangles the recovery flipped can have stopped being so: the others keep
+  /// both their triangles from the Delaunay triangulation.
   void make_delaunay() {
     std::vector<Id> stack;
-    for (std::size_t h = 0; h < t.nbr.size(); ++h)
-      if (t.nbr[h] != kNoId && t.nbr[h] > static_cast<Id>(h)) stack.push_back(static_cast<Id>(h));
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    for (const Id tri : touched)
+      for (int s = 0; s < 3; ++s)
+        if (t.nbr[3 * tri + s] != kNoId) stack.push_back(3 * tri + s);
     while (!stack.empty()) {
       const Id h = stack.back();
       stack.pop_back();
@@ -230,7 +239,7 @@ struct Recovery {
 }  // namespace
 
 std::vector<Id> recover_edges(Triangulation2d& t, std::span<const Id> edges) {
-  Recovery r{t, Flipper(t), edges, {}};
+  Recovery r{t, Flipper(t), edges, {}, {}};
   const Id ne = static_cast<Id>(edges.size() / 2);
   for (Id e = 0; e < ne; ++e) {
     RIEMESH_CHECK(edges[2 * e] != edges[2 * e + 1]);
@@ -239,11 +248,11 @@ std::vector<Id> recover_edges(Triangulation2d& t, std::span<const Id> edges) {
   }
   r.make_delaunay();
   std::vector<Id> out(t.tri.size(), kNoId);
-  for (std::size_t h = 0; h < t.tri.size(); ++h) {
-    const Id tri = static_cast<Id>(h / 3);
-    const int s = static_cast<int>(h % 3);
-    const auto hit = r.constraint.find(edge_key(t.tri[3 * tri + (s + 1) % 3], t.tri[3 * tri + (s + 2) % 3]));
-    if (hit != r.constraint.end()) out[h] = hit->second;
+  for (const auto& [key, e] : r.constraint) {  // both half-edges of each constraint
+    const Id h = r.f.find_edge(edges[2 * e], edges[2 * e + 1]);
+    RIEMESH_CHECK(h != kNoId);
+    out[h] = e;
+    if (t.nbr[h] != kNoId) out[t.nbr[h]] = e;
   }
   return out;
 }

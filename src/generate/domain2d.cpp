@@ -136,10 +136,11 @@ std::vector<std::uint8_t> holes_from_points(const Triangulation2d& t, const std:
 
 }  // namespace
 
-Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_points) {
+Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_points,
+                              InsertionOrder order) {
   if (in.dim != 2) throw InputError("meshing a domain needs a planar boundary (Dimension 2)");
   if (in.edges.empty()) throw InputError("the domain has no boundary Edges");
-  Triangulation2d t = delaunay2d(in.coords);
+  Triangulation2d t = delaunay2d(in.coords, order);
   const Constraints c = gather_constraints(in, t);
   require_closed(in, c);
   const std::vector<Id> on_constraint = recover_edges(t, c.ends);
@@ -188,6 +189,12 @@ Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_point
   for (std::size_t tri = 0; tri < t.num_triangles(); ++tri)
     if (ref_of[region[tri]] > 0)
       for (int s = 0; s < 3; ++s) used[t.tri[3 * tri + s]] = 1;
+  std::size_t num_used = 0, num_kept = 0;
+  for (const auto u : used) num_used += u;
+  for (std::size_t tri = 0; tri < t.num_triangles(); ++tri) num_kept += ref_of[region[tri]] > 0;
+  out.input_vertex.reserve(num_used);
+  m.coords.reserve(2 * num_used), m.vert_ref.reserve(num_used), m.vert_tag.reserve(num_used);
+  m.triangles.reserve(3 * num_kept), m.tri_ref.reserve(num_kept);
   for (std::size_t v = 0; v < t.num_points; ++v) {
     if (!used[v]) continue;
     new_id[v] = static_cast<Id>(out.input_vertex.size());

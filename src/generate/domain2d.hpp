@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "generate/delaunay2d.hpp"
 #include "mesh/mesh.hpp"
 
 namespace riemesh {
@@ -31,7 +32,8 @@ struct Domain2d {
 /// ignored). hole_points: 2 doubles per point. Throws InputError for an open boundary, a
 /// zero-length edge, crossing edges or a vertex inside an edge (naming the edges, 1-based, and
 /// the place), a hole point outside every region, or a domain with no region left.
-Domain2d triangulate_domain2d(const Mesh& boundary, std::span<const double> hole_points);
+Domain2d triangulate_domain2d(const Mesh& boundary, std::span<const double> hole_points,
+                              InsertionOrder order = InsertionOrder::kBrio);
 
 /// The boundary of a planar triangle mesh as a domain for triangulate_domain2d: its Edges (or, if
 /// it has none, the edges of exactly one triangle, ref 1), each turned so that its triangle is on
