@@ -335,6 +335,9 @@ GradationReport gradate(std::span<const double> coords, std::span<const int32_t>
     touched.pass = pass;
     for (const EdgeGeom<D>& e : geom) {
       if (!touched.active(e.a, e.b)) continue;
+      // Equal ends change nothing under any rule (a grown metric is never larger, and the
+      // variation is 0): a constant field costs a comparison per edge, not two reductions.
+      if (metrics[e.a] == metrics[e.b]) continue;
       bool c;
       if (!options.anisotropic)
         c = correct_isotropic(e, metrics, h, rule, touched);
