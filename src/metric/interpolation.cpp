@@ -184,7 +184,7 @@ std::string_view scheme_name(InterpScheme s) {
 
 template <int D>
 SymMat<D> interpolate(InterpScheme s, const SymMat<D>& a, const SymMat<D>& b, double t) {
-  if (t == 0.0) return a;
+  if (t == 0.0 || a == b) return a;  // every scheme's mean of one metric is that metric, exactly
   if (t == 1.0) return b;
   if (s == InterpScheme::kSimredLinear || s == InterpScheme::kSimredGeometric)
     return simred_pair(a, b, t, s == InterpScheme::kSimredGeometric);

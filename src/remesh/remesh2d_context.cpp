@@ -38,6 +38,14 @@ BackgroundMesh<2> make_background(const Mesh& input, std::span<const SymMat2> me
                            scheme, std::move(neighbours));
 }
 
+/// The metric every vertex carries, if they all carry the same.
+std::optional<SymMat2> same_metric(std::span<const SymMat2> metrics) {
+  if (metrics.empty()) return std::nullopt;
+  for (const SymMat2& m : metrics)
+    if (!(m == metrics.front())) return std::nullopt;
+  return metrics.front();
+}
+
 /// Where to split an edge of metric length L running from density la to lb: at the fraction of
 /// its length k/n, n = max(2, round(L)), k = ⌊n/2⌋, so that repeated splits cut it into n pieces
 /// of length L/n ≈ 1 rather than into 2^j pieces (bisection refines a uniform coarse mesh to the
@@ -57,8 +65,9 @@ Remesh2dContext::Remesh2dContext(const Mesh& input, std::span<const SymMat2> met
                                  const Adapt2dOptions& options, const Adjacency& adjacency)
     : options_(options),
       curves_(build_boundary_curves(input, {options.angle_deg, options.detect_angles}, &adjacency)),
-      background_(make_background(input, metrics, options.interp, adjacency)),
+      constant_(same_metric(metrics)),
       num_input_vertices_(input.num_vertices()) {
+  if (!constant_) background_.emplace(make_background(input, metrics, options.interp, adjacency));
   const std::size_t nv = input.num_vertices();
   std::vector<TriFeature> features;
   for (const FeatureEdge& f : curves_.edges) {
@@ -113,7 +122,7 @@ SymMat2 Remesh2dContext::metric_for(const Vec2& p, std::int32_t curve, double s,
                                     Id hint_vertex) const {
   Id found = kNoId;
   const Id hint = static_cast<std::size_t>(hint_vertex) < hint_.size() ? hint_[hint_vertex] : kNoId;
-  SymMat2 m = background_.metric_at(p, hint, &found);
+  SymMat2 m = constant_ ? *constant_ : background_->metric_at(p, hint, &found);
   last_found_ = found;
   if (curve == kNoCurve || !(options_.hausd > 0.0)) return m;
   const BoundaryCurve& c = curves_.curves[curve];

@@ -2,6 +2,7 @@
 // The state of one 2D adaptation (internal to remesh/): the mesh being changed, the background
 // mesh with the input metric field, the input's boundary curves, and the geometric rules that
 // place new and moved vertices (on the curves, at metric midpoints) and give them their metric.
+#include <optional>
 #include <vector>
 
 #include "remesh/adapt2d.hpp"
@@ -74,7 +75,11 @@ class Remesh2dContext {
 
   Adapt2dOptions options_;
   BoundaryCurves curves_;
-  BackgroundMesh<2> background_;
+  /// The input field: its one metric when it is the same at every vertex (no background mesh
+  /// built or searched: a 2.3 M-triangle 1:10⁴ lattice spent 59% of its run locating), else
+  /// the background mesh that interpolates it.
+  std::optional<SymMat2> constant_;
+  std::optional<BackgroundMesh<2>> background_;
   TriMesh mesh_;
   std::vector<Id> hint_;            // per vertex: a background triangle near it
   mutable Id last_found_ = kNoId;   // background triangle of the last metric_for query
