@@ -52,6 +52,30 @@ double jitter(std::uint64_t key, int axis) {
   return static_cast<double>(z >> 11) * 0x1.0p-53 - 0.5;
 }
 
+/// Calls f on each point of the body-centred cubic lattice lo + a (i, j, k), lo + a (i + ½, j +
+/// ½, k + ½) in the octree cell of integer corner ijk and side s, in a fixed order. A point is in
+/// the cell when its index is at or above the cell's lower face and below its upper face, the
+/// faces computed as lo + n s (n an integer) by every cell that has them — the same doubles on
+/// both sides, at any depth (s halves exactly) — so each point is in exactly one cell.
+template <class F>
+void lattice_points(const std::array<std::uint32_t, 3>& ijk, double s, const Vec3& lo, double a,
+                    F&& f) {
+  for (const double shift : {0.0, 0.5}) {
+    std::int64_t first[3], end[3];
+    for (int c = 0; c < 3; ++c) {
+      const auto n = static_cast<double>(ijk[static_cast<std::size_t>(c)]);
+      first[c] = static_cast<std::int64_t>(std::ceil((lo[c] + n * s - lo[c]) / a - shift));
+      end[c] = static_cast<std::int64_t>(std::ceil((lo[c] + (n + 1.0) * s - lo[c]) / a - shift));
+    }
+    for (std::int64_t k = first[2]; k < end[2]; ++k)
+      for (std::int64_t j = first[1]; j < end[1]; ++j)
+        for (std::int64_t i = first[0]; i < end[0]; ++i)
+          f(Vec3{lo[0] + a * (static_cast<double>(i) + shift),
+                 lo[1] + a * (static_cast<double>(j) + shift),
+                 lo[2] + a * (static_cast<double>(k) + shift)});
+  }
+}
+
 constexpr double kJitter = 0.2;      // of the cell size
 constexpr double kClearance = 1.5;   // of the size: distance kept from the surface
 constexpr int kMaxDepth = 21;        // 2^21 cells per axis: far below any sensible size
@@ -93,7 +117,8 @@ FieldPoints3 field_points3d(const Mesh& volume, std::span<const double> sizes) {
       if (!(vol > 0.0)) continue;
       double w[4];
       simplex::sub_volumes(x, p, w);
-      if (*std::min_element(w, w + 4) < 0.0) continue;
+      // (A lattice point on a face shared by two tets may round slightly outside both.)
+      if (*std::min_element(w, w + 4) < -1e-12 * vol) continue;
       double h = 0.0;
       for (int i = 0; i < 4; ++i) h += w[i] / vol * sizes[static_cast<std::size_t>(volume.tets[4 * k + i])];
       return h;
@@ -109,6 +134,15 @@ FieldPoints3 field_points3d(const Mesh& volume, std::span<const double> sizes) {
       hi[c] = std::max(hi[c], volume.coords[3 * v + c]);
     }
   const double side = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+
+  // A uniform size gets the body-centred cubic lattice of spacing a = h √(6/5): its Delaunay
+  // tetrahedra are congruent (two edges a, four a √3/2: root-mean-square length h, mean-ratio
+  // quality 0.95) and unique (four Voronoi cells meet at each Voronoi vertex), so no jitter is
+  // needed. The octree then stops at cells between a and 2a, each holding the lattice points in
+  // it (half-open: each point in one cell).
+  const bool uniform =
+      std::all_of(sizes.begin(), sizes.end(), [&](double h) { return h == sizes[0]; });
+  const double spacing = sizes[0] * std::sqrt(1.2);
 
   FieldPoints3 out;
   struct Cell {
@@ -138,7 +172,7 @@ FieldPoints3 field_points3d(const Mesh& volume, std::span<const double> sizes) {
         for (int i = 0; i < 4; ++i)
           h = std::min(h, sizes[static_cast<std::size_t>(volume.tets[4 * static_cast<std::size_t>(t) + i])]);
     }
-    if (s > h && cell.depth < kMaxDepth) {
+    if (s > (uniform ? 2.0 * spacing : h) && cell.depth < kMaxDepth) {
       // Children in a fixed order (last pushed first popped: x fastest), each with the tets
       // overlapping it; children overlapping none are outside.
       for (int k = 7; k >= 0; --k) {
@@ -159,6 +193,15 @@ FieldPoints3 field_points3d(const Mesh& volume, std::span<const double> sizes) {
         }
         if (!child.tets.empty()) stack.push_back(std::move(child));
       }
+      continue;
+    }
+    if (uniform) {
+      lattice_points(cell.ijk, s, lo, spacing, [&](const Vec3& p) {
+        if (size_at(p, cell.tets) == 0.0 || surface.within(p, kClearance * sizes[0], &tri_hint))
+          return;
+        out.coords.insert(out.coords.end(), {p[0], p[1], p[2]});
+        out.sizes.push_back(sizes[0]);  // exactly: the field stays constant
+      });
       continue;
     }
     const std::uint64_t key = (static_cast<std::uint64_t>(cell.ijk[0]) << 42) ^

@@ -77,7 +77,10 @@ TEST(VolumeFill3d, FilledCubeIsValidAndKeepsItsBoundary) {
 TEST(VolumeFill3d, FieldPointsAreInsideAwayFromTheSurfaceAtTheSizeSpacing) {
   const RecoveredVolume r = recover_volume(test::cube_surface(4));
   const double h = 0.1;
-  const std::vector<double> sizes(r.volume.num_vertices(), h);
+  // Sizes that vary (by 0.1%): the octree's jittered cell centres (a uniform size gets the
+  // lattice of the next test).
+  std::vector<double> sizes(r.volume.num_vertices(), h);
+  for (std::size_t v = 0; v < sizes.size(); v += 2) sizes[v] = 0.999 * h;
   const FieldPoints3 f = field_points3d(r.volume, sizes);
   // Octree leaves of side 1/16 (the first ≤ 0.1 of the unit box), kept when more than 1.5 h from
   // the faces: the cells 2..13 along each axis (centres (i + ½)/16, jitter ±0.2/32).
@@ -90,8 +93,9 @@ TEST(VolumeFill3d, FieldPointsAreInsideAwayFromTheSurfaceAtTheSizeSpacing) {
       EXPECT_GT(p[c], 0.0);
       EXPECT_LT(p[c], 1.0);
     }
-    EXPECT_GE(surface.nearest(p).distance, 1.5 * h - 1e-12);
-    EXPECT_DOUBLE_EQ(f.sizes[k], h);
+    EXPECT_GE(surface.nearest(p).distance, 1.5 * f.sizes[k] - 1e-12);
+    EXPECT_GE(f.sizes[k], 0.999 * h * (1 - 1e-12));  // interpolated inside a tet
+    EXPECT_LE(f.sizes[k], h * (1 + 1e-12));
   }
   // Nearest neighbours at about the cell side (1/16, jitter ±20%).
   for (std::size_t k = 0; k < f.size(); k += 17) {
@@ -107,6 +111,31 @@ TEST(VolumeFill3d, FieldPointsAreInsideAwayFromTheSurfaceAtTheSizeSpacing) {
   }
   const FieldPoints3 again = field_points3d(r.volume, sizes);
   EXPECT_EQ(again.coords, f.coords);
+}
+
+TEST(VolumeFill3d, UniformSizeGetsTheBodyCentredCubicLattice) {
+  // Spacing a = h √(6/5) from the box's corner, the points more than 1.5 h from the faces: the
+  // corners i a for i = 2..7 and the centres (i + ½) a for i = 1..7 along each axis, 6³ + 7³.
+  // Each point's nearest neighbours are at a √3/2, and the Delaunay tets of the lattice have
+  // edges a and a √3/2 (root-mean-square h).
+  const RecoveredVolume r = recover_volume(test::cube_surface(4));
+  const double h = 0.1, a = h * std::sqrt(1.2);
+  const std::vector<double> sizes(r.volume.num_vertices(), h);
+  const FieldPoints3 f = field_points3d(r.volume, sizes);
+  ASSERT_EQ(f.size(), 6u * 6u * 6u + 7u * 7u * 7u);
+  const TriangleTree surface(r.volume);
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    const Vec3 p{f.coords[3 * k], f.coords[3 * k + 1], f.coords[3 * k + 2]};
+    EXPECT_GE(surface.nearest(p).distance, 1.5 * h);
+    EXPECT_EQ(f.sizes[k], h);
+    double best = 1e300;
+    for (std::size_t j = 0; j < f.size(); ++j)
+      if (j != k)
+        best = std::min(best, std::hypot(f.coords[3 * k] - f.coords[3 * j],
+                                         f.coords[3 * k + 1] - f.coords[3 * j + 1],
+                                         f.coords[3 * k + 2] - f.coords[3 * j + 2]));
+    EXPECT_NEAR(best, a * std::sqrt(0.75), 1e-12);
+  }
 }
 
 TEST(VolumeFill3d, InteriorPointsAreRecoveredInside) {
