@@ -4,6 +4,7 @@
 // that place new and moved vertices and give them their metric.
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "remesh/adapt3d.hpp"
@@ -75,6 +76,9 @@ class Remesh3dContext {
   Adapt3dOptions options_;
   TetMesh mesh_;  // built first: the background then takes over the input's arrays
   BackgroundMesh<3> background_;
+  /// The field's one metric when every input vertex carries the same (metric_for then answers it
+  /// without locating the point; as 2D's Remesh2dContext).
+  std::optional<SymMat3> constant_;
   std::map<std::int32_t, Plane> planes_;
   std::vector<std::int32_t> edge_refs_;
   std::vector<Id> hint_;  // per vertex: a background tet near it
