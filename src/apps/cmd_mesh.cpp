@@ -53,6 +53,15 @@ Mesh2dResult mesh_domain(const MeshArgs& a, const Mesh& domain) {
 /// Notes and warnings of the optimisation, the output, and its summary line.
 void finish(const MeshArgs& a, const Mesh2dResult& r) {
   if (!a.quiet) {
+    if (a.verbosity >= 1) {
+      if (r.lattice_points > 0)
+        std::fprintf(stderr,
+                     "field points: %zu on the constant metric's unit lattice, %zu along edges\n",
+                     r.lattice_points, r.field_points.inserted);
+      else
+        std::fprintf(stderr, "field points: %zu along edges (%d rounds, %zu too close)\n",
+                     r.field_points.inserted, r.field_points.rounds, r.field_points.rejected);
+    }
     for (const std::string& note : r.report.notes)
       std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
     if (!r.report.converged)

@@ -143,8 +143,10 @@ void sort_triangles_by_vertex(Mesh& m) {
 /// The vertices keep the lattice's row order; the coordinates are those of the points as given,
 /// not mapped back and forth.
 Domain2d with_lattice(const Mesh& boundary, Domain2d bare, const SymMat2 m,
-                      std::span<const double> holes, std::vector<SymMat2>& given) {
+                      std::span<const double> holes, std::vector<SymMat2>& given,
+                      std::size_t* count) {
   const std::vector<double> points = lattice_points2d(bare.mesh, m, kLatticeClearance);
+  *count = points.size() / 2;
   if (points.empty()) return bare;
   const MetricMap2d map(m);
   Mesh unit;  // the boundary's Edges and vertices, and the points, in the unit space
@@ -215,15 +217,15 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   require_reachable_complexity<2>(domain.mesh, metrics, kMostVertices2d);
   // A constant metric (--hsiz, or one tensor everywhere): its unit lattice fills the inside.
   const bool constant = constant_metric(given);
+  std::size_t lattice_points = 0;
   const Mesh cut = !options.keep_boundary && !given.empty()
                        ? split_boundary(boundary, given, options.adapt)
                        : Mesh{};
   if (!cut.edges.empty()) domain = triangulate_domain2d(cut, options.holes);
-  if (constant) {  // the interpolated metrics of the cut are the same up to rounding: made equal
+  if (constant) {  // (the cut's metrics too: interpolating equal metrics is exact)
     const SymMat2 m = given.front();
-    std::fill(given.begin(), given.end(), m);
     domain = with_lattice(cut.edges.empty() ? boundary : cut, std::move(domain), m, options.holes,
-                          given);
+                          given, &lattice_points);
   }
   if (!cut.edges.empty() || constant) metrics = sizes(domain);
   Mesh& start = domain.mesh;
@@ -247,6 +249,7 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   out.metrics = std::move(adapted.metrics);
   out.report = std::move(adapted.report);
   out.field_points = field_points;
+  out.lattice_points = lattice_points;
   out.regions = domain.regions;
   out.holes = domain.holes;
   return out;

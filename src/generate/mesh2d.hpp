@@ -41,7 +41,8 @@ struct Mesh2dResult {
   Mesh mesh;                     ///< the triangle mesh; triangle refs = regions 1, 2, ...
   std::vector<SymMat2> metrics;  ///< the metric at each output vertex
   int regions = 0, holes = 0;
-  FieldPointStats field_points;  ///< points added before the optimisation
+  std::size_t lattice_points = 0;  ///< points of a constant metric's unit lattice (lattice2d.hpp)
+  FieldPointStats field_points;    ///< points added along edges before the optimisation
   Adapt2dReport report;
 };
 

@@ -49,6 +49,13 @@ tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(js
   [ "$(tris "$TMP/m-coarse.mesh")" -lt "$(tris "$TMP/m-metric.mesh")" ] &&
   [ "$(tris "$TMP/m-metric.mesh")" -lt "$(tris "$TMP/m-fine.mesh")" ] && ok "metric-sizes" || ko "metric-sizes"
 # A size far too small for the domain is refused at once (about 1e14 triangles asked).
+# A uniform size fills the inside with the unit lattice first (-v 1 says how many points).
+"$R" mesh "$TMP/hole.mesh" -o "$TMP/lattice.mesh" --hsiz 0.1 -v 1 2>&1 |
+  grep -Eq "^field points: [1-9][0-9]* on the constant metric's unit lattice, [0-9]+ along edges$" &&
+  ok "mesh-lattice-verbose" || ko "mesh-lattice-verbose"
+"$R" mesh "$TMP/hole.mesh" -o "$TMP/lattice.mesh" -v 1 2>&1 |
+  grep -Eq "^field points: [0-9]+ along edges \([0-9]+ rounds, [0-9]+ too close\)$" &&
+  ok "mesh-edge-points-verbose" || ko "mesh-edge-points-verbose"
 expect_error mesh-size-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-6
 expect_no_file mesh-size-too-small-no-file "$TMP/o7.mesh"
 # Refused before the boundary is cut to the size (1e12 points per edge otherwise).
