@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "generate/cdt2d.hpp"
 #include "generate/filtered_predicates2d.hpp"
+#include "mesh/adjacency.hpp"
 #include "mesh/hilbert.hpp"
 
 namespace riemesh {
@@ -53,33 +54,24 @@ class Refiner {
     tref_.resize(m.num_triangles(), 0);
     nbr_.assign(tri_.size(), kNoId);
     locked_.assign(tri_.size(), 0);
-    // Half-edges bucketed by their smaller vertex (a counting sort: a few per vertex), twins and
-    // Edges matched inside each bucket.
-    const std::size_t nv = xy_.size() / 2;
-    std::vector<std::size_t> start(nv + 1, 0);
-    const auto low = [&](Id h) { return static_cast<std::size_t>(std::min(from(h), to(h))); };
-    const auto high = [&](Id h) { return std::max(from(h), to(h)); };
-    for (std::size_t h = 0; h < tri_.size(); ++h) ++start[low(static_cast<Id>(h)) + 1];
-    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<Id> bucket(tri_.size());
-    {
-      std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-      for (std::size_t h = 0; h < tri_.size(); ++h)
-        bucket[fill[low(static_cast<Id>(h))]++] = static_cast<Id>(h);
+    // Twins from the mesh layer's neighbours (the triangle across the edge opposite vertex s,
+    // in which the twin is the slot of the vertex off that edge); Edges found around their
+    // first vertex.
+    const Adjacency adj = build_face_adjacency(tri_, 3, xy_.size() / 2);
+    for (std::size_t h = 0; h < tri_.size(); ++h) {
+      const Id n = adj.elem2elem[h];
+      if (n == kNoId) continue;
+      const Id a = from(static_cast<Id>(h)), b = to(static_cast<Id>(h));
+      for (int j = 0; j < 3; ++j)
+        if (tri_[3 * n + j] != a && tri_[3 * n + j] != b) nbr_[h] = 3 * n + j;
     }
-    for (std::size_t v = 0; v < nv; ++v)
-      for (std::size_t i = start[v]; i < start[v + 1]; ++i)
-        for (std::size_t j = i + 1; j < start[v + 1]; ++j)
-          if (high(bucket[i]) == high(bucket[j]) && nbr_[bucket[i]] == kNoId &&
-              nbr_[bucket[j]] == kNoId) {
-            nbr_[bucket[i]] = bucket[j];
-            nbr_[bucket[j]] = bucket[i];
-          }
     for (std::size_t e = 0; e < m.num_edges(); ++e) {
       const Id a = m.edges[2 * e], b = m.edges[2 * e + 1];
-      const auto v = static_cast<std::size_t>(std::min(a, b));
-      for (std::size_t i = start[v]; i < start[v + 1]; ++i)
-        if (high(bucket[i]) == std::max(a, b)) locked_[bucket[i]] = 1;
+      for (const Id t : ball(adj, a))
+        for (int s = 0; s < 3; ++s) {
+          const Id h = 3 * t + s;
+          if ((from(h) == a && to(h) == b) || (from(h) == b && to(h) == a)) locked_[h] = 1;
+        }
     }
     mark_.assign(num_triangles(), 0);
     fan_.assign(xy_.size() / 2, kNoId);
