@@ -104,13 +104,6 @@ MetricMap2d::MetricMap2d(const SymMat2& m) {
   if (!(l22 > 0)) throw InputError("lattice: the metric is not positive definite");
 }
 
-bool constant_metric(const std::vector<SymMat2>& metrics) {
-  for (const SymMat2& m : metrics)
-    for (int k = 0; k < 3; ++k)
-      if (m.c[k] != metrics.front().c[k]) return false;
-  return !metrics.empty();
-}
-
 std::vector<double> lattice_points2d(const Mesh& domain, const SymMat2& m, double clearance) {
   RIEMESH_CHECK(domain.dim == 2 && clearance > 0 && clearance <= 0.5);
   const MetricMap2d map(m);

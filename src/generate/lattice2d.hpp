@@ -37,7 +37,4 @@ struct MetricMap2d {
 /// in row order. Deterministic.
 std::vector<double> lattice_points2d(const Mesh& domain, const SymMat2& m, double clearance);
 
-/// Whether every metric of the list is the same (exactly): the case lattice_points2d is for.
-bool constant_metric(const std::vector<SymMat2>& metrics);
-
 }  // namespace riemesh

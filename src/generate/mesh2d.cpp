@@ -216,7 +216,7 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   // vertices (about 2e8 triangles).
   require_reachable_complexity<2>(domain.mesh, metrics, kMostVertices2d);
   // A constant metric (--hsiz, or one tensor everywhere): its unit lattice fills the inside.
-  const bool constant = constant_metric(given);
+  const bool constant = same_metric<2>(given).has_value();
   std::size_t lattice_points = 0;
   const Mesh cut = !options.keep_boundary && !given.empty()
                        ? split_boundary(boundary, given, options.adapt)

@@ -3,6 +3,8 @@
 // sizes and directions. BOOK.md §1.
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <string>
 
 #include "core/eigen.hpp"
@@ -96,6 +98,16 @@ inline void require_metric(const SymMat<D>& m, const std::string& what) {
   if (!is_spd(m)) throw InputError(what + ": metric is not positive definite");
   if (!std::isfinite(det(m)))
     throw InputError(what + ": metric too large (its determinant overflows)");
+}
+
+/// The metric every entry of `metrics` is, when they are all the same (exactly: a constant
+/// field, e.g. from a uniform size); none when they differ or there are none.
+template <int D>
+std::optional<SymMat<D>> same_metric(std::span<const SymMat<D>> metrics) {
+  if (metrics.empty()) return std::nullopt;
+  for (const SymMat<D>& m : metrics)
+    if (!(m == metrics.front())) return std::nullopt;
+  return metrics.front();
 }
 
 }  // namespace riemesh

@@ -7,6 +7,7 @@
 #include "core/eigen.hpp"
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
+#include "metric/metric.hpp"
 #include "remesh/pass_summary.hpp"
 #include "remesh/renumber_tail.hpp"
 #include "remesh/tri_mesh_io.hpp"
@@ -38,14 +39,6 @@ BackgroundMesh<2> make_background(const Mesh& input, std::span<const SymMat2> me
                            scheme, std::move(neighbours));
 }
 
-/// The metric every vertex carries, if they all carry the same.
-std::optional<SymMat2> same_metric(std::span<const SymMat2> metrics) {
-  if (metrics.empty()) return std::nullopt;
-  for (const SymMat2& m : metrics)
-    if (!(m == metrics.front())) return std::nullopt;
-  return metrics.front();
-}
-
 /// Where to split an edge of metric length L running from density la to lb: at the fraction of
 /// its length k/n, n = max(2, round(L)), k = ⌊n/2⌋, so that repeated splits cut it into n pieces
 /// of length L/n ≈ 1 rather than into 2^j pieces (bisection refines a uniform coarse mesh to the
@@ -65,7 +58,7 @@ Remesh2dContext::Remesh2dContext(const Mesh& input, std::span<const SymMat2> met
                                  const Adapt2dOptions& options, const Adjacency& adjacency)
     : options_(options),
       curves_(build_boundary_curves(input, {options.angle_deg, options.detect_angles}, &adjacency)),
-      constant_(same_metric(metrics)),
+      constant_(same_metric<2>(metrics)),
       num_input_vertices_(input.num_vertices()) {
   if (!constant_) background_.emplace(make_background(input, metrics, options.interp, adjacency));
   const std::size_t nv = input.num_vertices();

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "mesh/adjacency.hpp"
+#include "metric/metric.hpp"
 #include "remesh/renumber_tail.hpp"
 
 namespace riemesh {
@@ -55,14 +56,6 @@ bool edge_face_refs(const TetMesh& m, const std::vector<Id>& shell, Id a, Id b,
   return true;
 }
 
-/// The metric every vertex carries, if they all carry the same.
-std::optional<SymMat3> same_metric(std::span<const SymMat3> metrics) {
-  if (metrics.empty()) return std::nullopt;
-  for (const SymMat3& m : metrics)
-    if (!(m == metrics.front())) return std::nullopt;
-  return metrics.front();
-}
-
 }  // namespace
 
 Remesh3dContext::Remesh3dContext(const Mesh& input, std::span<const SymMat3> metrics,
@@ -75,7 +68,7 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
       mesh_(build_tet_mesh(input, metrics)),
       background_(take_points(input), std::move(input.tets), std::move(metrics), options.interp,
                   tet_neighbours(mesh_)),
-      constant_(same_metric(background_.metrics())) {
+      constant_(same_metric<3>(background_.metrics())) {
   find_planes();
   std::vector<std::int32_t> curved;
   for (const auto& [ref, pl] : planes_)
@@ -219,7 +212,7 @@ SymMat3 Remesh3dContext::metric_for(const Vec3& p, Id hint_vertex) const {
 
 void Remesh3dContext::set_field(std::vector<SymMat3>&& metrics) {
   background_.set_metrics(std::move(metrics));
-  constant_ = same_metric(background_.metrics());
+  constant_ = same_metric<3>(background_.metrics());
   TetMesh& m = mesh_;
   const std::uint32_t now = ++m.clock;
   if (m.vmoved.size() < m.vertex_capacity()) m.vmoved.resize(m.vertex_capacity(), 0);

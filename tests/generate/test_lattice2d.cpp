@@ -150,12 +150,6 @@ TEST(Lattice2d, TurnedMetricAndAHole) {
   }
 }
 
-TEST(Lattice2d, ConstantMetric) {
-  EXPECT_FALSE(constant_metric({}));
-  EXPECT_TRUE(constant_metric({isotropic_metric<2>(0.1), isotropic_metric<2>(0.1)}));
-  EXPECT_FALSE(constant_metric({isotropic_metric<2>(0.1), isotropic_metric<2>(0.1 + 1e-16)}));
-}
-
 TEST(Mesh2d, ConstantMetricMeshesTheInsideWithUnitEquilateralTriangles) {
   // The square with a square hole, sizes 0.05 × 0.005 turned by 30° (the boundary remeshed):
   // mean quality in the metric above 0.98 (0.984; the field points along edges gave 0.94 on such

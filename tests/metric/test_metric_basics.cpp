@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "core/error.hpp"
 #include "metric/metric.hpp"
@@ -65,4 +66,15 @@ TEST(MetricBasics, RequireMetricRejectsBadInput) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("vertex 7"), std::string::npos);
   }
+}
+
+TEST(MetricBasics, SameMetricOnlyWhenEveryEntryIsEqual) {
+  EXPECT_FALSE(same_metric<2>({}).has_value());
+  const std::vector<SymMat2> same = {isotropic_metric<2>(0.1), isotropic_metric<2>(0.1)};
+  ASSERT_TRUE(same_metric<2>(same).has_value());
+  EXPECT_EQ(*same_metric<2>(same), isotropic_metric<2>(0.1));
+  const std::vector<SymMat2> apart = {isotropic_metric<2>(0.1), isotropic_metric<2>(0.1 + 1e-16)};
+  EXPECT_FALSE(same_metric<2>(apart).has_value());
+  const std::vector<SymMat3> three(5, isotropic_metric<3>(2.0));
+  EXPECT_TRUE(same_metric<3>(three).has_value());
 }
