@@ -17,6 +17,7 @@
 #include "apps/mesh_args.hpp"
 #include "apps/pass_report.hpp"
 #include "core/error.hpp"
+#include "generate/regenerate2d.hpp"
 #include "io/atomic_file.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
@@ -273,7 +274,7 @@ void run(AdaptArgs& a) {
   const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
   const bool progress = !a.quiet;
   const Adapt2dResult r = naming_file(a.input, [&] {
-    return adapt2d(mesh, metrics, a.opt, [&](const PassStats& s) {
+    return adapt_or_regenerate2d(mesh, metrics, a.opt, [&](const PassStats& s) {
       if (progress) print_pass(s, a.verbosity);
     });
   });
