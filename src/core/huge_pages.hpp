@@ -36,4 +36,13 @@ void reserve_huge(std::vector<T, A>& v, std::size_t n) {
   advise_huge_pages(v.data(), v.capacity() * sizeof(T));
 }
 
+/// std::vector<T>(n, value) with the huge-page hint on its storage before it is filled.
+template <class T>
+std::vector<T> huge_vector(std::size_t n, const T& value = T()) {
+  std::vector<T> v;
+  reserve_huge(v, n);
+  v.assign(n, value);
+  return v;
+}
+
 }  // namespace riemesh

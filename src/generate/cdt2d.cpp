@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "core/predicates.hpp"
 
 namespace riemesh {
@@ -247,7 +248,7 @@ std::vector<Id> recover_edges(Triangulation2d& t, std::span<const Id> edges) {
     r.recover(e);
   }
   r.make_delaunay();
-  std::vector<Id> out(t.tri.size(), kNoId);
+  std::vector<Id> out = huge_vector<Id>(t.tri.size(), kNoId);
   for (const auto& [key, e] : r.constraint) {  // both half-edges of each constraint
     const Id h = r.f.find_edge(edges[2 * e], edges[2 * e + 1]);
     RIEMESH_CHECK(h != kNoId);

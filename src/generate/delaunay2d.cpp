@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "generate/filtered_predicates2d.hpp"
 #include "generate/huge_page_allocator.hpp"
 #include "mesh/hilbert.hpp"
@@ -37,14 +38,6 @@ struct BoundaryEdge {
 // Branch-free: 2-bit tables {1, 2, 0} and {2, 0, 1} (a slot's value is unpredictable).
 inline int next_slot(int e) { return (0x09 >> (2 * e)) & 3; }
 inline int prev_slot(int e) { return (0x12 >> (2 * e)) & 3; }
-
-/// Reserves room for `size` elements of a fresh array in huge pages (a hint; see
-/// huge_page_allocator.hpp): the pages are first touched after the advice.
-template <class T, class A>
-void reserve_huge(std::vector<T, A>& a, std::size_t size) {
-  a.reserve(size);
-  detail::advise_huge_pages(a.data(), size * sizeof(T));
-}
 
 /// Bowyer–Watson insertion into a Triangulation2d, with scratch arrays owned by the builder.
 class Builder {
@@ -348,44 +341,82 @@ std::vector<Id> brio_rounds(const std::vector<Id>& along) {
   return order;
 }
 
-Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
+namespace {
+
+/// Room for n points and the super-triangle's 3 vertices, in huge pages.
+std::vector<double> points_with_room(std::size_t n) {
+  std::vector<double> xy;
+  reserve_huge(xy, 2 * n + 6);
+  return xy;
+}
+
+/// The points inserted in the order of their ids (the order delaunay2d chose is applied to the
+/// coordinates before: each insertion then reads its neighbours' coordinates near in memory).
+/// `xy` (from points_with_room) becomes the triangulation's.
+Triangulation2d insert_in_id_order(std::vector<double>&& xy) {
   Triangulation2d t;
   t.num_points = xy.size() / 2;
-  for (std::size_t i = 0; i < 2 * t.num_points; ++i)
-    if (!std::isfinite(xy[i])) {
-      std::string msg = "delaunay2d: point ";
-      msg += std::to_string(i / 2);
-      msg += " has a non-finite coordinate";
-      throw InputError(msg);
-    }
-  reserve_huge(t.xy, 2 * t.num_points + 6);
-  t.xy.assign(xy.begin(), xy.begin() + 2 * t.num_points);
+  t.xy = std::move(xy);
   const double extent = add_super_triangle(t);
   const Id n = static_cast<Id>(t.num_points);
   reserve_huge(t.representative, t.num_points);
   t.representative.resize(t.num_points);
   Builder builder(t, extent);
   builder.start(n, n + 1, n + 2);
-
-  const auto insert = [&](Id v) {
+  for (Id v = 0; v < n; ++v) {
     Id same = v;
     builder.insert(v, &same);
     t.representative[v] = same;
-  };
-  if (order == InsertionOrder::kAsGiven) {
-    for (Id v = 0; v < n; ++v) insert(v);
-  } else if (order == InsertionOrder::kRounds) {
-    std::vector<Id> given(static_cast<std::size_t>(n));
-    std::iota(given.begin(), given.end(), Id{0});
-    for (const Id v : brio_rounds(given)) insert(v);
-  } else {
-    const std::vector<Id> sequence =
-        order == InsertionOrder::kBrio
-            ? brio_order(xy)
-            : hilbert_order(std::vector<double>(xy.begin(), xy.end()), 2);
-    for (const Id v : sequence) insert(v);
   }
   builder.finish();
+  return t;
+}
+
+}  // namespace
+
+Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
+  const std::size_t n = xy.size() / 2;
+  for (std::size_t i = 0; i < 2 * n; ++i)
+    if (!std::isfinite(xy[i])) {
+      std::string msg = "delaunay2d: point ";
+      msg += std::to_string(i / 2);
+      msg += " has a non-finite coordinate";
+      throw InputError(msg);
+    }
+  if (order == InsertionOrder::kAsGiven) {
+    std::vector<double> copy = points_with_room(n);
+    copy.assign(xy.begin(), xy.begin() + 2 * n);
+    return insert_in_id_order(std::move(copy));
+  }
+  std::vector<Id> sequence;  // sequence[k]: the point inserted k-th
+  if (order == InsertionOrder::kRounds) {
+    std::vector<Id> given(n);
+    std::iota(given.begin(), given.end(), Id{0});
+    sequence = brio_rounds(given);
+  } else {
+    sequence =
+        order == InsertionOrder::kBrio ? brio_order(xy) : hilbert_order_coarse(xy.first(2 * n), 2);
+  }
+  // The points renumbered in insertion order, triangulated, and the ids put back: the same
+  // triangles as inserting by the input ids (nothing in the kernel depends on an id's value but
+  // whether it is a super-triangle vertex), with the coordinates read in sequence (1.15 M
+  // lattice points along the Hilbert curve: 0.64 s -> 0.3 s).
+  std::vector<double> sorted = points_with_room(n);
+  sorted.resize(2 * n);
+  for (std::size_t k = 0; k < n; ++k) {
+    sorted[2 * k] = xy[2 * static_cast<std::size_t>(sequence[k])];
+    sorted[2 * k + 1] = xy[2 * static_cast<std::size_t>(sequence[k]) + 1];
+  }
+  Triangulation2d t = insert_in_id_order(std::move(sorted));
+  std::copy_n(xy.begin(), 2 * n, t.xy.begin());
+  const auto original = [&](Id v) {
+    return static_cast<std::size_t>(v) < n ? sequence[static_cast<std::size_t>(v)] : v;
+  };
+  for (Id& v : t.tri) v = original(v);
+  std::vector<Id> representative = huge_vector<Id>(n);
+  for (std::size_t k = 0; k < n; ++k)
+    representative[static_cast<std::size_t>(sequence[k])] = original(t.representative[k]);
+  std::copy(representative.begin(), representative.end(), t.representative.begin());
   return t;
 }
 

@@ -25,7 +25,7 @@ namespace riemesh {
 
 enum class InsertionOrder {
   kBrio,     ///< biased randomised rounds, Hilbert-sorted in each (default)
-  kHilbert,  ///< one pass along the Hilbert curve
+  kHilbert,  ///< one pass along the Hilbert curve (hilbert_order_coarse)
   kAsGiven,  ///< the input order
   /// BRIO's rounds over the input order, kept inside each round (brio_rounds): for inputs
   /// already sorted along a space-filling curve, BRIO's work per point without its sort

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "core/predicates.hpp"
 #include "generate/cdt2d.hpp"
 #include "generate/delaunay2d.hpp"
@@ -86,7 +87,7 @@ void require_closed(const Mesh& in, const Constraints& c) {
 std::vector<Id> flood_regions(const Triangulation2d& t, const std::vector<Id>& on_constraint,
                               int* count) {
   const std::size_t nt = t.num_triangles();
-  std::vector<Id> region(nt, kNoId), stack;
+  std::vector<Id> region = huge_vector<Id>(nt, kNoId), stack;
   int r = 0;
   for (std::size_t seed = 0; seed < nt; ++seed) {
     if (region[seed] != kNoId) continue;
@@ -184,17 +185,18 @@ Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_point
 
   Mesh& m = out.mesh;
   m.dim = 2;
-  std::vector<Id> new_id(t.num_points, kNoId);
-  std::vector<std::uint8_t> used(t.num_points, 0);
+  std::vector<Id> new_id = huge_vector<Id>(t.num_points, kNoId);
+  std::vector<std::uint8_t> used = huge_vector<std::uint8_t>(t.num_points, 0);
   for (std::size_t tri = 0; tri < t.num_triangles(); ++tri)
     if (ref_of[region[tri]] > 0)
       for (int s = 0; s < 3; ++s) used[t.tri[3 * tri + s]] = 1;
   std::size_t num_used = 0, num_kept = 0;
   for (const auto u : used) num_used += u;
   for (std::size_t tri = 0; tri < t.num_triangles(); ++tri) num_kept += ref_of[region[tri]] > 0;
-  out.input_vertex.reserve(num_used);
-  m.coords.reserve(2 * num_used), m.vert_ref.reserve(num_used), m.vert_tag.reserve(num_used);
-  m.triangles.reserve(3 * num_kept), m.tri_ref.reserve(num_kept);
+  reserve_huge(out.input_vertex, num_used);
+  reserve_huge(m.coords, 2 * num_used), reserve_huge(m.vert_ref, num_used);
+  reserve_huge(m.vert_tag, num_used);
+  reserve_huge(m.triangles, 3 * num_kept), reserve_huge(m.tri_ref, num_kept);
   for (std::size_t v = 0; v < t.num_points; ++v) {
     if (!used[v]) continue;
     new_id[v] = static_cast<Id>(out.input_vertex.size());
@@ -208,6 +210,7 @@ Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_point
     for (int s = 0; s < 3; ++s) m.triangles.push_back(new_id[t.tri[3 * tri + s]]);
     m.tri_ref.push_back(ref_of[region[tri]]);
   }
+  reserve_huge(m.tri_tag, num_kept);
   m.tri_tag.assign(m.num_triangles(), kTagNone);
   // Edges next to a kept triangle, in input order and orientation.
   std::vector<std::uint8_t> edge_kept(c.input_edge.size(), 0);

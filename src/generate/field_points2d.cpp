@@ -37,6 +37,21 @@ double metric_incircle(const double* a, const double* b, const double* c, const 
          lift(cx, cy) * (ax * by - bx * ay);
 }
 
+/// Whether some triangle's edge is longer than √2 in the mean of its ends' metrics (the test of
+/// Refiner::candidates, locked edges included): none, and no round can add a point.
+bool has_long_edge(const Mesh& m, const std::vector<SymMat2>& metrics) {
+  for (std::size_t h = 0; h < m.triangles.size(); ++h) {
+    const auto a = static_cast<std::size_t>(m.triangles[h]);
+    const auto b = static_cast<std::size_t>(m.triangles[h % 3 == 2 ? h - 2 : h + 1]);
+    const double dx = m.coords[2 * b] - m.coords[2 * a],
+                 dy = m.coords[2 * b + 1] - m.coords[2 * a + 1];
+    const double len =
+        0.5 * (metric_length(metrics[a], dx, dy) + metric_length(metrics[b], dx, dy));
+    if (len > std::sqrt(2.0)) return true;
+  }
+  return false;
+}
+
 struct Candidate {
   double x, y;
   SymMat2 metric;
@@ -289,8 +304,15 @@ class Refiner {
 FieldPointStats insert_field_points2d(Mesh& mesh, std::vector<SymMat2>& metrics,
                                       InterpScheme scheme, int max_rounds) {
   RIEMESH_CHECK(mesh.dim == 2 && metrics.size() == mesh.num_vertices());
-  Refiner r(mesh, metrics);
   FieldPointStats stats;
+  if (!has_long_edge(mesh, metrics)) {  // (a unit lattice): the mesh as Refiner::write leaves it
+    mesh.vert_ref.resize(mesh.num_vertices(), 0);
+    mesh.vert_tag.resize(mesh.num_vertices(), kTagNone);
+    mesh.tri_ref.resize(mesh.num_triangles(), 0);
+    mesh.tri_tag.assign(mesh.num_triangles(), kTagNone);
+    return stats;
+  }
+  Refiner r(mesh, metrics);
   for (int round = 0; round < max_rounds; ++round) {
     std::vector<Candidate> cands = r.candidates(scheme);
     if (cands.empty()) break;

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 
 namespace riemesh {
 
@@ -163,7 +164,7 @@ std::vector<double> lattice_points2d(const Mesh& domain, const SymMat2& m, doubl
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   std::vector<double> out;
-  out.reserve(2 * keys.size());
+  reserve_huge(out, 2 * keys.size());
   for (const std::int64_t key : keys) {
     const std::int64_t j = key >> 32, i = key - (j << 32);
     const double q[2] = {lo[0] + static_cast<double>(i) + ((j & 1) ? 0.5 : 0.0),

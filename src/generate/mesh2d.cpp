@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "generate/lattice2d.hpp"
 #include "metric/metric.hpp"
 #include "remesh/boundary_curves.hpp"
@@ -113,6 +114,9 @@ Mesh split_boundary(const Mesh& boundary, std::vector<SymMat2>& metrics,
 /// on the √3/2 of a unit equilateral triangle.
 constexpr double kLatticeClearance = 0.43;
 
+/// The largest move of a lattice point's image before it is triangulated (with_lattice).
+constexpr double kLatticeJitter = 1e-7;
+
 /// Sorts the triangles of m by their smallest vertex (refs follow; tags are all none here): the
 /// triangles of the Hilbert-ordered insertion then follow the vertex numbering, which the
 /// optimiser's sweeps visit in order (a 2.3 M-triangle lattice mesh: its set-up and first pass
@@ -123,11 +127,11 @@ void sort_triangles_by_vertex(Mesh& m) {
     return static_cast<std::size_t>(
         std::min({m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]}));
   };
-  std::vector<std::size_t> start(nv + 1, 0);
+  std::vector<std::size_t> start = huge_vector<std::size_t>(nv + 1, 0);
   for (std::size_t t = 0; t < nt; ++t) ++start[low(t) + 1];
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<Id> tri(3 * nt);
-  std::vector<std::int32_t> ref(nt);
+  std::vector<Id> tri = huge_vector<Id>(3 * nt);
+  std::vector<std::int32_t> ref = huge_vector<std::int32_t>(nt);
   for (std::size_t t = 0; t < nt; ++t) {
     const std::size_t k = start[low(t)]++;
     std::copy_n(&m.triangles[3 * t], 3, &tri[3 * k]);
@@ -152,9 +156,24 @@ Domain2d with_lattice(const Mesh& boundary, Domain2d bare, const SymMat2 m,
   Mesh unit;  // the boundary's Edges and vertices, and the points, in the unit space
   unit.dim = 2;
   const std::size_t n0 = boundary.num_vertices(), n = n0 + points.size() / 2;
+  reserve_huge(unit.coords, 2 * n);
   unit.coords.resize(2 * n);
   for (std::size_t v = 0; v < n0; ++v) map.to_unit(&boundary.coords[2 * v], &unit.coords[2 * v]);
-  for (std::size_t v = n0; v < n; ++v) map.to_unit(&points[2 * (v - n0)], &unit.coords[2 * v]);
+  // The lattice points' images are exact lattice points up to rounding, and the partial
+  // triangulations along the insertion meet many cocircular ones (rectangles of the lattice),
+  // each decided by the exact in-circle predicate: moved by a fixed pseudo-random amount below
+  // kLatticeJitter (unit lengths), they no longer are (1.15 M points: 0.57 -> 0.26 s in
+  // delaunay2d). The finished triangulation has no such ties away from the boundary, so it is the
+  // lattice's, and the points keep their exact coordinates (below).
+  for (std::size_t v = n0; v < n; ++v) {
+    double* u = &unit.coords[2 * v];
+    map.to_unit(&points[2 * (v - n0)], u);
+    const double k = static_cast<double>(v - n0);
+    u[0] += kLatticeJitter *
+            (2.0 * (k * 0.6180339887498949 - std::floor(k * 0.6180339887498949)) - 1.0);
+    u[1] += kLatticeJitter *
+            (2.0 * (k * 0.4142135623730950 - std::floor(k * 0.4142135623730950)) - 1.0);
+  }
   unit.vert_ref = boundary.vert_ref, unit.vert_tag = boundary.vert_tag;
   unit.vert_ref.resize(n, 0), unit.vert_tag.resize(n, kTagNone);
   unit.edges = boundary.edges, unit.edge_ref = boundary.edge_ref, unit.edge_tag = boundary.edge_tag;
@@ -205,6 +224,7 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   const auto sizes = [&](const Domain2d& d) {
     std::vector<SymMat2> out;
     if (given.empty()) return boundary_sizes(d.mesh);
+    reserve_huge(out, d.input_vertex.size());
     for (const Id v : d.input_vertex) out.push_back(given[v]);
     return out;
   };

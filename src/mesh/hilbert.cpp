@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 
 namespace riemesh {
 
@@ -83,7 +85,7 @@ struct Quantiser {
   double scale = 0.0;     // cells per unit length
   std::uint32_t top = 0;  // largest grid coordinate
 
-  Quantiser(const std::vector<double>& coords, int d, int b) : dim(d), bits(b) {
+  Quantiser(std::span<const double> coords, int d, int b) : dim(d), bits(b) {
     const std::size_t n = coords.size() / d;
     double hi[3] = {0, 0, 0};
     for (int c = 0; c < d; ++c) {
@@ -121,7 +123,7 @@ struct Quantiser {
 /// same for all keys), or a comparison sort for small inputs.
 std::vector<Id> order_by_key(const std::vector<std::uint64_t>& keys) {
   const std::size_t n = keys.size();
-  std::vector<Id> order(n);
+  std::vector<Id> order = huge_vector<Id>(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<Id>(i);
   if (n < 4096) {
     std::stable_sort(order.begin(), order.end(), [&keys](Id a, Id b) { return keys[a] < keys[b]; });
@@ -131,7 +133,7 @@ std::vector<Id> order_by_key(const std::vector<std::uint64_t>& keys) {
     std::uint64_t key;
     Id index;
   };
-  std::vector<Item> a(n), b(n);
+  std::vector<Item> a = huge_vector<Item>(n), b = huge_vector<Item>(n);
   for (std::size_t i = 0; i < n; ++i) a[i] = {keys[i], static_cast<Id>(i)};
   std::vector<std::size_t> count(1 << 16);
   for (int shift = 0; shift < 64; shift += 16) {
@@ -197,6 +199,14 @@ std::vector<Id> hilbert_order(const std::vector<double>& coords, int dim) {
   return order_by_key(hilbert_keys(coords, dim));
 }
 
+std::vector<Id> hilbert_order_coarse(std::span<const double> coords, int dim) {
+  check_dim(dim);
+  const Quantiser q(coords, dim, renumber_bits(dim));
+  std::vector<std::uint64_t> keys = huge_vector<std::uint64_t>(coords.size() / dim);
+  for (std::size_t v = 0; v < keys.size(); ++v) keys[v] = q.key(&coords[dim * v]);
+  return order_by_key(keys);
+}
+
 void permute_vertices(Mesh& m, const std::vector<Id>& new2old) {
   const std::size_t nv = m.num_vertices();
   RIEMESH_CHECK(new2old.size() == nv);
@@ -225,11 +235,7 @@ Renumbering renumber_hilbert(Mesh& m) {
         throw InputError("renumber_hilbert: vertex id " + std::to_string(v) + " out of range");
   Renumbering r;
   const Quantiser q(m.coords, m.dim, renumber_bits(m.dim));
-  {
-    std::vector<std::uint64_t> keys(nv);
-    for (std::size_t v = 0; v < nv; ++v) keys[v] = q.key(&m.coords[m.dim * v]);
-    r.vertices = order_by_key(keys);
-  }
+  r.vertices = hilbert_order_coarse(m.coords, m.dim);
   permute_vertices(m, r.vertices);
   r.tets = sort_entities(m.tets, 4, m, q);
   gather(m.tet_ref, r.tets, 1);

@@ -2,6 +2,7 @@
 // Hilbert space-filling curve keys and mesh renumbering along the curve: vertices and elements
 // close in space get close ids, so loops over elements touch memory in order (cache locality).
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -21,6 +22,12 @@ std::vector<std::uint64_t> hilbert_keys(const std::vector<double>& coords, int d
 
 /// The points in curve order: order[new] = old. Stable: equal keys keep their input order.
 std::vector<Id> hilbert_order(const std::vector<double>& coords, int dim);
+
+/// As hilbert_order on a coarser grid: 2^16 cells per side in 2D, 2^10 in 3D (the grid of
+/// renumber_hilbert), points in one cell kept in their input order. 32-bit keys: half the levels
+/// and two radix passes instead of four (1.15 M points in 2D: 0.27 -> 0.09 s); for insertion
+/// orders and cache locality, where a finer order gains nothing.
+std::vector<Id> hilbert_order_coarse(std::span<const double> coords, int dim);
 
 /// The permutations applied by renumber_hilbert, as new -> old maps.
 struct Renumbering {
