@@ -259,7 +259,8 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
     for (std::size_t e = 0; e < start.num_edges(); ++e)
       for (int i = 0; i < 2; ++i) start.vert_tag[start.edges[2 * e + i]] |= kTagRequired;
   }
-  Adapt2dResult adapted = adapt2d(start, metrics, options.adapt, on_pass);
+  given = {};  // (the remesher copies what it needs: memory of large runs)
+  Adapt2dResult adapted = adapt2d(std::move(start), std::move(metrics), options.adapt, on_pass);
   Mesh2dResult out;
   out.mesh = std::move(adapted.mesh);
   if (!given_required) {  // the tags added above were for adapt2d only

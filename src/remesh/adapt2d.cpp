@@ -458,8 +458,13 @@ void Adapt2dOptions::validate() const {
   if (max_passes < 1 || max_passes > 1000) throw InputError("--passes must be in 1..1000");
 }
 
-Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
-                      const Adapt2dOptions& options, const PassCallback& on_pass) {
+namespace {
+
+/// adapt2d; `owned_input` and `owned_metrics`, when given, are `input` and `metrics` themselves,
+/// released once the remesher has its own copy.
+Adapt2dResult adapt2d_impl(const Mesh& input, std::span<const SymMat2> metrics,
+                           const Adapt2dOptions& options, const PassCallback& on_pass,
+                           Mesh* owned_input, std::vector<SymMat2>* owned_metrics) {
   options.validate();
   if (input.dim != 2) throw InputError("2D remeshing needs a planar mesh (Dimension 2)");
   if (input.num_triangles() == 0) throw InputError("the mesh has no triangles");
@@ -486,9 +491,17 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   // The edge numbering only for the gradation (the rest reads the neighbours and vertex balls).
   Adjacency adjacency = build_face_adjacency(work.triangles, 3, work.num_vertices());
   if (options.hgrad > 0.0) add_edges(adjacency, work.triangles);
-  const std::vector<SymMat2> prepared =
+  std::vector<SymMat2> prepared =
       prepare_metrics<2>(work, adjacency, work_metrics, options, result.report);
   Remesh2dContext ctx(work, prepared, options, adjacency);
+  // The context has what it needs (the mesh, metrics and curves copied): the adjacency, the
+  // prepared metrics and the renumbered copy are released before the passes (peak memory).
+  adjacency = Adjacency{};
+  prepared = {};
+  ordered = Mesh{};
+  permuted = {};
+  if (owned_input) *owned_input = Mesh{};
+  if (owned_metrics) *owned_metrics = {};
   TriMesh& m = ctx.mesh();
   long best_ops = std::numeric_limits<long>::max();
   int best_pass = 0;
@@ -561,6 +574,18 @@ Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
   result.mesh = to_mesh(m, &result.metrics);
   return result;
+}
+
+}  // namespace
+
+Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
+                      const Adapt2dOptions& options, const PassCallback& on_pass) {
+  return adapt2d_impl(input, metrics, options, on_pass, nullptr, nullptr);
+}
+
+Adapt2dResult adapt2d(Mesh&& input, std::vector<SymMat2>&& metrics, const Adapt2dOptions& options,
+                      const PassCallback& on_pass) {
+  return adapt2d_impl(input, metrics, options, on_pass, &input, &metrics);
 }
 
 }  // namespace riemesh

@@ -82,4 +82,9 @@ using PassCallback = std::function<void(const PassStats&)>;
 Adapt2dResult adapt2d(const Mesh& input, std::span<const SymMat2> metrics,
                       const Adapt2dOptions& options, const PassCallback& on_pass = {});
 
+/// The same, taking the mesh and metrics over: they are released (left empty) as soon as the
+/// remesher has built its own structures, before the passes (peak memory of large runs).
+Adapt2dResult adapt2d(Mesh&& input, std::vector<SymMat2>&& metrics, const Adapt2dOptions& options,
+                      const PassCallback& on_pass = {});
+
 }  // namespace riemesh

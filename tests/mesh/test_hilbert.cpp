@@ -129,6 +129,28 @@ TEST(Hilbert, LargeInputsAreSortedStably) {
   }
 }
 
+TEST(Hilbert, CoarseOrderIsAStablePermutationAlongTheCurve) {
+  // 2^16 cells per side: points closer than a cell keep their input order; on a grid of 256 x 256
+  // points (cells far apart) consecutive points are neighbours, as on the full-resolution curve.
+  std::vector<double> pts;
+  for (int i = 0; i < 256; ++i)
+    for (int j = 0; j < 256; ++j) pts.insert(pts.end(), {i / 255.0, j / 255.0});
+  pts.insert(pts.end(), {0.5 + 1e-9, 0.5, 0.5, 0.5 + 1e-9});  // one cell, ids 65536 then 65537
+  const std::vector<Id> order = hilbert_order_coarse(pts, 2);
+  ASSERT_TRUE(is_permutation_of_iota(order));
+  EXPECT_LT(std::find(order.begin(), order.end(), 65536) - order.begin(),
+            std::find(order.begin(), order.end(), 65537) - order.begin());
+  int far = 0;
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const double dx = pts[2 * order[k]] - pts[2 * order[k - 1]];
+    const double dy = pts[2 * order[k] + 1] - pts[2 * order[k - 1] + 1];
+    far += std::hypot(dx, dy) > 1.5 / 255.0;
+  }
+  EXPECT_LE(far, 4);  // (the two extra points' visit)
+  EXPECT_EQ(hilbert_order_coarse(std::vector<double>{1.0, 2.0, 3.0, 1.0, 2.0, 3.0}, 3),
+            (std::vector<Id>{0, 1}));
+}
+
 TEST(Hilbert, RenumberCubeKeepsTheMeshAndImprovesLocality) {
   const Mesh original = shuffled(unit_cube(6), 1);
   Mesh m = original;

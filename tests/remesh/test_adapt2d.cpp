@@ -251,6 +251,18 @@ TEST(Adapt2d, Deterministic) {
   EXPECT_EQ(a.mesh.edges, b.mesh.edges);
 }
 
+TEST(Adapt2d, TakingTheInputOverGivesTheSameMeshAndReleasesIt) {
+  Mesh in = unit_square(12, 12);
+  std::vector<SymMat2> met = linear_field(in, 0.02);
+  const Adapt2dResult a = adapt2d(in, met, {});
+  const Adapt2dResult b = adapt2d(std::move(in), std::move(met), {});
+  EXPECT_EQ(a.mesh.coords, b.mesh.coords);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  EXPECT_EQ(a.mesh.edges, b.mesh.edges);
+  EXPECT_EQ(in.num_triangles(), 0u);  // NOLINT(bugprone-use-after-move): released, as documented
+  EXPECT_TRUE(met.empty());           // NOLINT(bugprone-use-after-move)
+}
+
 // adapt2d renumbers the input along a Hilbert curve only when its numbering is not already
 // coherent (a scrambled numbering is renumbered, a structured grid is used as it is): both paths
 // must give valid unit meshes of the same quality, each deterministic.
