@@ -309,7 +309,9 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--aniso-max", a->aniso_max, "Largest anisotropy ratio with --field");
   cmd->add_option("--fields", a->fields, "Vertex fields (.sol) to transfer to the output (P1)");
   cmd->add_option("--out-fields", a->out_fields, "Where to write the transferred fields (.sol)");
-  cmd->add_option("--hsiz", a->hsiz, "Uniform size instead of a metric");
+  cmd->add_option("--hsiz", a->hsiz,
+                  "Uniform size instead of a metric (2D, far finer than the mesh: the domain is "
+                  "meshed afresh from its boundary with the size's unit lattice)");
   cmd->add_option("--hmin", a->opt.hmin, "Smallest size")->capture_default_str();
   cmd->add_option("--hmax", a->opt.hmax, "Largest size");
   cmd->add_option("--hgrad", a->opt.hgrad, "Gradation: growth ratio between neighbours (0: off)")
