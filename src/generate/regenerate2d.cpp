@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -62,6 +63,14 @@ CurveDomain curve_domain(const Mesh& in, const BoundaryCurves& curves) {
     if (curves.corner[v]) tag |= kTagCorner;
     b.vert_tag.push_back(tag);
   }
+  // Two curve vertices at one place (the lips of a crack, a pinch given twice) would be merged
+  // by the domain's triangulation: the crack would close.
+  std::vector<std::pair<double, double>> places;
+  places.reserve(b.num_vertices());
+  for (std::size_t v = 0; v < b.num_vertices(); ++v)
+    places.emplace_back(b.coords[2 * v], b.coords[2 * v + 1]);
+  std::sort(places.begin(), places.end());
+  if (std::adjacent_find(places.begin(), places.end()) != places.end()) return {};
   for (std::size_t f = 0; f < nf; ++f) {
     const FeatureEdge& fe = curves.edges[f];
     const Id a = sides[f] == 1 ? from[f] : fe.v0, c = a == fe.v0 ? fe.v1 : fe.v0;
@@ -175,7 +184,14 @@ Adapt2dResult adapt_or_regenerate2d(const Mesh& input, std::span<const SymMat2> 
   mo.keep_boundary = false;
   mo.adapt = options;
   mo.adapt.hgrad = 0.0;
-  Mesh2dResult meshed = mesh_domain2d(domain.boundary, mo, on_pass);
+  Mesh2dResult meshed;
+  try {
+    meshed = mesh_domain2d(domain.boundary, mo, on_pass);
+  } catch (const InputError&) {
+    // The curves of a valid mesh that do not make a domain (e.g. crossing ones in a folded
+    // mesh): the passes decide, and name the input's own places if it is at fault.
+    return adapt2d(input, metrics, options, on_pass);
+  }
   restore_region_refs(input, m, meshed.regions, meshed.mesh);
   Adapt2dResult out;
   out.mesh = std::move(meshed.mesh);

@@ -21,15 +21,16 @@ inline constexpr double kRegenerateRatio = 4.0;
 /// Whether adapt_or_regenerate2d meshes `input` afresh: a planar triangle mesh, one metric per
 /// vertex, all equal (exactly), at least kRegenerateRatio times its triangles asked, every operator
 /// allowed (insertion, swaps, moves), every feature curve closed (no dangling listed edge) with a
-/// triangle on at least one side, no required triangle and no required vertex off the curves.
-/// Errors in the input are left to adapt2d (false).
+/// triangle on at least one side, no two of their vertices at one place (a crack's lips), no
+/// required triangle and no required vertex off the curves. Errors in the input are left to
+/// adapt2d (false).
 bool regeneration_applies(const Mesh& input, std::span<const SymMat2> metrics,
                           const Adapt2dOptions& options);
 
 /// adapt2d(input, metrics, options, on_pass), or, when regeneration_applies, the domain meshed
 /// afresh (see the file comment): the same outputs (mesh with refs, tags, corners and edges;
 /// metric per vertex; passes; a note saying the domain was meshed afresh), the same errors for
-/// bad input. Deterministic.
+/// bad input (curves that do not make a domain, as in a folded mesh: adapt2d). Deterministic.
 Adapt2dResult adapt_or_regenerate2d(const Mesh& input, std::span<const SymMat2> metrics,
                                     const Adapt2dOptions& options,
                                     const PassCallback& on_pass = {});

@@ -220,6 +220,70 @@ TEST(Regenerate2d, OtherwiseAdapt2dItself) {
   EXPECT_FALSE(regeneration_applies(pinned, fine, o));
 }
 
+TEST(Regenerate2d, ACrackIsLeftToAdapt2d) {
+  // The unit square cut along x = 0.5 from y = 0 to 0.5: the triangles right of the cut use
+  // copies of its vertices (the tip shared). Meshed afresh, the lips would be merged.
+  Mesh in = unit_square(8, 8);
+  const std::size_t nv = in.num_vertices();
+  std::vector<Id> copy(nv, kNoId);
+  for (std::size_t t = 0; t < in.num_triangles(); ++t) {
+    double cx = 0.0;
+    for (int i = 0; i < 3; ++i) cx += in.coords[2 * in.triangles[3 * t + i]] / 3.0;
+    if (cx < 0.5) continue;
+    for (int i = 0; i < 3; ++i) {
+      const Id v = in.triangles[3 * t + i];
+      if (in.coords[2 * v] != 0.5 || !(in.coords[2 * v + 1] < 0.5)) continue;
+      if (copy[v] == kNoId) {
+        copy[v] = static_cast<Id>(in.num_vertices());
+        in.coords.insert(in.coords.end(), {in.coords[2 * v], in.coords[2 * v + 1]});
+        in.vert_ref.push_back(0);
+        in.vert_tag.push_back(kTagNone);
+      }
+      in.triangles[3 * t + i] = copy[v];
+    }
+  }
+  for (std::size_t e = 0; e < in.num_edges(); ++e)  // the bottom side right of the cut
+    for (int i = 0; i < 2; ++i) {
+      const Id v = in.edges[2 * e + i], w = in.edges[2 * e + 1 - i];
+      if (copy[v] != kNoId && in.coords[2 * w] > 0.5) in.edges[2 * e + i] = copy[v];
+    }
+  ASSERT_EQ(in.num_vertices(), nv + 4);
+  const std::vector<SymMat2> met = uniform(in, 0.02);
+  EXPECT_FALSE(regeneration_applies(in, met, Adapt2dOptions{}));
+  const Adapt2dResult r = adapt_or_regenerate2d(in, met, Adapt2dOptions{});
+  EXPECT_FALSE(regenerated(r));
+  // The lips stay apart: boundary edges on x = 0.5 below the tip, on both sides.
+  double lips = 0.0;
+  for (std::size_t e = 0; e < r.mesh.num_edges(); ++e) {
+    const double* a = &r.mesh.coords[2 * r.mesh.edges[2 * e]];
+    const double* b = &r.mesh.coords[2 * r.mesh.edges[2 * e + 1]];
+    if (a[0] == 0.5 && b[0] == 0.5) lips += std::abs(b[1] - a[1]);
+  }
+  EXPECT_NEAR(lips, 1.0, 1e-9);
+}
+
+TEST(Regenerate2d, CurvesThatCrossAreLeftToAdapt2d) {
+  // Two unit squares, the second moved by (0.3, 0.3): every triangle is valid, the boundaries
+  // cross (a folded mesh), so no domain is made of them and adapt2d runs.
+  Mesh in = unit_square(4, 4);
+  const Mesh other = unit_square(4, 4);
+  const auto shift = static_cast<Id>(in.num_vertices());
+  for (std::size_t v = 0; v < other.num_vertices(); ++v)
+    in.coords.insert(in.coords.end(), {other.coords[2 * v] + 0.3, other.coords[2 * v + 1] + 0.3});
+  in.vert_ref.resize(in.num_vertices(), 0);
+  in.vert_tag.resize(in.num_vertices(), kTagNone);
+  for (const Id v : other.triangles) in.triangles.push_back(v + shift);
+  in.tri_ref.resize(in.num_triangles(), 0);
+  in.tri_tag.resize(in.num_triangles(), kTagNone);
+  for (const Id v : other.edges) in.edges.push_back(v + shift);
+  in.edge_ref.insert(in.edge_ref.end(), other.edge_ref.begin(), other.edge_ref.end());
+  in.edge_tag.resize(in.num_edges(), kTagNone);
+  const std::vector<SymMat2> met = uniform(in, 0.05);
+  const Adapt2dResult r = adapt_or_regenerate2d(in, met, Adapt2dOptions{});
+  EXPECT_FALSE(regenerated(r));
+  EXPECT_TRUE(same_mesh(r.mesh, adapt2d(in, met, Adapt2dOptions{}).mesh));
+}
+
 TEST(Regenerate2d, BadInputGivesAdapt2dsErrors) {
   Mesh in = unit_square(4, 4);
   std::vector<SymMat2> met = uniform(in, 0.01);
