@@ -1,13 +1,15 @@
 // The 2D Delaunay kernel: random points in the unit square.
 //   Sorted/N    points already in Hilbert order, inserted as given (the target: ≥ 5 M/s)
 //   SortedRounds/N  the same points in BRIO's rounds over their order (kRounds: no sort)
+//   SortedCoarseFirst/N  the same points, every 64th first, then the rest (kCoarseFirst: no sort)
 //   Brio/N      unsorted points; BRIO ordering (Hilbert sort per round) included in the time
 // Run: build/bench/riemesh_bench_delaunay2d --benchmark_repetitions=5
 //        --benchmark_report_aggregates_only=true
 // Or one delaunay2d call on the same N points, Hilbert-sorted (as Sorted/N) or unsorted with BRIO
 // (as Brio/N), for valgrind --tool=callgrind --toggle-collect='riemesh::delaunay2d*' (counts the
 // load does not disturb); prints the triangle count and a hash of tri and nbr (same hash = same
-// triangulation, triangle order included): build/bench/riemesh_bench_delaunay2d --once N [--order brio]
+// triangulation, triangle order included): build/bench/riemesh_bench_delaunay2d --once N
+// [--order brio|coarse] (coarse: Hilbert-sorted, as SortedCoarseFirst/N)
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
@@ -63,6 +65,11 @@ void SortedRounds(benchmark::State& state) {
 }
 BENCHMARK(SortedRounds)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
+void SortedCoarseFirst(benchmark::State& state) {
+  run(state, hilbert_sorted(random_square(state.range(0))), InsertionOrder::kCoarseFirst);
+}
+BENCHMARK(SortedCoarseFirst)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
 void Brio(benchmark::State& state) {
   run(state, random_square(state.range(0)), InsertionOrder::kBrio);
 }
@@ -77,9 +84,10 @@ std::uint64_t hash_ids(std::span<const Id> ids, std::uint64_t h) {
   return h;
 }
 
-int run_once(std::size_t n, bool brio) {
+int run_once(std::size_t n, InsertionOrder order) {
+  const bool brio = order == InsertionOrder::kBrio;
   const std::vector<double> xy = brio ? random_square(n) : hilbert_sorted(random_square(n));
-  const Triangulation2d t = delaunay2d(xy, brio ? InsertionOrder::kBrio : InsertionOrder::kAsGiven);
+  const Triangulation2d t = delaunay2d(xy, order);
   const std::uint64_t h = hash_ids(t.nbr, hash_ids(t.tri, 0xcbf29ce484222325ULL));
   std::printf("points %zu triangles %zu hash %016llx\n", n, t.num_triangles(),
               static_cast<unsigned long long>(h));
@@ -90,12 +98,15 @@ int run_once(std::size_t n, bool brio) {
 
 int main(int argc, char** argv) {
   std::size_t once = 0;
-  bool brio = false;
+  InsertionOrder order = InsertionOrder::kAsGiven;
   for (int i = 1; i + 1 < argc; ++i) {
     if (std::strcmp(argv[i], "--once") == 0) once = std::strtoull(argv[i + 1], nullptr, 10);
-    if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "brio") == 0) brio = true;
+    if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "brio") == 0)
+      order = InsertionOrder::kBrio;
+    if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "coarse") == 0)
+      order = InsertionOrder::kCoarseFirst;
   }
-  if (once > 0) return run_once(once, brio);
+  if (once > 0) return run_once(once, order);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

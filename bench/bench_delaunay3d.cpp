@@ -1,13 +1,15 @@
 // The 3D Delaunay kernel: random points in the unit cube.
 //   Sorted/N    points already in Hilbert order, inserted as given (the target: ≥ 1.5 M/s)
 //   SortedRounds/N  the same points in BRIO's rounds over their order (kRounds: no sort)
+//   SortedCoarseFirst/N  the same points, every 64th first, then the rest (kCoarseFirst: no sort)
 //   Hilbert/N   unsorted points; the Hilbert sort is included in the time
 //   Brio/N      unsorted points; BRIO ordering (Hilbert sort per round) included in the time
 // "points/s" counts the points over the whole call (ordering, insertion, compaction of the result).
 // Run: build/bench/riemesh_bench_delaunay3d --benchmark_repetitions=5
 //        --benchmark_report_aggregates_only=true
 // Or, on the points of a TetGen .node file (for bench/delaunay3d_vs_tetgen.sh):
-//      build/bench/riemesh_bench_delaunay3d --node FILE.node [--runs R] [--order brio|hilbert|given]
+//      build/bench/riemesh_bench_delaunay3d --node FILE.node [--runs R] [--order
+//      brio|hilbert|given]
 //   prints "points N tets T median_seconds S" (median over R runs of delaunay3d, reading excluded).
 // Or the kernel's work per point on N random points, Hilbert-sorted beforehand (as Sorted/N) or in
 // BRIO order, or Hilbert-sorted in rounds (as SortedRounds/N), with one run only (for valgrind
@@ -75,6 +77,11 @@ void SortedRounds(benchmark::State& state) {
   run(state, hilbert_sorted(random_cube(state.range(0))), InsertionOrder::kRounds);
 }
 BENCHMARK(SortedRounds)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void SortedCoarseFirst(benchmark::State& state) {
+  run(state, hilbert_sorted(random_cube(state.range(0))), InsertionOrder::kCoarseFirst);
+}
+BENCHMARK(SortedCoarseFirst)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void Hilbert(benchmark::State& state) {
   run(state, random_cube(state.range(0)), InsertionOrder::kHilbert);

@@ -341,6 +341,15 @@ std::vector<Id> brio_rounds(const std::vector<Id>& along) {
   return order;
 }
 
+std::vector<Id> coarse_first(const std::vector<Id>& along) {
+  std::vector<Id> out;
+  out.reserve(along.size());
+  for (std::size_t k = 0; k < along.size(); k += kCoarseStride) out.push_back(along[k]);
+  for (std::size_t k = 0; k < along.size(); ++k)
+    if (k % kCoarseStride != 0) out.push_back(along[k]);
+  return out;
+}
+
 namespace {
 
 /// Room for n points and the super-triangle's 3 vertices, in huge pages.
@@ -350,10 +359,9 @@ std::vector<double> points_with_room(std::size_t n) {
   return xy;
 }
 
-/// The points inserted in the order of their ids (the order delaunay2d chose is applied to the
-/// coordinates before: each insertion then reads its neighbours' coordinates near in memory).
-/// `xy` (from points_with_room) becomes the triangulation's.
-Triangulation2d insert_in_id_order(std::vector<double>&& xy) {
+/// The points inserted in the order of `sequence` (empty: of their ids). `xy` (from
+/// points_with_room) becomes the triangulation's.
+Triangulation2d insert_points(std::vector<double>&& xy, std::span<const Id> sequence) {
   Triangulation2d t;
   t.num_points = xy.size() / 2;
   t.xy = std::move(xy);
@@ -363,10 +371,12 @@ Triangulation2d insert_in_id_order(std::vector<double>&& xy) {
   t.representative.resize(t.num_points);
   Builder builder(t, extent);
   builder.start(n, n + 1, n + 2);
-  for (Id v = 0; v < n; ++v) {
-    Id same = v;
-    builder.insert(v, &same);
-    t.representative[v] = same;
+  Id* representative = t.representative.data();
+  const std::size_t count = sequence.empty() ? t.num_points : sequence.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    const Id v = sequence.empty() ? static_cast<Id>(k) : sequence[k];
+    representative[v] = v;
+    builder.insert(v, &representative[v]);
   }
   builder.finish();
   return t;
@@ -383,20 +393,24 @@ Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
       msg += " has a non-finite coordinate";
       throw InputError(msg);
     }
-  if (order == InsertionOrder::kAsGiven) {
+  if (order == InsertionOrder::kAsGiven || order == InsertionOrder::kRounds ||
+      order == InsertionOrder::kCoarseFirst) {
+    // Orders that keep the given one inside each round: the coordinates are read in sequence
+    // as they are (a sparse first round reads few).
+    std::vector<Id> sequence;
+    if (order != InsertionOrder::kAsGiven) {
+      std::vector<Id> given(n);
+      std::iota(given.begin(), given.end(), Id{0});
+      sequence = order == InsertionOrder::kRounds ? brio_rounds(given) : coarse_first(given);
+    }
     std::vector<double> copy = points_with_room(n);
     copy.assign(xy.begin(), xy.begin() + 2 * n);
-    return insert_in_id_order(std::move(copy));
+    return insert_points(std::move(copy), sequence);
   }
-  std::vector<Id> sequence;  // sequence[k]: the point inserted k-th
-  if (order == InsertionOrder::kRounds) {
-    std::vector<Id> given(n);
-    std::iota(given.begin(), given.end(), Id{0});
-    sequence = brio_rounds(given);
-  } else {
-    sequence =
-        order == InsertionOrder::kBrio ? brio_order(xy) : hilbert_order_coarse(xy.first(2 * n), 2);
-  }
+  // sequence[k]: the point inserted k-th
+  const std::vector<Id> sequence = order == InsertionOrder::kBrio
+                                       ? brio_order(xy)
+                                       : coarse_first(hilbert_order_coarse(xy.first(2 * n), 2));
   // The points renumbered in insertion order, triangulated, and the ids put back: the same
   // triangles as inserting by the input ids (nothing in the kernel depends on an id's value but
   // whether it is a super-triangle vertex), with the coordinates read in sequence (1.15 M
@@ -407,7 +421,7 @@ Triangulation2d delaunay2d(std::span<const double> xy, InsertionOrder order) {
     sorted[2 * k] = xy[2 * static_cast<std::size_t>(sequence[k])];
     sorted[2 * k + 1] = xy[2 * static_cast<std::size_t>(sequence[k]) + 1];
   }
-  Triangulation2d t = insert_in_id_order(std::move(sorted));
+  Triangulation2d t = insert_points(std::move(sorted), {});
   std::copy_n(xy.begin(), 2 * n, t.xy.begin());
   const auto original = [&](Id v) {
     return static_cast<std::size_t>(v) < n ? sequence[static_cast<std::size_t>(v)] : v;

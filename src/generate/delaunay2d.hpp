@@ -25,11 +25,14 @@ namespace riemesh {
 
 enum class InsertionOrder {
   kBrio,     ///< biased randomised rounds, Hilbert-sorted in each (default)
-  kHilbert,  ///< one pass along the Hilbert curve (hilbert_order_coarse)
+  kHilbert,  ///< along the Hilbert curve (hilbert_order_coarse), a sample first (coarse_first)
   kAsGiven,  ///< the input order
   /// BRIO's rounds over the input order, kept inside each round (brio_rounds): for inputs
   /// already sorted along a space-filling curve, BRIO's work per point without its sort
   kRounds,
+  /// A sample first, then the rest, both in the input order (coarse_first): for inputs already
+  /// sorted along a space-filling curve
+  kCoarseFirst,
 };
 
 /// Vertex or half-edge ids of a Triangulation2d: a vector that `resize` does not zero-fill (the
@@ -67,6 +70,18 @@ std::vector<Id> brio_order(std::span<const double> xy);
 /// Deterministic. brio_order is this over the Hilbert order; the kRounds orders of both kernels
 /// over the given order.
 std::vector<Id> brio_rounds(const std::vector<Id>& along);
+
+/// Every kCoarseStride-th id of `along` (the first included), then the others, each part in the
+/// order of `along`. Points sorted along a space-filling curve and inserted as given each land
+/// on the frontier of the region triangulated so far, whose triangles reach far ahead: their
+/// cavities are half as large again as in a finished triangulation (2D: 5.8 triangles instead of
+/// 4, 12.6 in-circle tests per point). The sample's triangulation covers the domain first, with
+/// triangles of a few spacings, so the rest meet no long ones (9.8 tests per point), at the cost
+/// of one more sweep over memory (BRIO's rounds make one per round).
+std::vector<Id> coarse_first(const std::vector<Id>& along);
+
+/// The sample stride of coarse_first (2D, 1 M random points: 16–256 all gain 10–15%).
+inline constexpr std::size_t kCoarseStride = 64;
 
 /// The triangles not touching the super-triangle (3 vertex ids each, counter-clockwise).
 std::vector<Id> delaunay_triangles(const Triangulation2d& t);

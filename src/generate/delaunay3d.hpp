@@ -36,7 +36,8 @@ Tetrahedralization delaunay3d(const std::vector<double>& coords,
 
 /// The insertion order `delaunay3d` uses: order[k] = the point inserted k-th. kBrio: rounds
 /// [n/2, n), [n/4, n/2), ... of a fixed-seed shuffle, each sorted along the Hilbert curve;
-/// kRounds: brio_rounds over the given order (for points already sorted along a curve).
+/// kRounds: brio_rounds over the given order (for points already sorted along a curve);
+/// kCoarseFirst: coarse_first over the given order.
 std::vector<Id> insertion_order(const std::vector<double>& coords, InsertionOrder order);
 
 /// Counters of one run (for benchmarks and tests of the kernel's work).

@@ -42,6 +42,7 @@ std::vector<Id> insertion_order(const std::vector<double>& coords, InsertionOrde
   // given, each point lands on the frontier of the region triangulated so far, next to its flat
   // hull tets: a third more conflict tests and deleted tets per point than with rounds.
   if (order == InsertionOrder::kRounds) return brio_rounds(ids);
+  if (order == InsertionOrder::kCoarseFirst) return coarse_first(ids);
   const std::vector<std::uint64_t> keys = hilbert_keys(coords, 3);
   if (order == InsertionOrder::kHilbert) {
     sort_by_key(ids, 0, n, keys);

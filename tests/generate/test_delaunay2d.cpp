@@ -72,8 +72,9 @@ std::vector<double> random_points(std::size_t n, unsigned seed) {
 
 TEST(Delaunay2d, RandomPointsAllOrders) {
   const std::vector<double> xy = random_points(3000, 1);
-  for (InsertionOrder o : {InsertionOrder::kBrio, InsertionOrder::kHilbert, InsertionOrder::kAsGiven,
-                           InsertionOrder::kRounds}) {
+  for (InsertionOrder o :
+       {InsertionOrder::kBrio, InsertionOrder::kHilbert, InsertionOrder::kAsGiven,
+        InsertionOrder::kRounds, InsertionOrder::kCoarseFirst}) {
     const Triangulation2d t = delaunay2d(xy, o);
     expect_delaunay(t, 3000);
     expect_empty_circles(t);
@@ -107,6 +108,23 @@ TEST(Delaunay2d, BrioRoundsKeepTheOrderInsideHalvingRounds) {
   EXPECT_EQ(order, brio_rounds(along));
 }
 
+TEST(Delaunay2d, CoarseFirstTakesEveryStridethIdFirst) {
+  // 1,000 ids in a scrambled order: every kCoarseStride-th of them first, then the others, each
+  // part in the sequence's order, each id once.
+  std::vector<Id> along(1000);
+  for (std::size_t k = 0; k < along.size(); ++k) along[k] = static_cast<Id>((k * 7919) % 1000);
+  const std::vector<Id> order = coarse_first(along);
+  ASSERT_EQ(order.size(), along.size());
+  const std::size_t sample = (along.size() + kCoarseStride - 1) / kCoarseStride;
+  for (std::size_t k = 0; k < sample; ++k) EXPECT_EQ(order[k], along[k * kCoarseStride]);
+  std::size_t next = sample;
+  for (std::size_t k = 0; k < along.size(); ++k)
+    if (k % kCoarseStride != 0) {
+      EXPECT_EQ(order[next++], along[k]);
+    }
+  EXPECT_TRUE(coarse_first({}).empty());
+}
+
 TEST(Delaunay2d, LargeRandomSet) {
   const Triangulation2d t = delaunay2d(random_points(200000, 2));
   expect_delaunay(t, 200000);
@@ -123,7 +141,9 @@ TEST(Delaunay2d, GridIsFullyCocircular) {
       rotated.insert(rotated.end(), {0.1 + (i - j) * std::sqrt(0.5), 1e3 + (i + j) * std::sqrt(0.5)});
     }
   for (const auto* pts : {&grid, &rotated}) {
-    for (InsertionOrder o : {InsertionOrder::kBrio, InsertionOrder::kAsGiven, InsertionOrder::kRounds}) {
+    for (InsertionOrder o :
+         {InsertionOrder::kBrio, InsertionOrder::kAsGiven, InsertionOrder::kRounds,
+          InsertionOrder::kCoarseFirst, InsertionOrder::kHilbert}) {
       const Triangulation2d t = delaunay2d(*pts, o);
       expect_delaunay(t, n * n);
       expect_empty_circles(t);

@@ -22,7 +22,8 @@ using test::expect_delaunay;
 using test::total_volume;
 
 constexpr InsertionOrder kOrders[] = {InsertionOrder::kAsGiven, InsertionOrder::kHilbert,
-                                      InsertionOrder::kBrio, InsertionOrder::kRounds};
+                                      InsertionOrder::kBrio, InsertionOrder::kRounds,
+                                      InsertionOrder::kCoarseFirst};
 
 std::vector<double> random_points(std::size_t n, unsigned seed) {
   std::mt19937_64 rng(seed);
