@@ -14,7 +14,7 @@
 // Or the kernel's work per point on N random points, Hilbert-sorted beforehand (as Sorted/N) or in
 // BRIO order, or Hilbert-sorted in rounds (as SortedRounds/N), with one run only (for valgrind
 // --tool=callgrind, whose counts the load does not disturb):
-//      build/bench/riemesh_bench_delaunay3d --counts N [--order brio|rounds]
+//      build/bench/riemesh_bench_delaunay3d --counts N [--order brio|rounds|coarse]
 // With --hash (and --counts N or --node FILE): prints "tets T hash H raw R", H an FNV-1a hash of
 // the tets, each with its vertices sorted, in sorted order (the same triangulation), R one of the
 // arrays as returned (the same tet numbering and neighbours), to check that a change of the kernel
@@ -149,7 +149,7 @@ int run_node_file(const char* path, int runs, InsertionOrder order, bool hash) {
   return 0;
 }
 
-/// order: kBrio on random points, kAsGiven or kRounds on Hilbert-sorted ones.
+/// order: kBrio on random points, kAsGiven, kRounds or kCoarseFirst on Hilbert-sorted ones.
 int run_counts(std::size_t n, InsertionOrder order) {
   const bool brio = order == InsertionOrder::kBrio;
   const std::vector<double> xyz = brio ? random_cube(n) : hilbert_sorted(random_cube(n));
@@ -173,6 +173,7 @@ int main(int argc, char** argv) {
   bool hash = false;
   bool brio = false;    // --order brio given (for --counts, whose default is Hilbert-sorted points)
   bool rounds = false;  // --order rounds (for --counts: Hilbert-sorted points in rounds)
+  bool coarse = false;  // --order coarse (for --counts: Hilbert-sorted points, a sample first)
   int runs = 5;
   InsertionOrder order = InsertionOrder::kBrio;
   for (int i = 1; i < argc; ++i)
@@ -182,6 +183,8 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "brio") == 0) brio = true;
     if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "rounds") == 0)
       rounds = true;
+    if (std::strcmp(argv[i], "--order") == 0 && std::strcmp(argv[i + 1], "coarse") == 0)
+      coarse = true;
     if (std::strcmp(argv[i], "--counts") == 0) counts = std::strtoull(argv[i + 1], nullptr, 10);
     if (std::strcmp(argv[i], "--runs") == 0) runs = std::max(1, std::atoi(argv[i + 1]));
     if (std::strcmp(argv[i], "--order") == 0)
@@ -195,6 +198,7 @@ int main(int argc, char** argv) {
   if (counts >= 4)
     return run_counts(counts, brio     ? InsertionOrder::kBrio
                               : rounds ? InsertionOrder::kRounds
+                              : coarse ? InsertionOrder::kCoarseFirst
                                        : InsertionOrder::kAsGiven);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

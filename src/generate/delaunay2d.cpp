@@ -342,11 +342,18 @@ std::vector<Id> brio_rounds(const std::vector<Id>& along) {
 }
 
 std::vector<Id> coarse_first(const std::vector<Id>& along) {
-  std::vector<Id> out;
-  out.reserve(along.size());
-  for (std::size_t k = 0; k < along.size(); k += kCoarseStride) out.push_back(along[k]);
-  for (std::size_t k = 0; k < along.size(); ++k)
-    if (k % kCoarseStride != 0) out.push_back(along[k]);
+  const std::size_t n = along.size();
+  int top = 0;  // J: 8^J · 64 <= n
+  while (top < 20 && (std::size_t{64} << (3 * (top + 1))) <= n) ++top;
+  // Round of position k: J − (the largest j <= J with 8^j dividing k), 0 first.
+  const auto round = [top](std::size_t k) {
+    return k == 0 ? 0 : top - std::min(top, std::countr_zero(k) / 3);
+  };
+  std::vector<std::size_t> start(static_cast<std::size_t>(top) + 2, 0);
+  for (std::size_t k = 0; k < n; ++k) ++start[static_cast<std::size_t>(round(k)) + 1];
+  for (int r = 0; r <= top; ++r) start[r + 1] += start[r];
+  std::vector<Id> out(n);
+  for (std::size_t k = 0; k < n; ++k) out[start[static_cast<std::size_t>(round(k))]++] = along[k];
   return out;
 }
 

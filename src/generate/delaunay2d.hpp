@@ -25,12 +25,12 @@ namespace riemesh {
 
 enum class InsertionOrder {
   kBrio,     ///< biased randomised rounds, Hilbert-sorted in each (default)
-  kHilbert,  ///< along the Hilbert curve (hilbert_order_coarse), a sample first (coarse_first)
+  kHilbert,  ///< along the Hilbert curve (hilbert_order_coarse), in coarse_first's rounds
   kAsGiven,  ///< the input order
   /// BRIO's rounds over the input order, kept inside each round (brio_rounds): for inputs
   /// already sorted along a space-filling curve, BRIO's work per point without its sort
   kRounds,
-  /// A sample first, then the rest, both in the input order (coarse_first): for inputs already
+  /// Eightfold rounds of samples over the input order (coarse_first): for inputs already
   /// sorted along a space-filling curve
   kCoarseFirst,
 };
@@ -71,17 +71,18 @@ std::vector<Id> brio_order(std::span<const double> xy);
 /// over the given order.
 std::vector<Id> brio_rounds(const std::vector<Id>& along);
 
-/// Every kCoarseStride-th id of `along` (the first included), then the others, each part in the
-/// order of `along`. Points sorted along a space-filling curve and inserted as given each land
-/// on the frontier of the region triangulated so far, whose triangles reach far ahead: their
+/// Rounds over `along`, each in its order: first the ids at positions divisible by 8^J (J the
+/// largest with at least 64 of them), then those divisible by 8^(J−1) and not yet taken, ...,
+/// then the rest. Points sorted along a space-filling curve and inserted as given each land on
+/// the frontier of the region triangulated so far, whose triangles reach far ahead: their
 /// cavities are half as large again as in a finished triangulation (2D: 5.8 triangles instead of
-/// 4, 12.6 in-circle tests per point). The sample's triangulation covers the domain first, with
-/// triangles of a few spacings, so the rest meet no long ones (9.8 tests per point), at the cost
-/// of one more sweep over memory (BRIO's rounds make one per round).
+/// about 4, 12.6 in-circle tests per point). Each round's triangulation covers the domain with
+/// triangles of a few spacings of the next, so its points meet no long ones (2D: 9.1 tests per
+/// point; 3D: 43 insphere tests instead of 59), and the rounds grow eightfold, so the sweeps over
+/// memory add up to 1.14 times one (BRIO's halving rounds: twice). Deterministic (no keys, no
+/// coin flips). 2D, 1 M points: ratio 8 takes 22% fewer instructions than as given; 2 (every
+/// other point) or a single sample of every 16th–64th point fewer still than 1 but more than 8.
 std::vector<Id> coarse_first(const std::vector<Id>& along);
-
-/// The sample stride of coarse_first (2D, 1 M random points: 16–256 all gain 10–15%).
-inline constexpr std::size_t kCoarseStride = 64;
 
 /// The triangles not touching the super-triangle (3 vertex ids each, counter-clockwise).
 std::vector<Id> delaunay_triangles(const Triangulation2d& t);

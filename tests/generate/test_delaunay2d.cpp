@@ -108,21 +108,37 @@ TEST(Delaunay2d, BrioRoundsKeepTheOrderInsideHalvingRounds) {
   EXPECT_EQ(order, brio_rounds(along));
 }
 
-TEST(Delaunay2d, CoarseFirstTakesEveryStridethIdFirst) {
-  // 1,000 ids in a scrambled order: every kCoarseStride-th of them first, then the others, each
-  // part in the sequence's order, each id once.
-  std::vector<Id> along(1000);
-  for (std::size_t k = 0; k < along.size(); ++k) along[k] = static_cast<Id>((k * 7919) % 1000);
-  const std::vector<Id> order = coarse_first(along);
-  ASSERT_EQ(order.size(), along.size());
-  const std::size_t sample = (along.size() + kCoarseStride - 1) / kCoarseStride;
-  for (std::size_t k = 0; k < sample; ++k) EXPECT_EQ(order[k], along[k * kCoarseStride]);
-  std::size_t next = sample;
-  for (std::size_t k = 0; k < along.size(); ++k)
-    if (k % kCoarseStride != 0) {
-      EXPECT_EQ(order[next++], along[k]);
+TEST(Delaunay2d, CoarseFirstTakesEightfoldRoundsOfSamples) {
+  // 3,000 ids in a scrambled order: 8 · 64 <= n < 8^2 · 64, so J = 1: the ids at positions
+  // divisible by 8 first, then the others, each part in the sequence's order.
+  std::vector<Id> along(3000);
+  for (std::size_t k = 0; k < along.size(); ++k) along[k] = static_cast<Id>((k * 7919) % 3000);
+  std::vector<Id> expected;
+  for (std::size_t k = 0; k < along.size(); k += 8) expected.push_back(along[k]);
+  for (std::size_t k = 0; k < along.size(); ++k) {
+    if (k % 8 != 0) expected.push_back(along[k]);
+  }
+  EXPECT_EQ(coarse_first(along), expected);
+  // 20,000 ids: 8^2 · 64 = 4,096 <= n < 32,768, so J = 2: multiples of 64, then of 8, then the
+  // rest.
+  std::vector<Id> longer(20000);
+  for (std::size_t k = 0; k < longer.size(); ++k) longer[k] = static_cast<Id>(k);
+  const std::vector<Id> order = coarse_first(longer);
+  ASSERT_EQ(order.size(), longer.size());
+  std::size_t i = 0;
+  for (std::size_t k = 0; k < longer.size(); k += 64) EXPECT_EQ(order[i++], static_cast<Id>(k));
+  for (std::size_t k = 0; k < longer.size(); k += 8) {
+    if (k % 64 != 0) {
+      EXPECT_EQ(order[i++], static_cast<Id>(k));
     }
+  }
+  for (std::size_t k = 0; k < longer.size(); ++k) {
+    if (k % 8 != 0) {
+      EXPECT_EQ(order[i++], static_cast<Id>(k));
+    }
+  }
   EXPECT_TRUE(coarse_first({}).empty());
+  EXPECT_EQ(coarse_first({3, 1, 2}), (std::vector<Id>{3, 1, 2}));
 }
 
 TEST(Delaunay2d, LargeRandomSet) {
