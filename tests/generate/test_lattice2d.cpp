@@ -16,33 +16,14 @@
 #include "generate/domain2d.hpp"
 #include "generate/lattice2d.hpp"
 #include "generate/mesh2d.hpp"
+#include "generate/square_loop.hpp"
 #include "metric/element.hpp"
 #include "metric/metric.hpp"
 
 using namespace riemesh;
+using test::add_square;
 
 namespace {
-
-/// A square loop [x0, x0 + s]² of n edges a side, counter-clockwise (or clockwise: a hole).
-void add_square(Mesh& m, double x0, double s, int n, bool ccw) {
-  const Id first = static_cast<Id>(m.num_vertices());
-  for (int side = 0; side < 4; ++side)
-    for (int k = 0; k < n; ++k) {
-      const double t = s * k / n;
-      const double xy[4][2] = {
-          {x0 + t, x0}, {x0 + s, x0 + t}, {x0 + s - t, x0 + s}, {x0, x0 + s - t}};
-      m.coords.push_back(xy[side][0]);
-      m.coords.push_back(xy[side][1]);
-    }
-  for (Id i = 0; i < 4 * n; ++i) {
-    const Id a = first + i, b = first + (i + 1) % (4 * n);
-    if (ccw)
-      m.edges.insert(m.edges.end(), {a, b});
-    else
-      m.edges.insert(m.edges.end(), {b, a});
-    m.edge_ref.push_back(1);
-  }
-}
 
 Mesh boundary_of_squares(bool hole) {
   Mesh b;

@@ -16,31 +16,14 @@
 #include "core/predicates.hpp"
 #include "generate/domain2d.hpp"
 #include "generate/mesh2d.hpp"
+#include "generate/square_loop.hpp"
 #include "io/mesh_file.hpp"
 #include "mesh/check.hpp"
 
 using namespace riemesh;
+using test::add_square;
 
 namespace {
-
-/// The boundary of [x0, x0+s]² with n edges per side, counter-clockwise or not, ref per side.
-void add_square(Mesh& m, double x0, double s, int n, bool ccw, int ref) {
-  const Id first = static_cast<Id>(m.num_vertices());
-  for (int side = 0; side < 4; ++side)
-    for (int k = 0; k < n; ++k) {
-      const double t = s * k / n;
-      const double xy[4][2] = {{x0 + t, x0}, {x0 + s, x0 + t}, {x0 + s - t, x0 + s}, {x0, x0 + s - t}};
-      m.coords.push_back(xy[side][0]);  // (push_back: GCC 12 warns falsely on insert here)
-      m.coords.push_back(xy[side][1]);
-    }
-  const Id nv = 4 * n;
-  for (Id i = 0; i < nv; ++i) {
-    const Id a = first + i, b = first + (i + 1) % nv;
-    if (ccw) m.edges.insert(m.edges.end(), {a, b});
-    else m.edges.insert(m.edges.end(), {b, a});
-    m.edge_ref.push_back(ref);
-  }
-}
 
 std::map<int, double> region_areas(const Mesh& m) {
   std::map<int, double> out;

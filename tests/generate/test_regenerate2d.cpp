@@ -14,36 +14,17 @@
 #include "core/predicates.hpp"
 #include "generate/mesh2d.hpp"
 #include "generate/regenerate2d.hpp"
+#include "generate/square_loop.hpp"
 #include "io/mesh_file.hpp"
 #include "mesh/check.hpp"
 #include "mesh/fixtures.hpp"
 #include "metric/metric.hpp"
+#include "remesh/boundary_distance.hpp"
 
 using namespace riemesh;
+using test::add_square;
 
 namespace {
-
-/// The boundary of [x0, x0+s]² with n edges per side, counter-clockwise or not, ref per side.
-void add_square(Mesh& m, double x0, double s, int n, bool ccw, int ref) {
-  const Id first = static_cast<Id>(m.num_vertices());
-  for (int side = 0; side < 4; ++side)
-    for (int k = 0; k < n; ++k) {
-      const double t = s * k / n;
-      const double xy[4][2] = {
-          {x0 + t, x0}, {x0 + s, x0 + t}, {x0 + s - t, x0 + s}, {x0, x0 + s - t}};
-      m.coords.push_back(xy[side][0]);
-      m.coords.push_back(xy[side][1]);
-    }
-  const Id nv = 4 * n;
-  for (Id i = 0; i < nv; ++i) {
-    const Id a = first + i, b = first + (i + 1) % nv;
-    if (ccw)
-      m.edges.insert(m.edges.end(), {a, b});
-    else
-      m.edges.insert(m.edges.end(), {b, a});
-    m.edge_ref.push_back(ref);
-  }
-}
 
 /// [0, 4]² (edge ref 1) with the subdomain [0.5, 1.5]² (ref 2 on its sides, triangle ref 20,
 /// the rest 10) and the hole [2.5, 3.5]² (ref 3), meshed at size 0.5.
@@ -87,31 +68,6 @@ bool regenerated(const Adapt2dResult& r) {
 bool same_mesh(const Mesh& a, const Mesh& b) {
   return a.coords == b.coords && a.triangles == b.triangles && a.tri_ref == b.tri_ref &&
          a.edges == b.edges && a.edge_ref == b.edge_ref && a.vert_tag == b.vert_tag;
-}
-
-Vec2 point(const Mesh& m, Id v) { return Vec2{{m.coords[2 * v], m.coords[2 * v + 1]}}; }
-
-double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double t = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
-  return norm(p - (a + t * ab));
-}
-
-/// Largest distance from points sampled on the edges of `from` to the edge polyline of `to`.
-double one_sided(const Mesh& from, const Mesh& to) {
-  double worst = 0.0;
-  for (std::size_t e = 0; e < from.num_edges(); ++e) {
-    const Vec2 a = point(from, from.edges[2 * e]), b = point(from, from.edges[2 * e + 1]);
-    for (int k = 0; k <= 4; ++k) {
-      const Vec2 p = a + (k / 4.0) * (b - a);
-      double best = 1e300;
-      for (std::size_t f = 0; f < to.num_edges(); ++f)
-        best = std::min(
-            best, segment_distance(p, point(to, to.edges[2 * f]), point(to, to.edges[2 * f + 1])));
-      worst = std::max(worst, best);
-    }
-  }
-  return worst;
 }
 
 }  // namespace
@@ -188,7 +144,7 @@ TEST(Regenerate2d, CurvedBoundaryWithinHausd) {
   ASSERT_TRUE(regeneration_applies(in, met, o));
   const Adapt2dResult r = adapt_or_regenerate2d(in, met, o);
   EXPECT_TRUE(check_mesh(r.mesh).valid());
-  const double d = std::max(one_sided(r.mesh, in), one_sided(in, r.mesh));
+  const double d = test::boundary_distance(r.mesh, in, 4);
   EXPECT_LE(d, o.hausd) << "Hausdorff distance " << d << " for hausd " << o.hausd;
   EXPECT_EQ(std::set<int>(r.mesh.edge_ref.begin(), r.mesh.edge_ref.end()),
             std::set<int>(in.edge_ref.begin(), in.edge_ref.end()));

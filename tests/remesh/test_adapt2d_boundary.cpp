@@ -10,37 +10,9 @@
 #include "io/medit.hpp"
 #include "mesh/check.hpp"
 #include "remesh/adapt2d.hpp"
+#include "remesh/boundary_distance.hpp"
 
 using namespace riemesh;
-
-namespace {
-
-Vec2 point(const Mesh& m, Id v) { return Vec2{{m.coords[2 * v], m.coords[2 * v + 1]}}; }
-
-double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double t = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
-  return norm(p - (a + t * ab));
-}
-
-/// Largest distance from points sampled on the edges of `from` to the edge polyline of `to`.
-double one_sided(const Mesh& from, const Mesh& to) {
-  double worst = 0.0;
-  for (std::size_t e = 0; e < from.num_edges(); ++e) {
-    const Vec2 a = point(from, from.edges[2 * e]), b = point(from, from.edges[2 * e + 1]);
-    for (int k = 0; k <= 8; ++k) {
-      const Vec2 p = a + (k / 8.0) * (b - a);
-      double best = 1e300;
-      for (std::size_t f = 0; f < to.num_edges(); ++f)
-        best = std::min(best, segment_distance(p, point(to, to.edges[2 * f]),
-                                               point(to, to.edges[2 * f + 1])));
-      worst = std::max(worst, best);
-    }
-  }
-  return worst;
-}
-
-}  // namespace
 
 TEST(Adapt2dBoundary, NacaWithinHausdAndCornersKept) {
   const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/2d/naca0012.mesh");
@@ -54,7 +26,7 @@ TEST(Adapt2dBoundary, NacaWithinHausdAndCornersKept) {
   const std::vector<SymMat2> met(in.num_vertices(), SymMat2{{1 / (h * h), 0.0, 1 / (h * h)}});
   const Adapt2dResult r = adapt2d(in, met, o);
   EXPECT_TRUE(check_mesh(r.mesh).valid());
-  const double d = std::max(one_sided(r.mesh, in), one_sided(in, r.mesh));
+  const double d = test::boundary_distance(r.mesh, in);
   EXPECT_LE(d, o.hausd) << "Hausdorff distance " << d << " for hausd " << o.hausd;
   EXPECT_EQ(std::set<int>(r.mesh.edge_ref.begin(), r.mesh.edge_ref.end()),
             std::set<int>(in.edge_ref.begin(), in.edge_ref.end()));
