@@ -37,21 +37,6 @@ double metric_incircle(const double* a, const double* b, const double* c, const 
          lift(cx, cy) * (ax * by - bx * ay);
 }
 
-/// Whether some triangle's edge is longer than √2 in the mean of its ends' metrics (the test of
-/// Refiner::candidates, locked edges included): none, and no round can add a point.
-bool has_long_edge(const Mesh& m, const std::vector<SymMat2>& metrics) {
-  for (std::size_t h = 0; h < m.triangles.size(); ++h) {
-    const auto a = static_cast<std::size_t>(m.triangles[h]);
-    const auto b = static_cast<std::size_t>(m.triangles[h % 3 == 2 ? h - 2 : h + 1]);
-    const double dx = m.coords[2 * b] - m.coords[2 * a],
-                 dy = m.coords[2 * b + 1] - m.coords[2 * a + 1];
-    const double len =
-        0.5 * (metric_length(metrics[a], dx, dy) + metric_length(metrics[b], dx, dy));
-    if (len > std::sqrt(2.0)) return true;
-  }
-  return false;
-}
-
 struct Candidate {
   double x, y;
   SymMat2 metric;
@@ -301,17 +286,12 @@ class Refiner {
 
 }  // namespace
 
-FieldPointStats insert_field_points2d(Mesh& mesh, std::vector<SymMat2>& metrics,
-                                      InterpScheme scheme, int max_rounds) {
-  RIEMESH_CHECK(mesh.dim == 2 && metrics.size() == mesh.num_vertices());
+namespace {
+
+/// The rounds of field points over the whole mesh.
+FieldPointStats refine_whole(Mesh& mesh, std::vector<SymMat2>& metrics, InterpScheme scheme,
+                             int max_rounds) {
   FieldPointStats stats;
-  if (!has_long_edge(mesh, metrics)) {  // (a unit lattice): the mesh as Refiner::write leaves it
-    mesh.vert_ref.resize(mesh.num_vertices(), 0);
-    mesh.vert_tag.resize(mesh.num_vertices(), kTagNone);
-    mesh.tri_ref.resize(mesh.num_triangles(), 0);
-    mesh.tri_tag.assign(mesh.num_triangles(), kTagNone);
-    return stats;
-  }
   Refiner r(mesh, metrics);
   for (int round = 0; round < max_rounds; ++round) {
     std::vector<Candidate> cands = r.candidates(scheme);
@@ -331,6 +311,142 @@ FieldPointStats insert_field_points2d(Mesh& mesh, std::vector<SymMat2>& metrics,
   }
   r.write(mesh);
   return stats;
+}
+
+/// Per triangle: 1 when one of its edges is long (the test of has_long_edge); their count.
+std::vector<std::uint8_t> long_edge_triangles(const Mesh& m, const std::vector<SymMat2>& metrics,
+                                              std::size_t* count) {
+  std::vector<std::uint8_t> out(m.num_triangles(), 0);
+  *count = 0;
+  for (std::size_t h = 0; h < m.triangles.size(); ++h) {
+    const auto a = static_cast<std::size_t>(m.triangles[h]);
+    const auto b = static_cast<std::size_t>(m.triangles[h % 3 == 2 ? h - 2 : h + 1]);
+    const double dx = m.coords[2 * b] - m.coords[2 * a],
+                 dy = m.coords[2 * b + 1] - m.coords[2 * a + 1];
+    const double len =
+        0.5 * (metric_length(metrics[a], dx, dy) + metric_length(metrics[b], dx, dy));
+    if (len > std::sqrt(2.0) && !out[h / 3]) out[h / 3] = 1, ++*count;
+  }
+  return out;
+}
+
+/// Adds to `in` the triangles sharing a vertex with it, `rings` times.
+void grow_by_vertex_rings(const Mesh& m, std::vector<std::uint8_t>& in, int rings) {
+  std::vector<std::uint8_t> touched(m.num_vertices(), 0);
+  for (int r = 0; r < rings; ++r) {
+    for (std::size_t t = 0; t < in.size(); ++t)
+      if (in[t])
+        for (int i = 0; i < 3; ++i) touched[m.triangles[3 * t + i]] = 1;
+    for (std::size_t t = 0; t < in.size(); ++t)
+      if (touched[m.triangles[3 * t]] || touched[m.triangles[3 * t + 1]] ||
+          touched[m.triangles[3 * t + 2]])
+        in[t] = 1;
+  }
+}
+
+/// The rounds on the triangles of `region` alone, their outer edges and the mesh's Edges among
+/// them locked (no point on them, no cavity across them), spliced back: the field points of a
+/// mesh with few long edges (a unit lattice and its boundary band) without setting up the whole
+/// mesh. Region triangles keep their slots in order (the others are not moved); more are appended.
+FieldPointStats refine_near(Mesh& mesh, std::vector<SymMat2>& metrics, InterpScheme scheme,
+                            int max_rounds, const std::vector<std::uint8_t>& region) {
+  const std::size_t nv = mesh.num_vertices();
+  Mesh sub;
+  sub.dim = 2;
+  std::vector<SymMat2> sub_metrics;
+  std::vector<Id> local(nv, kNoId), global, slots;
+  for (std::size_t t = 0; t < region.size(); ++t) {
+    if (!region[t]) continue;
+    slots.push_back(static_cast<Id>(t));
+    for (int i = 0; i < 3; ++i) {
+      const Id v = mesh.triangles[3 * t + i];
+      if (local[v] == kNoId) {
+        local[v] = static_cast<Id>(global.size());
+        global.push_back(v);
+        sub.coords.insert(sub.coords.end(), {mesh.coords[2 * v], mesh.coords[2 * v + 1]});
+        sub.vert_ref.push_back(mesh.vert_ref[v]);
+        sub.vert_tag.push_back(mesh.vert_tag[v]);
+        sub_metrics.push_back(metrics[v]);
+      }
+      sub.triangles.push_back(local[v]);
+    }
+    sub.tri_ref.push_back(mesh.tri_ref[t]);
+  }
+  // Edges of one region triangle (its border, or the domain's boundary) and the mesh's Edges
+  // between region vertices: locked.
+  std::vector<std::uint64_t> keys;
+  for (std::size_t h = 0; h < sub.triangles.size(); ++h) {
+    const Id a = sub.triangles[h], b = sub.triangles[h % 3 == 2 ? h - 2 : h + 1];
+    keys.push_back(edge_key(a, b));
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 0; i < keys.size();) {
+    std::size_t j = i;
+    while (j < keys.size() && keys[j] == keys[i]) ++j;
+    if (j - i == 1)
+      sub.edges.insert(sub.edges.end(),
+                       {static_cast<Id>(keys[i] >> 32), static_cast<Id>(keys[i] & 0xffffffffu)});
+    i = j;
+  }
+  for (std::size_t e = 0; e < mesh.num_edges(); ++e) {
+    const Id a = local[mesh.edges[2 * e]], b = local[mesh.edges[2 * e + 1]];
+    if (a != kNoId && b != kNoId) sub.edges.insert(sub.edges.end(), {a, b});
+  }
+  sub.edge_ref.assign(sub.num_edges(), 0);
+  sub.edge_tag.assign(sub.num_edges(), kTagNone);
+  const FieldPointStats stats = refine_whole(sub, sub_metrics, scheme, max_rounds);
+  // Splice: the new vertices after the mesh's, the region's triangles in their slots, then more.
+  const std::size_t n0 = global.size();
+  const auto id = [&](Id v) {
+    return static_cast<std::size_t>(v) < n0 ? global[v] : static_cast<Id>(nv + (v - n0));
+  };
+  for (std::size_t v = n0; v < sub.num_vertices(); ++v) {
+    mesh.coords.insert(mesh.coords.end(), {sub.coords[2 * v], sub.coords[2 * v + 1]});
+    mesh.vert_ref.push_back(sub.vert_ref[v]);
+    mesh.vert_tag.push_back(sub.vert_tag[v]);
+    metrics.push_back(sub_metrics[v]);
+  }
+  for (std::size_t t = 0; t < sub.num_triangles(); ++t) {
+    const Id tri[3] = {id(sub.triangles[3 * t]), id(sub.triangles[3 * t + 1]),
+                       id(sub.triangles[3 * t + 2])};
+    if (t < slots.size()) {
+      std::copy_n(tri, 3, &mesh.triangles[3 * static_cast<std::size_t>(slots[t])]);
+      mesh.tri_ref[static_cast<std::size_t>(slots[t])] = sub.tri_ref[t];
+    } else {
+      mesh.triangles.insert(mesh.triangles.end(), tri, tri + 3);
+      mesh.tri_ref.push_back(sub.tri_ref[t]);
+    }
+  }
+  mesh.tri_tag.assign(mesh.num_triangles(), kTagNone);
+  return stats;
+}
+
+/// Vertex rings around the triangles with a long edge that refine_near takes: cavities of unit
+/// meshes stay within a ring or two.
+constexpr int kNearRings = 3;
+
+}  // namespace
+
+FieldPointStats insert_field_points2d(Mesh& mesh, std::vector<SymMat2>& metrics,
+                                      InterpScheme scheme, int max_rounds) {
+  RIEMESH_CHECK(mesh.dim == 2 && metrics.size() == mesh.num_vertices());
+  // Refiner::write's sizes, whatever the path.
+  mesh.vert_ref.resize(mesh.num_vertices(), 0);
+  mesh.vert_tag.resize(mesh.num_vertices(), kTagNone);
+  mesh.tri_ref.resize(mesh.num_triangles(), 0);
+  std::size_t seeds = 0;
+  std::vector<std::uint8_t> near = long_edge_triangles(mesh, metrics, &seeds);
+  if (seeds == 0) {  // (a unit lattice)
+    mesh.tri_tag.assign(mesh.num_triangles(), kTagNone);
+    return {};
+  }
+  // Long edges in a small part of the mesh (the band between a unit lattice and the boundary):
+  // the rounds around them only.
+  if (seeds * 16 < mesh.num_triangles()) {
+    grow_by_vertex_rings(mesh, near, kNearRings);
+    return refine_near(mesh, metrics, scheme, max_rounds, near);
+  }
+  return refine_whole(mesh, metrics, scheme, max_rounds);
 }
 
 }  // namespace riemesh

@@ -6,12 +6,15 @@
 // triangles close to equilateral in it (the cavities chosen in the metric).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/predicates.hpp"
 #include "generate/domain2d.hpp"
 #include "generate/field_points2d.hpp"
+#include "mesh/check.hpp"
+#include "mesh/fixtures.hpp"
 #include "metric/metric.hpp"
 
 using namespace riemesh;
@@ -128,4 +131,38 @@ TEST(FieldPoints2d, NothingToAddWhenEdgesAreShort) {
   const FieldPointStats s = insert_field_points2d(m, metrics, InterpScheme::kLogEuclidean);
   EXPECT_EQ(s.inserted, 0u);
   EXPECT_EQ(m.num_vertices(), 16u);
+}
+
+TEST(FieldPoints2d, FewLongEdgesAreRefinedInTheirNeighbourhoodOnly) {
+  // A 40 × 40 grid about its metric's size, except a patch around (0.5, 0.5) asking for a quarter
+  // of it: the few triangles with long edges take field points (the rounds around them only),
+  // the rest of the mesh is kept (its vertices first, in place), the result conforming and valid.
+  Mesh m = unit_square(40, 40);
+  const std::size_t nv = m.num_vertices(), nt = m.num_triangles();
+  std::vector<SymMat2> metrics(nv, isotropic_metric<2>(1.0 / 36));  // diagonals 1.27
+  for (std::size_t v = 0; v < nv; ++v)
+    if (std::hypot(m.coords[2 * v] - 0.5, m.coords[2 * v + 1] - 0.5) < 0.03)
+      metrics[v] = isotropic_metric<2>(1.0 / 144);
+  const Mesh before = m;
+  const FieldPointStats s = insert_field_points2d(m, metrics, InterpScheme::kLogEuclidean);
+  EXPECT_GT(s.inserted, 10u);
+  ASSERT_EQ(m.num_vertices(), nv + s.inserted);
+  ASSERT_EQ(metrics.size(), m.num_vertices());
+  EXPECT_EQ(m.num_triangles(), nt + 2 * s.inserted);  // each point inside adds two triangles
+  EXPECT_TRUE(std::equal(before.coords.begin(), before.coords.end(), m.coords.begin()));
+  EXPECT_EQ(m.edges, before.edges);
+  EXPECT_TRUE(check_mesh(m).valid());
+  double area = 0.0;
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < m.num_triangles(); ++t) {
+    const Id* v = &m.triangles[3 * t];
+    const double o = orient2d(&m.coords[2 * v[0]], &m.coords[2 * v[1]], &m.coords[2 * v[2]]);
+    EXPECT_GT(o, 0.0);
+    area += 0.5 * o;
+    kept += t < nt && std::equal(v, v + 3, &before.triangles[3 * t]);
+  }
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  EXPECT_GT(kept, nt - 200);  // far from the patch, the triangles as they were
+  for (std::size_t v = nv; v < m.num_vertices(); ++v)  // the new points in the patch's reach
+    EXPECT_LT(std::hypot(m.coords[2 * v] - 0.5, m.coords[2 * v + 1] - 0.5), 0.2);
 }
