@@ -400,6 +400,15 @@ FieldPointStats refine_near(Mesh& mesh, std::vector<SymMat2>& metrics, InterpSch
   const auto id = [&](Id v) {
     return static_cast<std::size_t>(v) < n0 ? global[v] : static_cast<Id>(nv + (v - n0));
   };
+  // (Exact room: appending to full arrays would double them.)
+  const std::size_t more = sub.num_vertices() - n0;
+  const std::size_t extra = sub.num_triangles() - std::min(sub.num_triangles(), slots.size());
+  mesh.coords.reserve(mesh.coords.size() + 2 * more);
+  mesh.vert_ref.reserve(mesh.vert_ref.size() + more);
+  mesh.vert_tag.reserve(mesh.vert_tag.size() + more);
+  metrics.reserve(metrics.size() + more);
+  mesh.triangles.reserve(mesh.triangles.size() + 3 * extra);
+  mesh.tri_ref.reserve(mesh.tri_ref.size() + extra);
   for (std::size_t v = n0; v < sub.num_vertices(); ++v) {
     mesh.coords.insert(mesh.coords.end(), {sub.coords[2 * v], sub.coords[2 * v + 1]});
     mesh.vert_ref.push_back(sub.vert_ref[v]);
