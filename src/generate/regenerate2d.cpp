@@ -157,13 +157,18 @@ std::string regeneration_note(double ratio) {
 bool regeneration_applies(const Mesh& input, std::span<const SymMat2> metrics,
                           const Adapt2dOptions& options) {
   if (!allowed(input, metrics, options) || !is_spd(metrics.front())) return false;
-  Adapt2dReport report;
-  const SymMat2 m = prepared_metric(input, metrics, options, report);
-  if (unit_triangles(input, m) < kRegenerateRatio * static_cast<double>(input.num_triangles()))
+  try {
+    require_valid_input<2>(input, metrics);
+    Adapt2dReport report;
+    const SymMat2 m = prepared_metric(input, metrics, options, report);
+    if (unit_triangles(input, m) < kRegenerateRatio * static_cast<double>(input.num_triangles()))
+      return false;
+    const BoundaryCurves curves =
+        build_boundary_curves(input, {options.angle_deg, options.detect_angles});
+    return curve_domain(input, curves).usable;
+  } catch (const InputError&) {  // (adapt2d's errors: the input is not one to mesh afresh)
     return false;
-  const BoundaryCurves curves =
-      build_boundary_curves(input, {options.angle_deg, options.detect_angles});
-  return curve_domain(input, curves).usable;
+  }
 }
 
 Adapt2dResult adapt_or_regenerate2d(const Mesh& input, std::span<const SymMat2> metrics,

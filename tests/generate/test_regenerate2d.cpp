@@ -257,6 +257,8 @@ TEST(Regenerate2d, BadInputGivesAdapt2dsErrors) {
   }
   EXPECT_FALSE(expected.empty());
   EXPECT_EQ(got, expected);
+  EXPECT_FALSE(
+      regeneration_applies(in, met, Adapt2dOptions{}));  // no throw: not one to mesh afresh
   const Mesh square = unit_square(4, 4);
   std::vector<SymMat2> nan = uniform(square, 0.01);
   for (auto& m : nan) m.c[1] = std::nan("");
