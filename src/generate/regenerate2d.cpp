@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -143,6 +144,33 @@ void restore_region_refs(const Mesh& in, const SymMat2& m, int regions, Mesh& ou
   for (auto& r : out.tri_ref) r = ref[static_cast<std::size_t>(r)];
 }
 
+/// What adapt_or_regenerate2d meshes afresh: the metric after clipping (its notes in `report`),
+/// how many times the input's triangles it asks for, and the input's curves as a domain.
+struct Regeneration {
+  SymMat2 metric;
+  double ratio = 0.0;
+  Mesh boundary;
+  Adapt2dReport report;
+};
+
+/// The regeneration, or nullopt when adapt2d's passes are to run (the conditions of
+/// regeneration_applies). InputError as adapt2d for input it refuses (checked first).
+std::optional<Regeneration> plan_regeneration(const Mesh& input, std::span<const SymMat2> metrics,
+                                              const Adapt2dOptions& options) {
+  if (!allowed(input, metrics, options)) return std::nullopt;
+  require_valid_input<2>(input, metrics);  // adapt2d's errors, before anything else
+  Regeneration plan;
+  plan.metric = prepared_metric(input, metrics, options, plan.report);
+  plan.ratio = unit_triangles(input, plan.metric) / static_cast<double>(input.num_triangles());
+  if (plan.ratio < kRegenerateRatio) return std::nullopt;
+  const BoundaryCurves curves =
+      build_boundary_curves(input, {options.angle_deg, options.detect_angles});
+  CurveDomain domain = curve_domain(input, curves);
+  if (!domain.usable) return std::nullopt;
+  plan.boundary = std::move(domain.boundary);
+  return plan;
+}
+
 std::string regeneration_note(double ratio) {
   char buf[200];
   std::snprintf(buf, sizeof buf,
@@ -156,16 +184,8 @@ std::string regeneration_note(double ratio) {
 
 bool regeneration_applies(const Mesh& input, std::span<const SymMat2> metrics,
                           const Adapt2dOptions& options) {
-  if (!allowed(input, metrics, options) || !is_spd(metrics.front())) return false;
   try {
-    require_valid_input<2>(input, metrics);
-    Adapt2dReport report;
-    const SymMat2 m = prepared_metric(input, metrics, options, report);
-    if (unit_triangles(input, m) < kRegenerateRatio * static_cast<double>(input.num_triangles()))
-      return false;
-    const BoundaryCurves curves =
-        build_boundary_curves(input, {options.angle_deg, options.detect_angles});
-    return curve_domain(input, curves).usable;
+    return plan_regeneration(input, metrics, options).has_value();
   } catch (const InputError&) {  // (adapt2d's errors: the input is not one to mesh afresh)
     return false;
   }
@@ -174,24 +194,17 @@ bool regeneration_applies(const Mesh& input, std::span<const SymMat2> metrics,
 Adapt2dResult adapt_or_regenerate2d(const Mesh& input, std::span<const SymMat2> metrics,
                                     const Adapt2dOptions& options, const PassCallback& on_pass) {
   options.validate();
-  if (!allowed(input, metrics, options)) return adapt2d(input, metrics, options, on_pass);
-  require_valid_input<2>(input, metrics);  // adapt2d's errors, before anything else
-  Adapt2dReport report;
-  const SymMat2 m = prepared_metric(input, metrics, options, report);
-  const double ratio = unit_triangles(input, m) / static_cast<double>(input.num_triangles());
-  if (ratio < kRegenerateRatio) return adapt2d(input, metrics, options, on_pass);
-  const BoundaryCurves curves =
-      build_boundary_curves(input, {options.angle_deg, options.detect_angles});
-  CurveDomain domain = curve_domain(input, curves);
-  if (!domain.usable) return adapt2d(input, metrics, options, on_pass);
+  std::optional<Regeneration> plan = plan_regeneration(input, metrics, options);
+  if (!plan) return adapt2d(input, metrics, options, on_pass);
+  const SymMat2 m = plan->metric;
   Mesh2dOptions mo;
-  mo.metric.assign(domain.boundary.num_vertices(), m);
+  mo.metric.assign(plan->boundary.num_vertices(), m);
   mo.keep_boundary = false;
   mo.adapt = options;
   mo.adapt.hgrad = 0.0;
   Mesh2dResult meshed;
   try {
-    meshed = mesh_domain2d(domain.boundary, mo, on_pass);
+    meshed = mesh_domain2d(plan->boundary, mo, on_pass);
   } catch (const InputError&) {
     // The curves of a valid mesh that do not make a domain (e.g. crossing ones in a folded
     // mesh): the passes decide, and name the input's own places if it is at fault.
@@ -203,10 +216,11 @@ Adapt2dResult adapt_or_regenerate2d(const Mesh& input, std::span<const SymMat2> 
   out.metrics = std::move(meshed.metrics);
   out.report = std::move(meshed.report);
   // The clipping notes once (adapt2d clips the clipped metric again, to the same effect).
-  for (auto it = report.notes.rbegin(); it != report.notes.rend(); ++it)
+  const std::vector<std::string>& clipped = plan->report.notes;
+  for (auto it = clipped.rbegin(); it != clipped.rend(); ++it)
     if (std::find(out.report.notes.begin(), out.report.notes.end(), *it) == out.report.notes.end())
       out.report.notes.insert(out.report.notes.begin(), *it);
-  out.report.notes.push_back(regeneration_note(ratio));
+  out.report.notes.push_back(regeneration_note(plan->ratio));
   return out;
 }
 
