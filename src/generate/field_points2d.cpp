@@ -313,7 +313,8 @@ FieldPointStats refine_whole(Mesh& mesh, std::vector<SymMat2>& metrics, InterpSc
   return stats;
 }
 
-/// Per triangle: 1 when one of its edges is long (the test of has_long_edge); their count.
+/// Per triangle: 1 when one of its edges is longer than √2 in the mean of its ends' metrics
+/// (Refiner::candidates' test, locked edges included); their count.
 std::vector<std::uint8_t> long_edge_triangles(const Mesh& m, const std::vector<SymMat2>& metrics,
                                               std::size_t* count) {
   std::vector<std::uint8_t> out(m.num_triangles(), 0);
@@ -372,22 +373,14 @@ FieldPointStats refine_near(Mesh& mesh, std::vector<SymMat2>& metrics, InterpSch
     }
     sub.tri_ref.push_back(mesh.tri_ref[t]);
   }
-  // Edges of one region triangle (its border, or the domain's boundary) and the mesh's Edges
-  // between region vertices: locked.
-  std::vector<std::uint64_t> keys;
-  for (std::size_t h = 0; h < sub.triangles.size(); ++h) {
-    const Id a = sub.triangles[h], b = sub.triangles[h % 3 == 2 ? h - 2 : h + 1];
-    keys.push_back(edge_key(a, b));
-  }
-  std::sort(keys.begin(), keys.end());
-  for (std::size_t i = 0; i < keys.size();) {
-    std::size_t j = i;
-    while (j < keys.size() && keys[j] == keys[i]) ++j;
-    if (j - i == 1)
-      sub.edges.insert(sub.edges.end(),
-                       {static_cast<Id>(keys[i] >> 32), static_cast<Id>(keys[i] & 0xffffffffu)});
-    i = j;
-  }
+  // Edges of one region triangle (its border, or the domain's boundary; the mesh layer's
+  // neighbours) and the mesh's Edges between region vertices: locked.
+  const Adjacency adj = build_face_adjacency(sub.triangles, 3, sub.num_vertices());
+  for (std::size_t h = 0; h < sub.triangles.size(); ++h)
+    if (adj.elem2elem[h] == kNoId) {
+      const Id* tri = &sub.triangles[h - h % 3];
+      sub.edges.insert(sub.edges.end(), {tri[kTriEdge[h % 3][0]], tri[kTriEdge[h % 3][1]]});
+    }
   for (std::size_t e = 0; e < mesh.num_edges(); ++e) {
     const Id a = local[mesh.edges[2 * e]], b = local[mesh.edges[2 * e + 1]];
     if (a != kNoId && b != kNoId) sub.edges.insert(sub.edges.end(), {a, b});
