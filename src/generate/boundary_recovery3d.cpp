@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <string>
@@ -113,6 +114,7 @@ class Recovery {
   std::vector<InputEdge> edges_;
   std::vector<Facet> facets_;
   std::size_t cap_ = 0;
+  double max_steiner_per_vertex_ = 0.0;
   std::optional<Delaunay3d> kernel_;
   BoundaryRecoveryStats stats_;
 };
@@ -154,6 +156,7 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
   interior_ = options.interior_points.size() / 3;
   info_.assign(nv + interior_, PointInfo{Kind::kInterior});
   stats_.surface_vertices = nv;
+  max_steiner_per_vertex_ = options.max_steiner_per_vertex;
   cap_ = static_cast<std::size_t>(options.max_steiner_per_vertex * static_cast<double>(nv));
 
   std::map<std::uint64_t, Id> edge_of;
@@ -249,12 +252,16 @@ bool Recovery::on_boundary(std::size_t f, Id a, Id b) const {
 }
 
 Id Recovery::new_point(const double* p, const PointInfo& info) {
-  const std::size_t steiner = info_.size() - vertices_.size();
+  // (The interior points given are no Steiner points: counting them made a fine --hsiz give up
+  // at its first Steiner point once it had 20 field points per surface vertex.)
+  const std::size_t steiner = info_.size() - vertices_.size() - interior_;
   if (steiner >= cap_) {
+    char cap[32];
+    std::snprintf(cap, sizeof cap, "%g", max_steiner_per_vertex_);
     std::string msg = "boundary recovery gave up after ";
     msg += std::to_string(steiner);
     msg += " Steiner points (the cap is ";
-    msg += std::to_string(cap_ / std::max<std::size_t>(vertices_.size(), 1));
+    msg += cap;
     msg += " per surface vertex): the surface may intersect itself";
     throw InputError(msg);
   }

@@ -180,6 +180,30 @@ TEST(BoundaryRecovery3d, SteinerCapGivesAnInputError) {
   }
 }
 
+TEST(BoundaryRecovery3d, InteriorPointsAreNoSteinerPoints) {
+  // More interior points than the cap: counted as Steiner points, they made the first Steiner
+  // point give up (`riemesh mesh` on a cube at --hsiz 0.02: 159,014 field points, 602 vertices).
+  BoundaryRecoveryOptions options;
+  options.max_steiner_per_vertex = 1;  // 6 for the prism
+  for (int k = 1; k <= 9; ++k)
+    options.interior_points.insert(options.interior_points.end(), {0.01, 0.02, 0.1 * k});
+  const RecoveredVolume r = recover_volume(schonhardt(), options);
+  EXPECT_GE(r.stats.steiner(), 1u);
+  EXPECT_LT(r.stats.steiner(), 6u);
+  EXPECT_TRUE(check_mesh(r.volume).valid());
+  EXPECT_EQ(r.volume.num_vertices(), 6u + 9u + r.stats.steiner());
+  options.max_steiner_per_vertex = 0.1;  // below one point: the message gives it as given
+  try {
+    recover_volume(schonhardt(), options);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("after 0 Steiner points (the cap is 0.1 per surface vertex)"),
+        std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(BoundaryRecovery3d, DefectiveSurfaceIsRefused) {
   Mesh open = sphere_surface(1);
   open.triangles.resize(open.triangles.size() - 3);
