@@ -11,6 +11,7 @@
 #include "core/spd.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
+#include "remesh/simplex_geometry.hpp"
 
 namespace riemesh {
 namespace {
@@ -130,7 +131,10 @@ void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics) {
         throw InputError(name + std::to_string(e / (D + 1) + 1) + ": vertex id out of range");
       for (int k = 0; k < D; ++k) p[i][k] = in.coords[D * v + k];
     }
-    if (!(simplex_measure<D>(p) > 0.0))
+    // In 3D a volume rounded to zero or below is decided by the exact orientation: a flat
+    // sliver of a Delaunay tetrahedralisation (between nearly cospherical points) is valid, and
+    // the remesher's sliver sweeps remove it.
+    if (!(simplex_measure<D>(p) > 0.0) && !(D == 3 && simplex::exact_orientation(p) > 0.0))
       throw InputError(name + std::to_string(e / (D + 1) + 1) +
                        (D == 2 ? " is clockwise or degenerate"
                                : " has a negative or zero volume (3D remeshing needs positive tets)"));

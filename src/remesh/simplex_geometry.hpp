@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/predicates.hpp"
 #include "core/vec.hpp"
 
 namespace riemesh::simplex {
@@ -16,6 +17,14 @@ inline double det(const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, c
 /// triangles and positively oriented tetrahedra).
 inline double signed_volume(const Vec2 x[3]) { return det(x[1] - x[0], x[2] - x[0]); }
 inline double signed_volume(const Vec3 x[4]) { return det(x[1] - x[0], x[2] - x[0], x[3] - x[0]); }
+
+/// A value of the sign of signed_volume in exact arithmetic (core/predicates.hpp): for simplices
+/// whose rounded measure is zero or of the wrong sign (flat slivers between nearly cospherical
+/// points, which a Delaunay tetrahedralisation may hold). Only its sign is meaningful.
+inline double exact_orientation(const Vec2 x[3]) { return orient2d(x[0].x, x[1].x, x[2].x); }
+inline double exact_orientation(const Vec3 x[4]) {
+  return orient3d(x[0].x, x[1].x, x[2].x, x[3].x);
+}
 
 /// Vᵢ = the signed volume with p in place of xᵢ, written (−1)ⁱ det(xⱼ − p, j ≠ i) so that at
 /// p = xᵢ every Vⱼ, j ≠ i, has a zero column and is exactly 0. Σ Vᵢ = signed_volume(x) and

@@ -6,12 +6,16 @@
 #include <array>
 #include <map>
 
-#include "mesh/check.hpp"
+#include "core/error.hpp"
 #include "mesh/adjacency.hpp"
+#include "mesh/check.hpp"
 #include "mesh/fixtures.hpp"
 #include "mesh/hilbert.hpp"
 #include "metric/metric.hpp"
+#include "remesh/background.hpp"
 #include "remesh/ops3d.hpp"
+#include "remesh/prepare_metrics.hpp"
+#include "remesh/simplex_geometry.hpp"
 #include "tet_test_util.hpp"
 
 using namespace riemesh;
@@ -218,4 +222,55 @@ TEST(TetMesh, ReplaceCavityRefusesWrongFills) {
   EXPECT_TRUE(replace_cavity(m, cavity, same, {}));
   EXPECT_EQ(check_tet_mesh(m), "");
   EXPECT_EQ(m.num_live_tets(), 48u);
+}
+
+namespace {
+
+/// A flat sliver from `riemesh mesh` on a cube's faces remeshed to 1/20 (two vertices on face
+/// x = 0, two on face z = 0, at y = 0.75 and 0.775 each up to one unit in the last place): its
+/// volume rounds to exactly 0 but it is positive (1.6e-19 in exact arithmetic). `flat`: the
+/// x of the second vertex one unit lower, which makes the four points exactly coplanar.
+Mesh sliver(bool flat) {
+  Mesh m;
+  m.dim = 3;
+  m.coords = {0.0,
+              0x1.8cccccccccccdp-1,
+              0x1.cccccccccccccp-3,
+              flat ? 0x1.cccccccccccccp-3 : 0x1.ccccccccccccdp-3,
+              0x1.8p-1,
+              0.0,
+              0.0,
+              0x1.8p-1,
+              0x1.cccccccccccccp-3,
+              0x1.cccccccccccccp-3,
+              0x1.8cccccccccccdp-1,
+              0.0};
+  m.vert_ref.assign(4, 0);
+  m.vert_tag.assign(4, 0);
+  m.tets = {0, 1, 2, 3};
+  m.tet_ref = {1};
+  return m;
+}
+
+}  // namespace
+
+TEST(TetMesh, FlatSliversArePositiveByTheExactOrientation) {
+  const std::vector<SymMat3> identity(4, SymMat3::identity());
+  std::vector<double> metrics(4 * SymMat3::kSize);  // packed, for the background
+  for (std::size_t v = 0; v < 4; ++v)
+    std::copy_n(SymMat3::identity().c, SymMat3::kSize, &metrics[SymMat3::kSize * v]);
+  const Mesh positive = sliver(false);
+  const Vec3 p[4] = {{{positive.coords[0], positive.coords[1], positive.coords[2]}},
+                     {{positive.coords[3], positive.coords[4], positive.coords[5]}},
+                     {{positive.coords[6], positive.coords[7], positive.coords[8]}},
+                     {{positive.coords[9], positive.coords[10], positive.coords[11]}}};
+  EXPECT_EQ(simplex::signed_volume(p), 0.0);  // rounded
+  EXPECT_GT(simplex::exact_orientation(p), 0.0);
+  EXPECT_NO_THROW(require_valid_input<3>(positive, identity));
+  EXPECT_NO_THROW(build_tet_mesh(positive, identity));
+  EXPECT_NO_THROW(BackgroundMesh<3>(positive, metrics));
+  const Mesh flat = sliver(true);
+  EXPECT_THROW(require_valid_input<3>(flat, identity), InputError);
+  EXPECT_THROW(build_tet_mesh(flat, identity), InputError);
+  EXPECT_THROW(BackgroundMesh<3>(flat, metrics), InputError);
 }
