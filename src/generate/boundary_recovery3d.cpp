@@ -104,6 +104,8 @@ class Recovery {
   std::optional<std::size_t> find_directed(std::size_t f, Id a, Id b) const;
   Mesh volume(const Tetrahedralization& tz) const;
   bool refine_flat_tets(const Mesh& v);
+  std::size_t flip_cocircular_edges(
+      const std::vector<std::pair<std::size_t, std::size_t>>& missing_segments);
   void require_interior_used(const Mesh& v) const;
 
   const Mesh& surface_;
@@ -591,6 +593,36 @@ bool Recovery::refine_flat_tets(const Mesh& v) {
   return acted;
 }
 
+/// Missing input edges that are the other diagonal of a cocircular quad (two coplanar input
+/// triangles not refined yet, whose four corners lie on one circle: a grid of right triangles
+/// on a planar face) are recovered by a flip of the tetrahedralisation, which stays Delaunay
+/// (Delaunay3d::flip_cocircular), instead of Steiner points, which cascade there (a cube's faces
+/// remeshed to 1/14: 3,174 Steiner points, tets down to quality 0.057). Returns the flips.
+std::size_t Recovery::flip_cocircular_edges(
+    const std::vector<std::pair<std::size_t, std::size_t>>& missing_segments) {
+  std::vector<std::array<Id, 4>> quads;
+  const auto third = [&](Id t, Id a, Id b) {
+    const Facet& f = facets_[static_cast<std::size_t>(t)];
+    for (const Id c : f.c)
+      if (c != a && c != b) return c;
+    return kNoId;
+  };
+  for (const auto& [e, k] : missing_segments) {
+    const InputEdge& edge = edges_[e];
+    if (edge.points.size() != 2 || edge.tri[0] == kNoId || edge.tri[1] == kNoId) continue;
+    if (facets_[static_cast<std::size_t>(edge.tri[0])].sub.size() != 1 ||
+        facets_[static_cast<std::size_t>(edge.tri[1])].sub.size() != 1)
+      continue;
+    const Id b = third(edge.tri[0], edge.a, edge.b), d = third(edge.tri[1], edge.a, edge.b);
+    if (b == kNoId || d == kNoId || orient3d(xyz(edge.a), xyz(b), xyz(edge.b), xyz(d)) != 0.0)
+      continue;
+    quads.push_back({edge.a, b, edge.b, d});
+  }
+  const std::size_t flipped = kernel_->flip_cocircular(quads);
+  stats_.flips += flipped;
+  return flipped;
+}
+
 RecoveredVolume Recovery::run() {
   for (;;) {
     const Tetrahedralization tz = kernel_->result();
@@ -631,6 +663,7 @@ RecoveredVolume Recovery::run() {
       stats_.missing_faces = missing_faces.size();
     }
     ++stats_.rounds;
+    if (flip_cocircular_edges(missing_segments) > 0) continue;
     if (!missing_segments.empty()) {
       // Later subsegments of an edge first, so that the indices of earlier ones stay valid.
       for (auto it = missing_segments.rbegin(); it != missing_segments.rend(); ++it)

@@ -49,6 +49,7 @@ struct BoundaryRecoveryStats {
   std::size_t steiner_in_faces = 0;  // Steiner points inside input triangles
   std::size_t steiner_inside = 0;    // Steiner points inside the volume (always 0 here)
   std::size_t rounds = 0;            // recovery rounds (one tetrahedralisation scan each)
+  std::size_t flips = 0;  // missing edges recovered by a flip (cocircular quads: no Steiner point)
   std::size_t steiner() const { return steiner_on_edges + steiner_in_faces + steiner_inside; }
 };
 

@@ -14,8 +14,6 @@ using detail::orient3d_sign;
 
 namespace {
 
-constexpr Id kDeleted = -2;
-
 /// True when a, b, c are collinear: the plane through them (if any) would contain the three
 /// points obtained from a by changing one coordinate, whose offsets from a are exactly along
 /// the axes and hence span space.

@@ -5,6 +5,7 @@
 // is replaced by the ball of the point. The convex hull is closed by "ghost" tetrahedra joining
 // each hull face to a vertex at infinity, so no bounding box is needed and the result is the
 // Delaunay tetrahedralisation of the points themselves (convex hull included).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -64,6 +65,16 @@ class Delaunay3d {
   /// then stored in *same when same is given.
   bool insert(Id v, Id* same = nullptr);
 
+  /// Replaces the edge (b, d) by (a, c) for each quad {a, b, c, d} given (point ids, as to
+  /// insert) whose four points lie on one circle — a Delaunay tie: both diagonals are Delaunay —
+  /// where (b, d) is an edge with exactly four tetrahedra around it (ghosts included), two through
+  /// a and two through c, and the four new ones through (a, c) are positive (ac crosses bd).
+  /// Each tetrahedron keeps its circumsphere, so the tetrahedralisation stays Delaunay. The
+  /// other quads are left as they are. Returns the number flipped. For boundary recovery: a
+  /// surface split into cocircular quads (a grid of right triangles on a planar face) has half
+  /// its diagonals missing from the Delaunay tetrahedralisation, where splitting them cascades.
+  std::size_t flip_cocircular(const std::vector<std::array<Id, 4>>& quads);
+
   /// The finite tetrahedra, compacted (deleted and ghost ones dropped); duplicate_of is left
   /// empty (the caller knows which insertions were refused).
   Tetrahedralization result() const;
@@ -72,6 +83,7 @@ class Delaunay3d {
 
  private:
   static constexpr Id kInfinite = -1;
+  static constexpr Id kDeleted = -2;  // in v[0] of a deleted tet
 
   struct BoundaryFace {
     Id v[4];              // the cavity tetrahedron's vertices with the face's apex replaced
@@ -99,6 +111,7 @@ class Delaunay3d {
     return (v[0] | v[1] | v[2] | v[3]) < 0;
   }
   std::uint32_t locate(const double* p);
+  bool flip_quad(const Id (&q)[4], std::vector<std::uint32_t>& vertex_tet);
   bool ghost_in_conflict(std::uint32_t t, const double* p);
   void find_cavity(std::uint32_t start, Id v, const double* p);
   void fill_cavity();

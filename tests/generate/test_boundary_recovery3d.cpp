@@ -15,6 +15,7 @@
 #include "mesh/check.hpp"
 #include "mesh/distance.hpp"
 #include "mesh/fixtures.hpp"
+#include "remesh/surface_test_meshes.hpp"
 #include "twisted_prism.hpp"
 
 namespace riemesh {
@@ -158,6 +159,21 @@ TEST(BoundaryRecovery3d, ConformingSurfaceNeedsNone) {
 
 // A coordinate of 1e308 (a damaged surface file) failed an internal check in the recovery's
 // predicates (`riemesh mesh` exit 3): now an InputError naming the vertex.
+TEST(BoundaryRecovery3d, CocircularQuadsAreRecoveredByFlips) {
+  // A cube's faces cut into squares, each split along a diagonal: every square is cocircular,
+  // and the Delaunay tetrahedralisation takes the other diagonal of about half of them; where
+  // four tets surround it, a flip recovers the input's without a Steiner point.
+  for (const int n : {4, 8}) {
+    const Mesh s = test::cube_surface(n);
+    const RecoveredVolume r = recover_volume(s);
+    const std::string name = "cube " + std::to_string(n);
+    EXPECT_GT(r.stats.missing_edges, 0u) << name;
+    EXPECT_GT(r.stats.flips, r.stats.missing_edges / 3) << name;
+    EXPECT_LT(r.stats.steiner(), r.stats.missing_edges) << name;
+    expect_conforming_volume(s, r, name);
+  }
+}
+
 TEST(BoundaryRecovery3d, CoordinateOutOfRangeIsAnInputError) {
   Mesh s = sphere_surface(1);
   s.coords[3 * 2] = 1e308;

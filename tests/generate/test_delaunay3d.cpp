@@ -7,13 +7,14 @@
 #include <cstdint>
 #include <cstring>
 #include <random>
+#include <set>
 #include <vector>
 
 #include "core/error.hpp"
 #include "core/predicates.hpp"
 #include "generate/delaunay3d.hpp"
-#include "generate/filtered_predicates3d.hpp"
 #include "generate/delaunay3d_check.hpp"
+#include "generate/filtered_predicates3d.hpp"
 
 namespace riemesh {
 namespace {
@@ -221,6 +222,66 @@ TEST(Delaunay3d, IncrementalKernelWithGrowingPoints) {
   tz.duplicate_of = duplicate_of;
   expect_delaunay(xyz, tz);
   EXPECT_GT(kernel.stats().insphere_tests, kernel.stats().cavity_tets);
+}
+
+TEST(Delaunay3d, CocircularQuadsFlipToTheirOtherDiagonal) {
+  // Every unit square of a grid is a cocircular quad: the flip turns its diagonal to the other
+  // one where four tets surround it, and the tetrahedralisation stays Delaunay (ghosts: the
+  // squares on the hull).
+  const int n = 5;
+  const std::vector<double> xyz = grid_points(n);
+  std::vector<Id> order(xyz.size() / 3);
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<Id>(i);
+  Delaunay3d kernel(&xyz, order);
+  for (std::size_t k = 4; k < order.size(); ++k) ASSERT_TRUE(kernel.insert(order[k]));
+  const auto edges_of = [](const Tetrahedralization& tz) {
+    std::set<std::pair<Id, Id>> e;
+    for (std::size_t t = 0; t < tz.num_tets(); ++t)
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+          e.insert(std::minmax(tz.tets[4 * t + i], tz.tets[4 * t + j]));
+    return e;
+  };
+  const std::set<std::pair<Id, Id>> before = edges_of(kernel.result());
+  // Squares normal to z: corners (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1) at height k.
+  const auto id = [&](int i, int j, int k) {
+    return static_cast<Id>((k * (n + 1) + j) * (n + 1) + i);
+  };
+  std::vector<std::array<Id, 4>> quads;  // a, b, c, d: (b, d) the diagonal there, (a, c) wanted
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const Id p00 = id(i, j, k), p10 = id(i + 1, j, k), p11 = id(i + 1, j + 1, k),
+                 p01 = id(i, j + 1, k);
+        if (before.count(std::minmax(p00, p11)))
+          quads.push_back({p10, p00, p01, p11});
+        else
+          quads.push_back({p00, p10, p11, p01});
+      }
+  const std::size_t flipped = kernel.flip_cocircular(quads);
+  EXPECT_GT(flipped, quads.size() / 4);
+  Tetrahedralization tz = kernel.result();
+  tz.duplicate_of.assign(xyz.size() / 3, kNoId);
+  expect_delaunay(xyz, tz);
+  EXPECT_NEAR(total_volume(xyz, tz), 1.0, 1e-12);
+  const std::set<std::pair<Id, Id>> after = edges_of(tz);
+  std::size_t turned = 0;
+  for (const auto& q : quads)
+    if (after.count(std::minmax(q[0], q[2])) && !after.count(std::minmax(q[1], q[3]))) ++turned;
+  EXPECT_EQ(turned, flipped);
+  // Quads that are no cocircular ties are left alone: the flips back and forth of a random
+  // point set's tets (any four vertices of a tet, as a quad) change nothing.
+  const std::vector<double> random = random_points(300, 5);
+  std::vector<Id> ids(random.size() / 3);
+  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<Id>(i);
+  Delaunay3d other(&random, ids);
+  for (std::size_t k = 4; k < ids.size(); ++k) ASSERT_TRUE(other.insert(ids[k]));
+  const Tetrahedralization r = other.result();
+  std::vector<std::array<Id, 4>> tets;
+  for (std::size_t t = 0; t < r.num_tets(); ++t)
+    tets.push_back({r.tets[4 * t], r.tets[4 * t + 1], r.tets[4 * t + 2], r.tets[4 * t + 3]});
+  EXPECT_EQ(other.flip_cocircular(tets), 0u);
+  EXPECT_EQ(other.result().tets, r.tets);
 }
 
 TEST(Delaunay3d, BrioIsAPermutation) {
