@@ -59,8 +59,10 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
                 s.steiner(), s.steiner_on_edges, s.steiner_in_faces, s.steiner_inside,
                 s.surface_vertices);
     if (args.fill) std::printf(" and %zu field points", field_points);
-    std::printf(": %zu tetrahedra, %zu faces and %zu edges missing, recovered in %zu rounds\n",
+    std::printf(": %zu tetrahedra, %zu faces and %zu edges missing, recovered in %zu rounds",
                 s.delaunay_tets, s.missing_faces, s.missing_edges, s.rounds);
+    if (s.flips > 0) std::printf(" (%zu edges by flips of cocircular quads)", s.flips);
+    std::printf("\n");
   }
 }
 
