@@ -37,11 +37,12 @@ if [ $code -eq 0 ] && [[ "$out" =~ \ ([1-9][0-9]*)\ Steiner\ points\ \(([0-9]+)\
    "$R" check "$TMP/bunny.mesh" >/dev/null; then ok mesh3d-bunny-recovered; else ko "mesh3d-bunny-recovered: $code $out"; fi
 
 # Interior points (the default): the surface of the unit cube (2 x 2 cells per face) filled for
-# --hsiz 0.25: its boundary is recovered (the grid is cospherical: Steiner points on its edges)
-# and kept, interior vertices are added (more vertices than surface + Steiner ones), it is valid.
-/usr/bin/python3 - "$TMP/cube.mesh" <<'PY'
+# --hsiz 0.25: its boundary is recovered (the grid is cospherical: flips of cocircular squares,
+# Steiner points on its edges where a flip does not do) and kept, interior vertices are added (more vertices than surface + Steiner ones), it is valid.
+cube_surface() {  # FILE N: the unit cube's surface, N x N squares per face, each cut in two
+/usr/bin/python3 - "$1" "$2" <<'PY'
 import itertools, sys
-n = 2
+n = int(sys.argv[2])
 pts = sorted({p for p in itertools.product(range(n + 1), repeat=3) if 0 in p or n in p})
 idx = {p: i + 1 for i, p in enumerate(pts)}
 tris = []
@@ -59,6 +60,8 @@ with open(sys.argv[1], "w") as f:
     f.write("".join("%g %g %g 0\n" % tuple(x / n for x in p) for p in pts))
     f.write("Triangles\n%d\n" % len(tris) + "".join("%d %d %d 1\n" % t for t in tris) + "End\n")
 PY
+}
+cube_surface "$TMP/cube.mesh" 2
 out=$("$R" mesh "$TMP/cube.mesh" -o "$TMP/cube_fill.mesh" --hsiz 0.25 2>/dev/null); code=$?
 if [ $code -eq 0 ] && [[ "$out" =~ ^[^:]*:\ ([0-9]+)\ vertices,\ ([0-9]+)\ tetrahedra\ \(q_min\ [0-9.]+\),\ ([0-9]+)\ boundary\ triangles\;\ ([0-9]+)\ Steiner ]] &&
    [ "${BASH_REMATCH[1]}" -gt $((26 + BASH_REMATCH[4])) ] && [ "${BASH_REMATCH[3]}" -ge 48 ] &&
@@ -66,6 +69,17 @@ if [ $code -eq 0 ] && [[ "$out" =~ ^[^:]*:\ ([0-9]+)\ vertices,\ ([0-9]+)\ tetra
   ok "mesh3d-fill ($out)"
 else
   ko "mesh3d-fill: $code $out"
+fi
+# 8 x 8 squares per face: the Delaunay tetrahedralisation has the other diagonal of many of these
+# cocircular squares; flips recover most of them (reported), Steiner points the rest.
+cube_surface "$TMP/cube8.mesh" 8
+out=$("$R" mesh "$TMP/cube8.mesh" -o "$TMP/cube8_vol.mesh" --nofill); code=$?
+if [ $code -eq 0 ] && [[ "$out" =~ \ ([0-9]+)\ Steiner\ points.*\ ([0-9]+)\ edges\ missing.*\(([0-9]+)\ edges\ by\ flips\ of\ cocircular\ quads\) ]] &&
+   [ "${BASH_REMATCH[1]}" -lt "${BASH_REMATCH[2]}" ] && [ "${BASH_REMATCH[3]}" -gt 0 ] &&
+   "$R" check "$TMP/cube8_vol.mesh" >/dev/null; then
+  ok "mesh3d-cocircular-flips ($out)"
+else
+  ko "mesh3d-cocircular-flips: $code $out"
 fi
 expect_error mesh3d-fill-nofill-hsiz mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --hsiz 0.25 --nofill
 expect_error mesh3d-metric-refused mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --metric "$TMP/none.sol"
