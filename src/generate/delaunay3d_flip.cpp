@@ -43,12 +43,14 @@ bool Delaunay3d::flip_quad(const Id (&q)[4], std::vector<std::uint32_t>& vertex_
     return v[0] == w ? 0 : v[1] == w ? 1 : v[2] == w ? 2 : v[3] == w ? 3 : -1;
   };
   const auto across = [&](std::uint32_t t, int i) { return (tets_[t].n[i] & kCodeMask) >> 2; };
-  // A tetrahedron through B and D: a search over the tetrahedra through B.
+  // A tetrahedron through B and D: a search over the tetrahedra through B, given up (no flip)
+  // past kMostBall of them (a vertex of a huge degree: the search is quadratic in it).
+  constexpr std::size_t kMostBall = 256;
   const std::uint32_t start = vertex_tet[static_cast<std::size_t>(B) / 3];
   if (start == ~0u || index(start, B) < 0) return false;
   std::vector<std::uint32_t> seen{start}, stack{start};
   std::uint32_t t0 = ~0u;
-  while (!stack.empty() && t0 == ~0u) {
+  while (!stack.empty() && t0 == ~0u && seen.size() <= kMostBall) {
     const std::uint32_t t = stack.back();
     stack.pop_back();
     if (index(t, D) >= 0) t0 = t;
