@@ -117,6 +117,7 @@ class Recovery {
   std::vector<Facet> facets_;
   std::size_t cap_ = 0;
   double max_steiner_per_vertex_ = 0.0;
+  bool refine_flat_ = true;
   std::optional<Delaunay3d> kernel_;
   BoundaryRecoveryStats stats_;
 };
@@ -159,6 +160,7 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
   info_.assign(nv + interior_, PointInfo{Kind::kInterior});
   stats_.surface_vertices = nv;
   max_steiner_per_vertex_ = options.max_steiner_per_vertex;
+  refine_flat_ = options.refine_flat;
   cap_ = static_cast<std::size_t>(options.max_steiner_per_vertex * static_cast<double>(nv));
 
   std::map<std::uint64_t, Id> edge_of;
@@ -672,7 +674,7 @@ RecoveredVolume Recovery::run() {
     }
     if (missing_faces.empty()) {
       Mesh v = volume(tz);
-      if (!refine_flat_tets(v)) {
+      if (!refine_flat_ || !refine_flat_tets(v)) {
         require_interior_used(v);
         return {std::move(v), stats_};
       }

@@ -244,7 +244,10 @@ Adapt3dResult fill_volume(Mesh&& volume, double hsiz, Adapt3dOptions options,
 FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions options,
                          const PassCallback& on_pass) {
   if (!(hsiz >= 0.0) || !std::isfinite(hsiz)) throw InputError("mesh_volume: hsiz must be >= 0");
-  RecoveredVolume first = recover_volume(surface);
+  // Near-flat tets are left to fill_volume's sliver sweeps (BoundaryRecoveryOptions::refine_flat).
+  BoundaryRecoveryOptions ro;
+  ro.refine_flat = false;
+  RecoveredVolume first = recover_volume(surface, ro);
   const auto sizes_of = [&](const Mesh& v) {
     return hsiz > 0.0 ? std::vector<double>(v.num_vertices(), hsiz) : boundary_sizes(v);
   };
@@ -257,7 +260,6 @@ FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions option
   require_reachable_complexity<3>(first.volume, first_metrics, kMostVertices3d);
   FieldPoints3 points = field_points3d(first.volume, first_sizes);
   first = {};
-  BoundaryRecoveryOptions ro;
   ro.interior_points = std::move(points.coords);
   RecoveredVolume r = recover_volume(surface, ro);
   // Sizes: the boundary's at the surface and Steiner vertices, the field points' own.

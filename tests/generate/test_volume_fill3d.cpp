@@ -14,6 +14,7 @@
 #include "mesh/check.hpp"
 #include "mesh/distance.hpp"
 #include "metric/mesh_quality.hpp"
+#include "remesh/surface_adapt.hpp"
 #include "remesh/surface_test_meshes.hpp"
 
 namespace riemesh {
@@ -173,6 +174,25 @@ TEST(VolumeFill3d, MeshVolumeFromASurface) {
   const FilledVolume g = mesh_volume(surface, 0.0, Adapt3dOptions{});
   EXPECT_EQ(g.adapted.mesh.coords, f.adapted.mesh.coords);
   EXPECT_EQ(g.adapted.mesh.tets, f.adapted.mesh.tets);
+}
+
+TEST(VolumeFill3d, NearlyCocircularSquaresAreLeftToTheSliverSweeps) {
+  // The cube's faces remeshed to 1/10 by the surface remesher: squares of right triangles,
+  // cocircular up to rounding, so no Delaunay ties. Refining the near-flat tets between them
+  // (BoundaryRecoveryOptions::refine_flat) cascades into Steiner points and leaves poor tets;
+  // mesh_volume leaves them to its sliver sweeps.
+  SurfaceAdaptOptions so;
+  so.hsiz = 0.1;
+  const Mesh surface = adapt_surface(test::cube_surface(10), so);
+  const FilledVolume f = mesh_volume(surface, 0.0, Adapt3dOptions{});
+  EXPECT_TRUE(check_mesh(f.adapted.mesh).valid());
+  EXPECT_NEAR(tet_volume_sum(f.adapted.mesh), 1.0, 1e-9);
+  EXPECT_GT(f.adapted.report.passes.back().q_min, 0.4);
+  const RecoveredVolume refined = recover_volume(surface);  // refine_flat: the default
+  BoundaryRecoveryOptions left;
+  left.refine_flat = false;
+  const RecoveredVolume flat = recover_volume(surface, left);
+  EXPECT_LT(flat.stats.steiner(), refined.stats.steiner());
 }
 
 TEST(VolumeFill3d, ThinSlabGetsNoSlivers) {
