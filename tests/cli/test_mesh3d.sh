@@ -81,6 +81,21 @@ if [ $code -eq 0 ] && [[ "$out" =~ \ ([0-9]+)\ Steiner\ points.*\ ([0-9]+)\ edge
 else
   ko "mesh3d-cocircular-flips: $code $out"
 fi
+# 10 x 10 squares per face remeshed to 1/10 by the surface remesher: squares cocircular up to rounding. With
+# --nofill, flat tets the recovery leaves are reported; with the fill the result is valid.
+cube_surface "$TMP/cube10.mesh" 10
+"$R" adapt "$TMP/cube10.mesh" --hsiz 0.1 -o "$TMP/cube10s.mesh" -q
+"$R" mesh "$TMP/cube10s.mesh" -o "$TMP/cube10_nofill.mesh" --nofill >/dev/null 2>"$TMP/err"
+grep -q "^riemesh: warning: .*tetrahedra of near-zero volume remain (first: tetrahedron [0-9]* at" "$TMP/err" &&
+  ok mesh3d-nofill-flat-reported || ko "mesh3d-nofill-flat-reported: $(cat "$TMP/err")"
+out=$("$R" mesh "$TMP/cube10s.mesh" -o "$TMP/cube10_fill.mesh" 2>/dev/null); code=$?
+if [ $code -eq 0 ] && [[ "$out" =~ \(q_min\ ([0-9.]+)\) ]] &&
+   /usr/bin/python3 -c "import sys; sys.exit(0 if ${BASH_REMATCH[1]} > 0.4 else 1)" &&
+   "$R" check "$TMP/cube10_fill.mesh" >/dev/null; then
+  ok "mesh3d-nearly-cocircular-fill ($out)"
+else
+  ko "mesh3d-nearly-cocircular-fill: $code $out"
+fi
 expect_error mesh3d-fill-nofill-hsiz mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --hsiz 0.25 --nofill
 expect_error mesh3d-metric-refused mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --metric "$TMP/none.sol"
 # A size far too small for the volume is refused at once (over 1e18 tets asked).
