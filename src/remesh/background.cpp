@@ -167,11 +167,12 @@ void BackgroundMesh<D>::finish(std::vector<Id>&& elem2elem) {
   for (std::size_t s = 0; s < ns; ++s) {
     Vec<D> x[kVerts];
     for (int i = 0; i < kVerts; ++i) x[i] = coords_[simplices_[kVerts * s + i]];
-    // Rounded to zero, the exact orientation decides: a flat sliver of a Delaunay
-    // tetrahedralisation is valid (never the simplex a walk stops in: its coordinates are not
-    // finite, and the searches pass it by).
+    // A tet whose volume rounds to zero is decided by the exact orientation: a flat sliver of a
+    // Delaunay tetrahedralisation is valid (no walk stops in it: its barycentric coordinates are
+    // not finite, and the searches pass it by).
     const double volume = simplex::signed_volume(x);
-    if (!std::isfinite(volume) || (volume == 0.0 && simplex::exact_orientation(x) == 0.0))
+    if (!std::isfinite(volume) ||
+        (volume == 0.0 && (D == 2 || simplex::exact_orientation(x) == 0.0)))
       throw InputError(prefix() + "simplex " + std::to_string(s + 1) + " has zero measure");
   }
   for (std::size_t v = 0; v < nv; ++v) {
