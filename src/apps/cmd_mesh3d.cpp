@@ -14,6 +14,11 @@
 
 namespace riemesh::cli {
 
+namespace {
+/// A surface whose mean edge is longer than this many times --hsiz gets a note.
+constexpr double kCoarseSurfaceRatio = 2.0;
+}  // namespace
+
 void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
                               const std::string& output, const VolumeFillArgs& args) {
   if (surface.dim != 3 || !surface.tets.empty() || surface.triangles.empty())
@@ -46,6 +51,19 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
     }
   } catch (const InputError& e) {
     throw named(e);
+  }
+  // The surface is kept as given: far coarser than --hsiz, the tets along it are slivers (said
+  // once the volume is made: a refused input gets its error line alone).
+  if (args.fill && args.hsiz > 0.0 && !args.quiet) {
+    const std::vector<double> h = boundary_sizes(surface);
+    double mean = 0.0;
+    for (const double x : h) mean += x / static_cast<double>(h.size());
+    if (mean > kCoarseSurfaceRatio * args.hsiz)
+      std::fprintf(stderr,
+                   "riemesh: note: %s: the surface's edges are %.3g long on average, %.3g times "
+                   "--hsiz; it is kept as given, so the tets along it will be poor: remesh it to "
+                   "the size first (riemesh adapt %s --hsiz %g -o SURFACE.mesh)\n",
+                   input.c_str(), mean, mean / args.hsiz, input.c_str(), args.hsiz);
   }
   write_mesh(out, output);
   // The tets of the boundary points alone may keep flat slivers between nearly cocircular
