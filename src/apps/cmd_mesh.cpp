@@ -174,10 +174,10 @@ void register_mesh(CLI::App& app) {
       "Mesh a planar domain from its boundary Edges or from a Gmsh .geo geometry (curves "
       "meshed to the sizes within --hausd; Delaunay, field points — a constant --hsiz or "
       "--metric fills the inside with its unit lattice — then optimisation), or the "
-      "volume inside a closed surface (Delaunay of its vertices, boundary recovered by "
-      "Steiner points on the surface, reported; then field points at --hsiz (a body-centred "
-      "cubic lattice) or the boundary's sizes, inserted by Delaunay, optimised with the "
-      "surface kept)");
+      "volume inside a closed surface (Delaunay of its vertices, boundary recovered by flips "
+      "of cocircular quads and Steiner points on the surface, reported; then field points at "
+      "--hsiz (a body-centred cubic lattice) or the boundary's sizes, inserted by Delaunay, "
+      "optimised with the surface kept: remesh a surface far coarser than --hsiz first)");
   cmd->add_option("input", a->input,
                   "Domain: a 2D .mesh/.meshb/.msh whose Edges (with refs) bound it, each with "
                   "the domain on its left (outer loops counter-clockwise, holes clockwise); or a "
