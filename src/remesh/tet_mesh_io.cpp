@@ -4,8 +4,8 @@
 #include <map>
 
 #include "core/error.hpp"
-#include "core/predicates.hpp"
 #include "mesh/adjacency.hpp"
+#include "remesh/simplex_geometry.hpp"
 #include "remesh/tet_mesh.hpp"
 #include "remesh/vertex_logs.hpp"
 
@@ -65,8 +65,8 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
     const Id* v = &mesh.tets[4 * t];
     // Rounded to zero or below, the exact orientation decides (a valid flat sliver of a
     // Delaunay tetrahedralisation; the sliver sweeps remove it).
-    if (!(tet_volume(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]], m.xyz[v[3]]) > 0.0) &&
-        !(orient3d(m.xyz[v[0]].x, m.xyz[v[1]].x, m.xyz[v[2]].x, m.xyz[v[3]].x) > 0.0))
+    const Vec3 x[4] = {m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]], m.xyz[v[3]]};
+    if (!(tet_volume(x[0], x[1], x[2], x[3]) > 0.0) && !(simplex::exact_orientation(x) > 0.0))
       throw InputError("tetrahedron " + std::to_string(t + 1) +
                        " has a negative or zero volume (3D remeshing needs positive tets)");
     for (int i = 0; i < 4; ++i) {
