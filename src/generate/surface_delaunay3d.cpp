@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <deque>
 #include <string>
@@ -109,6 +110,44 @@ void require_closed_surface(const Mesh& s) {
   if (flipped)
     throw_defect("edges traversed the same way by both their triangles (inconsistent orientation)",
                  flipped, "edge of " + first_flipped);
+  // Every edge on two triangles: the triangles at a vertex, joined across their edges through
+  // it, form cycles; more than one cycle is a vertex where separate sheets touch (two cubes
+  // sharing a corner), whose volume is no manifold: its tets around that vertex are not
+  // connected through faces, which the optimiser's walks need. Union-find on the corners
+  // (3 t + i: triangle t at its vertex i), the two corners of each edge's triangles at each end
+  // joined.
+  std::vector<Id> parent(3 * s.num_triangles());
+  for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<Id>(k);
+  const auto root = [&](Id k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  const auto corner = [&](Id t, Id v) {
+    const Id* tv = &s.triangles[3 * static_cast<std::size_t>(t)];
+    return 3 * t + (tv[0] == v ? 0 : tv[1] == v ? 1 : 2);
+  };
+  for (std::size_t i = 0; i + 1 < e.size(); i += 2)
+    for (const Id v : {e[i].lo, e[i].hi}) {
+      const Id x = root(corner(e[i].tri, v)), y = root(corner(e[i + 1].tri, v));
+      parent[std::max(x, y)] = std::min(x, y);
+    }
+  // Per vertex, the first root seen; another root at the same vertex is a second sheet.
+  std::vector<Id> sheet(nv, kNoId);
+  std::size_t pinched = 0;
+  Id first_pinched = kNoId;
+  std::vector<std::uint8_t> counted(nv, 0);
+  for (std::size_t k = 0; k < parent.size(); ++k) {
+    const Id v = s.triangles[k], r = root(static_cast<Id>(k));
+    if (sheet[v] == kNoId)
+      sheet[v] = r;
+    else if (sheet[v] != r && !counted[v]) {
+      counted[v] = 1;
+      if (pinched++ == 0 || v < first_pinched) first_pinched = v;
+    }
+  }
+  if (pinched)
+    throw_defect("non-manifold vertices (where separate sheets of the surface touch)", pinched,
+                 "vertex " + std::to_string(first_pinched + 1));
 }
 
 SurfaceDelaunay delaunay_of_surface(const Mesh& s) {

@@ -135,6 +135,37 @@ TEST(SurfaceDelaunay3d, DefectsAreNamed) {
   EXPECT_NE(message(none).find("no triangles"), std::string::npos);
 }
 
+TEST(SurfaceDelaunay3d, PinchedVerticesAreNamed) {
+  // Two tetrahedra sharing vertex 0 only (the second is the first turned about the origin):
+  // every edge has two triangles, consistently oriented, but the triangles at the shared
+  // vertex form two separate fans. The fill's optimiser failed an internal check on such a
+  // surface (two cubes sharing a corner).
+  Mesh s;
+  s.dim = 3;
+  add_tet_surface(s, 1.0, 0.0, true);
+  add_tet_surface(s, -1.0, 0.0, true);  // the reflected tet: (0,0,0), (-1,0,0), (0,-1,0), (0,0,-1)
+  // The reflection reverses orientation: flip its triangles back to outward.
+  for (std::size_t k = 12; k < s.triangles.size(); k += 3)
+    std::swap(s.triangles[k + 1], s.triangles[k + 2]);
+  // Weld its first vertex (at the origin) to the first tet's.
+  for (std::size_t k = 12; k < s.triangles.size(); ++k)
+    if (s.triangles[k] == 4) s.triangles[k] = 0;
+  try {
+    require_closed_surface(s);
+    ADD_FAILURE() << "a pinched vertex was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1 non-manifold vertices (where separate sheets of the "
+                                         "surface touch) (first: vertex 1)"),
+              std::string::npos)
+        << e.what();
+  }
+  // Each tetrahedron alone is fine.
+  Mesh one;
+  one.dim = 3;
+  add_tet_surface(one, 1.0, 0.0, true);
+  EXPECT_NO_THROW(require_closed_surface(one));
+}
+
 TEST(SurfaceDelaunay3d, CoincidentVerticesAreNamed) {
   Mesh s;
   s.dim = 3;
