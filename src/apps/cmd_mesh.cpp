@@ -32,6 +32,11 @@ struct MeshArgs {
   Mesh2dOptions opt;
   const CLI::Option* hausd = nullptr;
   const CLI::Option* hgrad = nullptr;
+  const CLI::Option* hsiz_given = nullptr;
+  const CLI::Option* hmin = nullptr;
+  const CLI::Option* hmax = nullptr;
+  const CLI::Option* passes = nullptr;
+  const CLI::Option* interp_given = nullptr;
 };
 
 bool ends_with(const std::string& s, const std::string& suffix) {
@@ -125,6 +130,16 @@ void mesh_geometry(MeshArgs& a) {
 
 void run(MeshArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
+  // A size whose metric 1/H² is not a normal double (beyond about 1e-154 .. 1e154) is refused
+  // here, not later as a metric the user never gave.
+  if (a.hsiz_given->count() > 0 &&
+      !(a.opt.hsiz > 0.0 && std::isnormal(1.0 / (a.opt.hsiz * a.opt.hsiz)) &&
+        std::isfinite(a.opt.hsiz * a.opt.hsiz))) {
+    char msg[96];
+    std::snprintf(msg, sizeof msg,
+                  "--hsiz must be a finite size > 0 (from 1e-150 to 1e150), got %g", a.opt.hsiz);
+    throw InputError(msg);
+  }
   if (a.opt.hsiz > 0.0 && !a.metric.empty())
     throw InputError("--hsiz and --metric contradict: give one of them");
   for (const std::string& h : a.holes) {
@@ -140,14 +155,23 @@ void run(MeshArgs& a) {
   if (ends_with(a.input, ".geo")) return mesh_geometry(a);
   const Mesh domain = read_mesh(a.input);
   if (domain.dim == 3) {  // a closed surface: the volume inside it
-    if (!a.metric.empty() || a.hausd->count() > 0 || !a.holes.empty())
-      throw InputError(a.input + ": a surface is meshed with --hsiz or sizes from its edges so "
-                       "far; --metric, --hausd and --hole apply to planar domains");
-    if (a.nofill && a.opt.hsiz > 0.0)
-      throw InputError("--hsiz and --nofill contradict: --nofill adds no interior points");
+    if (!a.metric.empty() || a.hausd->count() > 0 || !a.holes.empty() || a.interp_given->count())
+      throw InputError(a.input +
+                       ": a surface is meshed with --hsiz or sizes from its edges so "
+                       "far; --metric, --hausd, --hole and --interp apply to planar domains");
+    const bool sizing = a.opt.hsiz > 0.0 || a.hmin->count() > 0 || a.hmax->count() > 0 ||
+                        a.hgrad->count() > 0 || a.passes->count() > 0;
+    if (a.nofill && sizing)
+      throw InputError(
+          "--nofill adds no interior points: --hsiz, --hmin, --hmax, --hgrad and "
+          "--passes do not apply with it");
+    a.opt.adapt.validate();  // --hmin, --hmax, --hgrad, --passes ranges
     VolumeFillArgs f;
     f.fill = !a.nofill;
     f.hsiz = a.opt.hsiz;
+    f.hmin = a.opt.adapt.hmin;
+    f.hmax = a.opt.adapt.hmax;
+    f.passes = a.opt.adapt.max_passes;
     if (a.hgrad->count() > 0) f.hgrad = a.opt.adapt.hgrad;
     f.quiet = a.quiet;
     f.verbosity = a.verbosity;
@@ -185,7 +209,8 @@ void register_mesh(CLI::App& app) {
                   "surfaces, physical groups: see the README); or a closed surface .mesh")
       ->required();
   cmd->add_option("-o,--output", a->output, "Output mesh (.mesh, .meshb, .msh, .vtu)");
-  cmd->add_option("--hsiz", a->opt.hsiz, "Uniform size (default: from the boundary edges)");
+  a->hsiz_given =
+      cmd->add_option("--hsiz", a->opt.hsiz, "Uniform size (default: from the boundary edges)");
   cmd->add_option("--metric", a->metric,
                   "Metric at the domain's vertices (.sol: tensors m11 m12 m22, or sizes)");
   a->hausd = cmd->add_option("--hausd", a->opt.adapt.hausd,
@@ -197,17 +222,21 @@ void register_mesh(CLI::App& app) {
   cmd->add_flag("--nofill", a->nofill,
                 "Surfaces: keep the tetrahedra of the boundary points only (no interior points)");
   cmd->add_flag("--keep-boundary", a->keep_boundary,
-                "Keep the boundary vertices and edges as given even with --hsiz/--metric/--hausd");
-  cmd->add_option("--hmin", a->opt.adapt.hmin, "Smallest size")->capture_default_str();
-  cmd->add_option("--hmax", a->opt.adapt.hmax, "Largest size");
+                "Keep the boundary vertices and edges as given even with --hsiz/--metric/--hausd "
+                "(a surface is always kept)");
+  a->hmin = cmd->add_option("--hmin", a->opt.adapt.hmin, "Smallest size (surfaces: of the fill)")
+                ->capture_default_str();
+  a->hmax = cmd->add_option("--hmax", a->opt.adapt.hmax, "Largest size (surfaces: of the fill)");
   a->hgrad = cmd->add_option("--hgrad", a->opt.adapt.hgrad,
                              "Gradation: growth ratio between neighbours (0: off; default 1.3, "
                              "or 0 when the boundary is kept)");
-  cmd->add_option("--passes", a->opt.adapt.max_passes, "Largest number of optimisation passes")
-      ->capture_default_str();
-  cmd->add_option("--interp", a->interp,
-                  "Metric interpolation inside the domain (see riemesh adapt -h); default iso-linear "
-                  "(sizes linear between boundary vertices, as Gmsh), log with --metric");
+  a->passes =
+      cmd->add_option("--passes", a->opt.adapt.max_passes, "Largest number of optimisation passes")
+          ->capture_default_str();
+  a->interp_given = cmd->add_option(
+      "--interp", a->interp,
+      "Metric interpolation inside the domain (see riemesh adapt -h); default iso-linear "
+      "(sizes linear between boundary vertices, as Gmsh), log with --metric");
   cmd->add_flag("--quiet,-q", a->quiet, "No progress lines");
   cmd->add_option("-v,--verbose", a->verbosity,
                   "Verbosity (1: per-pass operator counts, lengths and mean quality)");

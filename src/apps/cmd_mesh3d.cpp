@@ -37,6 +37,9 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
     if (args.fill) {
       Adapt3dOptions o;
       o.hgrad = args.hgrad;
+      o.hmin = args.hmin;
+      o.hmax = args.hmax;
+      o.max_passes = args.passes;
       FilledVolume filled = mesh_volume(surface, args.hsiz, o, [&](const PassStats& p) {
         if (!args.quiet) print_pass(p, args.verbosity, "tetrahedra", "fill ");
         q_min = p.q_min;

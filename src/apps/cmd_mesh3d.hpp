@@ -1,6 +1,7 @@
 #pragma once
 // Meshing a volume from its closed boundary surface, for `riemesh mesh SURFACE.mesh -o VOL.mesh`
 // (`riemesh mesh` calls this when its input is a surface in 3D).
+#include <limits>
 #include <string>
 
 #include "mesh/mesh.hpp"
@@ -12,6 +13,9 @@ struct VolumeFillArgs {
   bool fill = true;    ///< false (--nofill): the tetrahedra of the boundary points only
   double hsiz = 0.0;   ///< interior size; 0: from the boundary edges
   double hgrad = 1.3;  ///< size gradation of the fill (0: off)
+  double hmin = 0.0;   ///< sizes clipped to [hmin, hmax] (--hmin, --hmax)
+  double hmax = std::numeric_limits<double>::infinity();
+  int passes = 15;  ///< largest number of the fill's optimisation passes (--passes)
   bool quiet = false;
   int verbosity = 0;  ///< 1: per-pass statistics of the fill
 };

@@ -234,7 +234,9 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   // A size far too small for the domain (a mistyped --hsiz or lc) is refused before any point
   // is added (and before the boundary is cut) instead of exhausting the memory: at most 1e8
   // vertices (about 2e8 triangles).
-  require_reachable_complexity<2>(domain.mesh, metrics, kMostVertices2d);
+  require_reachable_complexity<2>(
+      domain.mesh, metrics, kMostVertices2d,
+      given.empty() ? ComplexityBound::kLinearSizes : ComplexityBound::kLogEuclidean);
   // A constant metric (--hsiz, or one tensor everywhere): its unit lattice fills the inside.
   const bool constant = same_metric<2>(given).has_value();
   std::size_t lattice_points = 0;

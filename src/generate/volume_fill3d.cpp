@@ -243,13 +243,19 @@ Adapt3dResult fill_volume(Mesh&& volume, double hsiz, Adapt3dOptions options,
 
 FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions options,
                          const PassCallback& on_pass) {
-  if (!(hsiz >= 0.0) || !std::isfinite(hsiz)) throw InputError("mesh_volume: hsiz must be >= 0");
+  if (!(hsiz >= 0.0) || !std::isfinite(hsiz))
+    throw InputError("the size must be finite and >= 0 (0: from the boundary edges)");
+  options.validate();
   // Near-flat tets are left to fill_volume's sliver sweeps (BoundaryRecoveryOptions::refine_flat).
   BoundaryRecoveryOptions ro;
   ro.refine_flat = false;
   RecoveredVolume first = recover_volume(surface, ro);
+  // Sizes clipped to [hmin, hmax] (the field points follow them too).
   const auto sizes_of = [&](const Mesh& v) {
-    return hsiz > 0.0 ? std::vector<double>(v.num_vertices(), hsiz) : boundary_sizes(v);
+    std::vector<double> h =
+        hsiz > 0.0 ? std::vector<double>(v.num_vertices(), hsiz) : boundary_sizes(v);
+    for (double& x : h) x = std::min(std::max(x, options.hmin), options.hmax);
+    return h;
   };
   const std::vector<double> first_sizes = sizes_of(first.volume);
   // A size far too small (a mistyped --hsiz) is refused before any point is added instead of
@@ -257,7 +263,8 @@ FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions option
   std::vector<SymMat3> first_metrics(first_sizes.size());
   for (std::size_t v = 0; v < first_sizes.size(); ++v)
     first_metrics[v] = isotropic_metric<3>(first_sizes[v]);
-  require_reachable_complexity<3>(first.volume, first_metrics, kMostVertices3d);
+  require_reachable_complexity<3>(first.volume, first_metrics, kMostVertices3d,
+                                  ComplexityBound::kLinearSizes);
   FieldPoints3 points = field_points3d(first.volume, first_sizes);
   first = {};
   ro.interior_points = std::move(points.coords);

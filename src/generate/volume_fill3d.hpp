@@ -46,7 +46,8 @@ Adapt3dResult fill_volume(Mesh&& volume, double hsiz, Adapt3dOptions options,
                           const PassCallback& on_pass = {});
 
 /// The whole of it from a closed surface: recover_volume, field points for hsiz (> 0) or the
-/// boundary sizes (hsiz == 0), recover_volume with them, fill_volume.
+/// boundary sizes (hsiz == 0), clipped to [options.hmin, options.hmax], recover_volume with
+/// them, fill_volume.
 struct FilledVolume {
   Adapt3dResult adapted;
   BoundaryRecoveryStats stats;     ///< of the final recovery (with the field points)

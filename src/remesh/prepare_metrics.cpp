@@ -29,13 +29,16 @@ constexpr double kVerticesPerComplexity = D == 2 ? 1.1547005383792515 : 1.414213
 }  // namespace
 
 template <int D>
-void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m,
-                                  double max_vertices) {
-  // Only the order of magnitude matters here: each element's measure times the mean of its
-  // vertices' sqrt(det M) (an upper bound of the log-Euclidean complexity, one root per vertex).
+void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m, double max_vertices,
+                                  ComplexityBound bound) {
+  // Only the order of magnitude matters here: each element's measure times the arithmetic
+  // (log-Euclidean) or geometric (linear sizes) mean of its vertices' sqrt(det M), one root
+  // per vertex.
+  const bool geometric = bound == ComplexityBound::kLinearSizes;
   const std::vector<Id>& elems = D == 2 ? in.triangles : in.tets;
   std::vector<double> density(m.size());
-  for (std::size_t v = 0; v < m.size(); ++v) density[v] = std::sqrt(det(m[v]));
+  for (std::size_t v = 0; v < m.size(); ++v)
+    density[v] = geometric ? 0.5 * std::log(det(m[v])) : std::sqrt(det(m[v]));
   double total = 0.0;
   for (std::size_t e = 0; e + D < elems.size(); e += D + 1) {
     Vec<D> p[D + 1];
@@ -45,7 +48,7 @@ void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m,
       for (int k = 0; k < D; ++k) p[i][k] = in.coords[D * v + k];
       mean += density[v] / (D + 1);
     }
-    total += std::abs(simplex_measure(p)) * mean;
+    total += std::abs(simplex_measure(p)) * (geometric ? std::exp(mean) : mean);
   }
   const double vertices = kVerticesPerComplexity<D> * total;
   const double ids = static_cast<double>(std::numeric_limits<Id>::max());
@@ -66,8 +69,10 @@ void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m,
       " near " + where + ") (see --hmin)");
 }
 
-template void require_reachable_complexity<2>(const Mesh&, std::span<const SymMat2>, double);
-template void require_reachable_complexity<3>(const Mesh&, std::span<const SymMat3>, double);
+template void require_reachable_complexity<2>(const Mesh&, std::span<const SymMat2>, double,
+                                              ComplexityBound);
+template void require_reachable_complexity<3>(const Mesh&, std::span<const SymMat3>, double,
+                                              ComplexityBound);
 
 template <int D>
 std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,

@@ -26,11 +26,18 @@ void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics);
 /// (D = 2) or tets (D = 3) cover the domain) would need more than max_vertices vertices, or more
 /// than 32-bit ids hold, or if the count overflows (a tensor whose determinant is infinite),
 /// naming the place of the finest size (by coordinates: the drivers work on a renumbered copy).
-/// An order of magnitude: each element in the mean of its vertices' sqrt(det M). Without it such
-/// a field ran for hours (complexity 1e12) or crashed on non-finite lengths (a tensor of 1e308).
+/// An upper bound of the complexity, by `bound`: each element in the arithmetic mean of its
+/// vertices' sqrt(det M) for log-Euclidean interpolation (the default), or in their geometric
+/// mean for isotropic sizes linear in each element (kLinearSizes: the mean of h^-D over a
+/// simplex is at most the mean of h^-(D+1) to the power D/(D+1), which is 1 / Π h_i exactly;
+/// the arithmetic mean overestimated a tet with one vertex 700 times finer than the others
+/// 1e5-fold). Without it such a field ran for hours (complexity 1e12) or crashed on
+/// non-finite lengths (a tensor of 1e308).
+enum class ComplexityBound { kLogEuclidean, kLinearSizes };
 template <int D>
 void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m,
-                                  double max_vertices = 2147483647.0);
+                                  double max_vertices = 2147483647.0,
+                                  ComplexityBound bound = ComplexityBound::kLogEuclidean);
 
 template <int D>
 std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,

@@ -106,4 +106,47 @@ expect_error mesh3d-metric-refused mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --metri
 expect_error mesh3d-size-too-small mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --hsiz 1e-6
 expect_no_file mesh3d-size-too-small-no-file "$TMP/y.mesh"
 expect_no_file mesh3d-refused-no-output "$TMP/y.mesh"
+
+# Options of the fill: sizes clipped by --hmin/--hmax, --passes bounded; ranges checked; the 2D
+# options without meaning for a surface refused (they were accepted and dropped).
+cube_surface "$TMP/cube2.mesh" 2
+out=$("$R" mesh "$TMP/cube2.mesh" -o "$TMP/c_default.mesh" -q && "$R" stats "$TMP/c_default.mesh")
+n_default=$(printf '%s\n' "$out" | sed -n 's/.*tetrahedra \([0-9]*\).*/\1/p')
+out=$("$R" mesh "$TMP/cube2.mesh" -o "$TMP/c_hmax.mesh" -q --hmax 0.2 && "$R" stats "$TMP/c_hmax.mesh")
+n_hmax=$(printf '%s\n' "$out" | sed -n 's/.*tetrahedra \([0-9]*\).*/\1/p')
+if [ -n "$n_default" ] && [ -n "$n_hmax" ] && [ "$n_hmax" -gt $((4 * n_default)) ]; then
+  ok "mesh3d-hmax-applies ($n_default -> $n_hmax tets)"
+else
+  ko "mesh3d-hmax-applies: $n_default -> $n_hmax tets"
+fi
+out=$("$R" mesh "$TMP/cube2.mesh" -o "$TMP/c_p1.mesh" --passes 1 2>&1)
+[ "$(printf '%s\n' "$out" | grep -c '^fill pass')" -eq 1 ] && ok mesh3d-passes-applies ||
+  ko "mesh3d-passes-applies: $out"
+expect_error mesh3d-hmin-above-hmax mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --hmin 0.5 --hmax 0.1
+expect_error mesh3d-passes-range mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --passes 0
+expect_error mesh3d-interp-refused mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --interp log
+expect_error mesh3d-nofill-hmax mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --nofill --hmax 0.1
+# A size whose metric 1/H² under- or overflows is a size error, not "metric not positive definite".
+"$R" mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --hsiz 1e154 2>&1 | grep -q -- "--hsiz must be a finite size" &&
+  ok mesh3d-hsiz-huge || ko mesh3d-hsiz-huge
+expect_error mesh3d-hsiz-inf mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --hsiz inf
+expect_no_file mesh3d-options-no-output "$TMP/y.mesh"
+
+# Two tetrahedra sharing one vertex: every edge has two triangles, but the vertex joins two
+# sheets (the fill's optimiser failed an internal check on two cubes sharing a corner).
+{
+  printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n7\n'
+  printf '0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n-1 0 0 0\n0 -1 0 0\n0 0 -1 0\n'
+  printf 'Triangles\n8\n1 3 2 1\n1 2 4 1\n1 4 3 1\n2 3 4 1\n'
+  printf '1 6 7 1\n1 7 5 1\n1 5 6 1\n5 7 6 1\nEnd\n'
+} >"$TMP/pinch.mesh"
+expect_error mesh3d-pinched-vertex mesh "$TMP/pinch.mesh" -o "$TMP/y.mesh"
+"$R" mesh "$TMP/pinch.mesh" -o "$TMP/y.mesh" 2>&1 | grep -q "non-manifold vertices (where separate sheets of the surface touch) (first: vertex 1)" &&
+  ok mesh3d-pinched-vertex-named || ko mesh3d-pinched-vertex-named
+
+# A unit cube with a 0.001 dent in its top face (gmsh, tests/data/cube_dent.mesh): the sizes
+# from the surface span 700:1; the vertex count was overestimated 1e5-fold and the surface
+# refused ("asks for about 1.38e8 vertices").
+out=$("$R" mesh "$(dirname "$0")/../data/cube_dent.mesh" -o "$TMP/dent.mesh" -q --passes 3 2>&1); code=$?
+if [ $code -eq 0 ] && "$R" check "$TMP/dent.mesh" >/dev/null; then ok mesh3d-small-dent; else ko "mesh3d-small-dent: $code $out"; fi
 exit $fail
