@@ -27,7 +27,7 @@ namespace {
 struct MeshArgs {
   std::string input, output, metric, interp;
   std::vector<std::string> holes;
-  bool keep_boundary = false, quiet = false, nofill = false;
+  bool keep_boundary = false, quiet = false, nofill = false, keep_triangles = false;
   int verbosity = 0;
   Mesh2dOptions opt;
   const CLI::Option* hausd = nullptr;
@@ -152,6 +152,8 @@ void run(MeshArgs& a) {
   if (a.interp.empty()) a.interp = a.metric.empty() ? "iso-linear" : "log";
   a.opt.adapt.interp = parse_interp_scheme(a.interp);
   mesh_format(a.output);  // an unknown output extension fails before any work
+  if (a.keep_triangles && ends_with(a.input, ".geo"))
+    throw InputError(a.input + ": --keep-triangles applies to surfaces");
   if (ends_with(a.input, ".geo")) return mesh_geometry(a);
   const Mesh domain = read_mesh(a.input);
   if (domain.dim == 3) {  // a closed surface: the volume inside it
@@ -172,12 +174,17 @@ void run(MeshArgs& a) {
     f.hmin = a.opt.adapt.hmin;
     f.hmax = a.opt.adapt.hmax;
     f.passes = a.opt.adapt.max_passes;
+    f.keep_triangles = a.keep_triangles;
     if (a.hgrad->count() > 0) f.hgrad = a.opt.adapt.hgrad;
     f.quiet = a.quiet;
     f.verbosity = a.verbosity;
     mesh_volume_from_surface(a.input, domain, a.output, f);
     return;
   }
+  if (a.keep_triangles)
+    throw InputError(a.input +
+                     ": --keep-triangles applies to surfaces (a planar domain's "
+                     "boundary is kept with --keep-boundary)");
   if (!a.metric.empty()) a.opt.metric = read_metric_file<2>(a.metric, domain);
   // The boundary is kept as given unless a size field or hausd says how to remesh it.
   a.opt.keep_boundary =
@@ -198,8 +205,10 @@ void register_mesh(CLI::App& app) {
       "Mesh a planar domain from its boundary Edges or from a Gmsh .geo geometry (curves "
       "meshed to the sizes within --hausd; Delaunay, field points — a constant --hsiz or "
       "--metric fills the inside with its unit lattice — then optimisation), or the "
-      "volume inside a closed surface (Delaunay of its vertices, boundary recovered by flips "
-      "of cocircular quads and Steiner points on the surface, reported; then field points at "
+      "volume inside a closed surface (Delaunay of its vertices; flat patches whose triangles "
+      "are no Delaunay faces take the Delaunay triangulation of their vertices unless "
+      "--keep-triangles; the rest recovered by flips of cocircular quads and Steiner points on "
+      "the surface, reported; then field points at "
       "--hsiz (a body-centred cubic lattice) or the boundary's sizes, inserted by Delaunay, "
       "optimised with the surface kept: remesh a surface far coarser than --hsiz first)");
   cmd->add_option("input", a->input,
@@ -221,6 +230,10 @@ void register_mesh(CLI::App& app) {
                   "decide which regions are holes");
   cmd->add_flag("--nofill", a->nofill,
                 "Surfaces: keep the tetrahedra of the boundary points only (no interior points)");
+  cmd->add_flag("--keep-triangles", a->keep_triangles,
+                "Surfaces: recover every triangle as given (by default a flat patch whose "
+                "triangles are no Delaunay faces, e.g. a fan of thin triangles, takes the "
+                "Delaunay triangulation of its own vertices)");
   cmd->add_flag("--keep-boundary", a->keep_boundary,
                 "Keep the boundary vertices and edges as given even with --hsiz/--metric/--hausd "
                 "(a surface is always kept)");

@@ -40,15 +40,20 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
       o.hmin = args.hmin;
       o.hmax = args.hmax;
       o.max_passes = args.passes;
-      FilledVolume filled = mesh_volume(surface, args.hsiz, o, [&](const PassStats& p) {
-        if (!args.quiet) print_pass(p, args.verbosity, "tetrahedra", "fill ");
-        q_min = p.q_min;
-      });
+      FilledVolume filled = mesh_volume(
+          surface, args.hsiz, o,
+          [&](const PassStats& p) {
+            if (!args.quiet) print_pass(p, args.verbosity, "tetrahedra", "fill ");
+            q_min = p.q_min;
+          },
+          args.keep_triangles);
       s = filled.stats;
       field_points = filled.field_points;
       out = std::move(filled.adapted.mesh);
     } else {
-      RecoveredVolume r = recover_volume(surface);
+      BoundaryRecoveryOptions ro;
+      ro.keep_triangles = args.keep_triangles;
+      RecoveredVolume r = recover_volume(surface, ro);
       s = r.stats;
       out = std::move(r.volume);
     }
@@ -97,6 +102,11 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
     std::printf(": %zu tetrahedra, %zu faces and %zu edges missing, recovered in %zu rounds",
                 s.delaunay_tets, s.missing_faces, s.missing_edges, s.rounds);
     if (s.flips > 0) std::printf(" (%zu edges by flips of cocircular quads)", s.flips);
+    if (s.planar_patches > 0)
+      std::printf(
+          "; %zu planar patch%s of %zu triangles re-triangulated with Delaunay faces "
+          "(--keep-triangles keeps them)",
+          s.planar_patches, s.planar_patches == 1 ? "" : "es", s.patch_triangles);
     std::printf("\n");
   }
 }

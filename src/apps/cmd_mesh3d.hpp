@@ -16,6 +16,7 @@ struct VolumeFillArgs {
   double hmin = 0.0;   ///< sizes clipped to [hmin, hmax] (--hmin, --hmax)
   double hmax = std::numeric_limits<double>::infinity();
   int passes = 15;  ///< largest number of the fill's optimisation passes (--passes)
+  bool keep_triangles = false;  ///< --keep-triangles: planar patches not re-triangulated
   bool quiet = false;
   int verbosity = 0;  ///< 1: per-pass statistics of the fill
 };

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/predicates.hpp"
 #include "generate/delaunay3d.hpp"
+#include "generate/planar_patches3d.hpp"
 #include "generate/surface_delaunay3d.hpp"
 #include "mesh/self_intersection.hpp"
 
@@ -115,6 +116,9 @@ class Recovery {
   std::vector<PointInfo> info_;
   std::vector<InputEdge> edges_;
   std::vector<Facet> facets_;
+  std::vector<int> facet_ref_, facet_tag_;  // per facet (the input's, or a planar patch's)
+  double thinnest_angle_ = 180.0;           // the input's smallest triangle angle (degrees)
+  std::size_t thinnest_triangle_ = 0;       // and its triangle, for the give-up message
   std::size_t cap_ = 0;
   double max_steiner_per_vertex_ = 0.0;
   bool refine_flat_ = true;
@@ -163,11 +167,69 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
   refine_flat_ = options.refine_flat;
   cap_ = static_cast<std::size_t>(options.max_steiner_per_vertex * static_cast<double>(nv));
 
+  std::vector<Id> order = insertion_order(coords_, InsertionOrder::kBrio);
+  kernel_.emplace(&coords_, order);
+  for (std::size_t k = 0; k < nv; ++k) info_[k].kind = Kind::kVertex;
+  kernel_->reserve(2 * nv + interior_);
+  for (std::size_t k = 4; k < order.size(); ++k) {
+    Id same = kNoId;
+    if (!kernel_->insert(order[k], &same)) {
+      const auto a = static_cast<std::size_t>(same), b = static_cast<std::size_t>(order[k]);
+      if (a >= nv || b >= nv) {
+        std::string msg = "interior point ";
+        msg += std::to_string(std::max(a, b) - nv + 1);
+        msg += " coincides with another point";
+        throw InputError(msg);
+      }
+      std::string msg =
+          "the surface cannot bound a volume: 1 pairs of vertices at the same place (first: ";
+      msg += vertex_pair(vertices_[a], vertices_[b]);
+      msg += ")";
+      throw InputError(msg);
+    }
+  }
+
+  // Planar patches whose triangles are no Delaunay faces (fans of thin triangles) take the
+  // tetrahedralisation's faces on their plane, when those tile them (planar_patches3d.hpp).
+  std::vector<Id> local(s.triangles.size());
+  for (std::size_t k = 0; k < local.size(); ++k)
+    local[k] = old2new[static_cast<std::size_t>(s.triangles[k])];
+  std::vector<int> refs(s.num_triangles(), 0), tags(s.num_triangles(), 0);
+  for (std::size_t f = 0; f < refs.size(); ++f) {
+    if (f < s.tri_ref.size()) refs[f] = s.tri_ref[f];
+    if (f < s.tri_tag.size()) tags[f] = s.tri_tag[f];
+  }
+  for (std::size_t f = 0; f < s.num_triangles(); ++f) {
+    const double* c[3];
+    for (int j = 0; j < 3; ++j)
+      c[j] = &s.coords[3 * static_cast<std::size_t>(s.triangles[3 * f + j])];
+    for (int j = 0; j < 3; ++j) {
+      double u[3], w[3], uu = 0, ww = 0, uw = 0;
+      for (int i = 0; i < 3; ++i) {
+        u[i] = c[(j + 1) % 3][i] - c[j][i];
+        w[i] = c[(j + 2) % 3][i] - c[j][i];
+        uu += u[i] * u[i], ww += w[i] * w[i], uw += u[i] * w[i];
+      }
+      const double angle =
+          std::acos(std::clamp(uw / std::sqrt(uu * ww), -1.0, 1.0)) * 57.29577951308232;
+      if (angle < thinnest_angle_) thinnest_angle_ = angle, thinnest_triangle_ = f;
+    }
+  }
+  PatchTriangulation patches = retriangulate_planar_patches(
+      local, refs, tags, coords_, kernel_->result(), !options.keep_triangles);
+  local = {};
+  stats_.missing_edges = patches.missing_edges;
+  stats_.missing_faces = patches.missing_faces;
+  stats_.planar_patches = patches.patches;
+  stats_.patch_triangles = patches.replaced;
+  facet_ref_ = std::move(patches.refs);
+  facet_tag_ = std::move(patches.tags);
+
   std::map<std::uint64_t, Id> edge_of;
-  facets_.resize(s.num_triangles());
+  facets_.resize(patches.triangles.size() / 3);
   for (std::size_t f = 0; f < facets_.size(); ++f) {
     Facet& t = facets_[f];
-    for (int j = 0; j < 3; ++j) t.c[j] = old2new[static_cast<std::size_t>(s.triangles[3 * f + j])];
+    for (int j = 0; j < 3; ++j) t.c[j] = patches.triangles[3 * f + j];
     for (int j = 0; j < 3; ++j) {
       const Id a = t.c[(j + 1) % 3], b = t.c[(j + 2) % 3];
       auto [it, added] = edge_of.try_emplace(pair_key(a, b), static_cast<Id>(edges_.size()));
@@ -192,27 +254,6 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
     t.cx = (u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) / t.bx;
     t.cy = std::sqrt(std::max(0.0, w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - t.cx * t.cx));
     t.sub.push_back({t.c[0], t.c[1], t.c[2]});
-  }
-
-  std::vector<Id> order = insertion_order(coords_, InsertionOrder::kBrio);
-  kernel_.emplace(&coords_, order);
-  for (std::size_t k = 0; k < nv; ++k) info_[k].kind = Kind::kVertex;
-  kernel_->reserve(2 * nv + interior_);
-  for (std::size_t k = 4; k < order.size(); ++k) {
-    Id same = kNoId;
-    if (!kernel_->insert(order[k], &same)) {
-      const auto a = static_cast<std::size_t>(same), b = static_cast<std::size_t>(order[k]);
-      if (a >= nv || b >= nv) {
-        std::string msg = "interior point ";
-        msg += std::to_string(std::max(a, b) - nv + 1);
-        msg += " coincides with another point";
-        throw InputError(msg);
-      }
-      std::string msg = "the surface cannot bound a volume: 1 pairs of vertices at the same place (first: ";
-      msg += vertex_pair(vertices_[a], vertices_[b]);
-      msg += ")";
-      throw InputError(msg);
-    }
   }
 }
 
@@ -266,7 +307,13 @@ Id Recovery::new_point(const double* p, const PointInfo& info) {
     msg += std::to_string(steiner);
     msg += " Steiner points (the cap is ";
     msg += cap;
-    msg += " per surface vertex): the surface may intersect itself";
+    msg +=
+        " per surface vertex): parts of the surface are too close together or its triangles "
+        "too thin (smallest angle ";
+    char angle[64];
+    std::snprintf(angle, sizeof angle, "%.3g degrees, triangle %zu)", thinnest_angle_,
+                  thinnest_triangle_ + 1);
+    msg += angle;
     throw InputError(msg);
   }
   const auto id = static_cast<Id>(info_.size());
@@ -510,8 +557,8 @@ Mesh Recovery::volume(const Tetrahedralization& tz) const {
   for (std::size_t f = 0; f < facets_.size(); ++f)
     for (const Tri& s : facets_[f].sub) {
       refined.triangles.insert(refined.triangles.end(), s.begin(), s.end());
-      refined.tri_ref.push_back(f < surface_.tri_ref.size() ? surface_.tri_ref[f] : 0);
-      refined.tri_tag.push_back(f < surface_.tri_tag.size() ? surface_.tri_tag[f] : 0);
+      refined.tri_ref.push_back(facet_ref_[f]);
+      refined.tri_tag.push_back(facet_tag_[f]);
     }
   SurfaceDelaunay d;
   d.vertices.resize(n);
@@ -659,11 +706,9 @@ RecoveredVolume Recovery::run() {
     for (std::size_t f = 0; f < facets_.size(); ++f)
       for (const Tri& s : facets_[f].sub)
         if (!has_face(s)) missing_faces.push_back({f, s});
-    if (stats_.rounds == 0) {
-      stats_.delaunay_tets = tz.num_tets();
-      stats_.missing_edges = missing_segments.size();
-      stats_.missing_faces = missing_faces.size();
-    }
+    // (The missing edges and faces are counted on the input's triangles, before the planar
+    // patches: in the constructor.)
+    if (stats_.rounds == 0) stats_.delaunay_tets = tz.num_tets();
     ++stats_.rounds;
     if (flip_cocircular_edges(missing_segments) > 0) continue;
     if (!missing_segments.empty()) {

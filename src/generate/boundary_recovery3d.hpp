@@ -39,6 +39,12 @@ struct BoundaryRecoveryOptions {
   /// nearly cocircular squares the splits cascade (a cube's faces remeshed to 1/10: 175 Steiner
   /// points and tets of quality 0.13 with them, 84 and 0.55 without).
   bool refine_flat = true;
+  /// Every input triangle recovered as given. false (the default): a planar patch (exactly
+  /// coplanar triangles of one ref and tag, joined by edges) with triangles that are no faces of
+  /// the tetrahedralisation takes its faces on the patch's plane instead, when they tile it
+  /// (planar_patches3d.hpp): fans of thin triangles on a CAD model's flat faces cascaded into
+  /// thousands of Steiner points.
+  bool keep_triangles = false;
   /// Points strictly inside the volume (x, y, z each), inserted with the surface vertices (field
   /// points, volume_fill3d.hpp); they become the volume's vertices after the surface's, before
   /// the Steiner points. InputError when one is not a vertex of an inside tetrahedron (outside,
@@ -56,6 +62,8 @@ struct BoundaryRecoveryStats {
   std::size_t steiner_inside = 0;    // Steiner points inside the volume (always 0 here)
   std::size_t rounds = 0;            // recovery rounds (one tetrahedralisation scan each)
   std::size_t flips = 0;  // missing edges recovered by a flip (cocircular quads: no Steiner point)
+  std::size_t planar_patches = 0;   // planar patches re-triangulated (planar_patches3d.hpp)
+  std::size_t patch_triangles = 0;  // input triangles they held
   std::size_t steiner() const { return steiner_on_edges + steiner_in_faces + steiner_inside; }
 };
 

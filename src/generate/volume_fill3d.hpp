@@ -53,7 +53,8 @@ struct FilledVolume {
   BoundaryRecoveryStats stats;     ///< of the final recovery (with the field points)
   std::size_t field_points = 0;
 };
+/// keep_triangles: BoundaryRecoveryOptions::keep_triangles (planar patches not re-triangulated).
 FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions options,
-                         const PassCallback& on_pass = {});
+                         const PassCallback& on_pass = {}, bool keep_triangles = false);
 
 }  // namespace riemesh

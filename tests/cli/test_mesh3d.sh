@@ -75,9 +75,17 @@ fi
 grep -q "^riemesh: note: .*cube.mesh: the surface.s edges are 0.564 long on average, 2.25 times --hsiz; it is kept as given" "$TMP/fill_err" &&
   ok mesh3d-coarse-surface-noted || ko "mesh3d-coarse-surface-noted: $(cat "$TMP/fill_err")"
 # 8 x 8 squares per face: the Delaunay tetrahedralisation has the other diagonal of many of these
-# cocircular squares; flips recover most of them (reported), Steiner points the rest.
+# cocircular squares; with --keep-triangles flips recover most of them (reported), Steiner points
+# the rest; by default each face, a planar patch, takes the tetrahedralisation's triangles.
 cube_surface "$TMP/cube8.mesh" 8
-out=$("$R" mesh "$TMP/cube8.mesh" -o "$TMP/cube8_vol.mesh" --nofill); code=$?
+out=$("$R" mesh "$TMP/cube8.mesh" -o "$TMP/cube8_patches.mesh" --nofill); code=$?
+if [ $code -eq 0 ] && [[ "$out" == *" 0 Steiner points"*"planar patches of "*" triangles re-triangulated with Delaunay faces"* ]] &&
+   "$R" check "$TMP/cube8_patches.mesh" >/dev/null; then
+  ok "mesh3d-planar-patches ($out)"
+else
+  ko "mesh3d-planar-patches: $code $out"
+fi
+out=$("$R" mesh "$TMP/cube8.mesh" -o "$TMP/cube8_vol.mesh" --nofill --keep-triangles); code=$?
 if [ $code -eq 0 ] && [[ "$out" =~ \ ([0-9]+)\ Steiner\ points.*\ ([0-9]+)\ edges\ missing.*\(([0-9]+)\ edges\ by\ flips\ of\ cocircular\ quads\) ]] &&
    [ "${BASH_REMATCH[1]}" -lt "${BASH_REMATCH[2]}" ] && [ "${BASH_REMATCH[3]}" -gt 0 ] &&
    "$R" check "$TMP/cube8_vol.mesh" >/dev/null; then
@@ -89,7 +97,7 @@ fi
 # --nofill, flat tets the recovery leaves are reported; with the fill the result is valid.
 cube_surface "$TMP/cube10.mesh" 10
 "$R" adapt "$TMP/cube10.mesh" --hsiz 0.1 -o "$TMP/cube10s.mesh" -q
-"$R" mesh "$TMP/cube10s.mesh" -o "$TMP/cube10_nofill.mesh" --nofill >/dev/null 2>"$TMP/err"
+"$R" mesh "$TMP/cube10s.mesh" -o "$TMP/cube10_nofill.mesh" --nofill --keep-triangles >/dev/null 2>"$TMP/err"
 grep -q "^riemesh: warning: .*tetrahedra of near-zero volume remain (first: tetrahedron [0-9]* at" "$TMP/err" &&
   ok mesh3d-nofill-flat-reported || ko "mesh3d-nofill-flat-reported: $(cat "$TMP/err")"
 out=$("$R" mesh "$TMP/cube10s.mesh" -o "$TMP/cube10_fill.mesh" 2>/dev/null); code=$?
@@ -106,6 +114,29 @@ expect_error mesh3d-metric-refused mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --metri
 expect_error mesh3d-size-too-small mesh "$TMP/tet.mesh" -o "$TMP/y.mesh" --hsiz 1e-6
 expect_no_file mesh3d-size-too-small-no-file "$TMP/y.mesh"
 expect_no_file mesh3d-refused-no-output "$TMP/y.mesh"
+
+# A 64-gon prism whose caps are fans from one rim vertex (a CAD export of a cylinder): with the
+# triangles kept, recovery gave up (2,560 Steiner points); the caps are planar patches, meshed
+# with their own vertices.
+/usr/bin/python3 - "$TMP/fan.mesh" <<'PY'
+import math, sys
+n = 64
+v = [(math.cos(2 * math.pi * k / n), math.sin(2 * math.pi * k / n), z) for z in (0, 1) for k in range(n)]
+t = [(1, k + 2, k + 1, 1) for k in range(1, n - 1)] + [(n + 1, n + k + 1, n + k + 2, 1) for k in range(1, n - 1)]
+for k in range(n):
+    a, b = k + 1, (k + 1) % n + 1
+    t += [(a, b, b + n, 2), (a, b + n, a + n, 2)]
+with open(sys.argv[1], "w") as f:
+    f.write("MeshVersionFormatted 2\nDimension 3\nVertices\n%d\n" % len(v))
+    f.writelines("%.17g %.17g %g 0\n" % p for p in v)
+    f.write("Triangles\n%d\n" % len(t))
+    f.writelines("%d %d %d %d\n" % x for x in t)
+    f.write("End\n")
+PY
+expect_error mesh3d-fan-caps-kept mesh "$TMP/fan.mesh" -o "$TMP/y.mesh" --nofill --keep-triangles
+out=$("$R" mesh "$TMP/fan.mesh" -o "$TMP/fan_vol.mesh" -q 2>&1); code=$?
+if [ $code -eq 0 ] && "$R" check "$TMP/fan_vol.mesh" >/dev/null; then ok mesh3d-fan-caps; else ko "mesh3d-fan-caps: $code $out"; fi
+expect_error mesh3d-keep-triangles-2d mesh "$SHARED/data/2d/aile.mesh" -o "$TMP/y.mesh" --keep-triangles
 
 # Options of the fill: sizes clipped by --hmin/--hmax, --passes bounded; ranges checked; the 2D
 # options without meaning for a surface refused (they were accepted and dropped).

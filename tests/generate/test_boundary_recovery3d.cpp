@@ -163,15 +163,83 @@ TEST(BoundaryRecovery3d, CocircularQuadsAreRecoveredByFlips) {
   // A cube's faces cut into squares, each split along a diagonal: every square is cocircular,
   // and the Delaunay tetrahedralisation takes the other diagonal of about half of them; where
   // four tets surround it, a flip recovers the input's without a Steiner point.
+  // (keep_triangles: a cube's faces are planar patches, which would otherwise take the
+  // tetrahedralisation's faces: PlanarPatchesTakeTheDelaunayFaces.)
+  BoundaryRecoveryOptions keep;
+  keep.keep_triangles = true;
   for (const int n : {4, 8}) {
     const Mesh s = test::cube_surface(n);
-    const RecoveredVolume r = recover_volume(s);
+    const RecoveredVolume r = recover_volume(s, keep);
     const std::string name = "cube " + std::to_string(n);
     EXPECT_GT(r.stats.missing_edges, 0u) << name;
     EXPECT_GT(r.stats.flips, r.stats.missing_edges / 3) << name;
     EXPECT_LT(r.stats.steiner(), r.stats.missing_edges) << name;
     expect_conforming_volume(s, r, name);
   }
+}
+
+/// A prism over the regular n-gon of radius 1 (height 1), each cap a fan from its vertex 0 (as
+/// CAD exports triangulate a cylinder's caps), the sides split into two triangles per face;
+/// outward. Cap triangles ref 1, sides ref 2.
+Mesh fan_prism(int n) {
+  Mesh s;
+  s.dim = 3;
+  for (int z = 0; z < 2; ++z)
+    for (int k = 0; k < n; ++k) {
+      const double a = 2.0 * 3.141592653589793 * k / n;
+      s.coords.insert(s.coords.end(), {std::cos(a), std::sin(a), double(z)});
+    }
+  const auto add = [&](Id a, Id b, Id c, int ref) {
+    s.triangles.insert(s.triangles.end(), {a, b, c});
+    s.tri_ref.push_back(ref);
+  };
+  for (int k = 1; k + 1 < n; ++k) {
+    add(0, k + 1, k, 1);          // bottom, seen from below
+    add(n, n + k, n + k + 1, 1);  // top
+  }
+  for (int k = 0; k < n; ++k) {
+    const Id a = k, b = (k + 1) % n;
+    add(a, b, b + n, 2);
+    add(a, b + n, a + n, 2);
+  }
+  s.tri_tag.assign(s.tri_ref.size(), 0);
+  s.vert_ref.assign(s.num_vertices(), 0);
+  s.vert_tag.assign(s.num_vertices(), 0);
+  return s;
+}
+
+TEST(BoundaryRecovery3d, PlanarPatchesTakeTheDelaunayFaces) {
+  // Fans of thin triangles on the caps: their edges are no Delaunay edges, and recovering them
+  // with Steiner points cascaded (the 64-gon: past the cap of 20 per vertex). The caps are
+  // planar patches on the hull: the tetrahedralisation's faces on them tile them.
+  const Mesh prism = fan_prism(64);
+  BoundaryRecoveryOptions keep;
+  keep.keep_triangles = true;
+  EXPECT_THROW(recover_volume(prism, keep), InputError);
+  const RecoveredVolume r = recover_volume(prism);
+  EXPECT_EQ(r.stats.steiner(), 0u);
+  // The two caps, and side rectangles whose diagonal the (cospherical) points do not take.
+  EXPECT_GE(r.stats.planar_patches, 2u);
+  EXPECT_GE(r.stats.patch_triangles, 2u * 62u);
+  EXPECT_GT(r.stats.missing_faces, 0u);  // counted on the input's triangles
+  expect_conforming_volume(prism, r, "64-gon prism");
+  // The new cap triangles keep the cap's ref; the sides' triangles are the input's.
+  std::size_t caps = 0, sides = 0;
+  for (const int ref : r.volume.tri_ref) (ref == 1 ? caps : sides) += 1;
+  EXPECT_EQ(caps, 2u * 62u);
+  EXPECT_EQ(sides, 2u * 64u);
+  // A cube's faces cut into squares (cocircular: about half the diagonals missing): no flip and
+  // no Steiner point needed.
+  const Mesh cube = test::cube_surface(8);
+  const RecoveredVolume c = recover_volume(cube);
+  EXPECT_EQ(c.stats.steiner(), 0u);
+  EXPECT_EQ(c.stats.flips, 0u);
+  EXPECT_GT(c.stats.planar_patches, 0u);
+  expect_conforming_volume(cube, c, "cube 8");
+  // Deterministic.
+  const RecoveredVolume again = recover_volume(prism);
+  EXPECT_EQ(again.volume.tets, r.volume.tets);
+  EXPECT_EQ(again.volume.triangles, r.volume.triangles);
 }
 
 TEST(BoundaryRecovery3d, CoordinateOutOfRangeIsAnInputError) {
