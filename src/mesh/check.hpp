@@ -24,8 +24,10 @@ enum class CheckCategory {
   kInconsistentOrientation,  // surface: two neighbours traverse their common edge the same way
   kOpenBoundary,             // volume: a boundary edge on one boundary face only; edges-only
                              // mesh: a vertex on one edge
-  kNonManifoldBoundary,      // volume: boundary edge on > 2 boundary faces; 2D (and edges-only
-                             // meshes): a boundary vertex on more than 2 boundary edges
+  kNonManifoldBoundary,      // volume: boundary edge on > 2 boundary faces; 2D: a boundary
+                             // vertex on an odd number of boundary edges (an even number above
+                             // 2 is loops touching at a vertex: valid); edges-only meshes: a
+                             // vertex on more than 2 edges
   kMissingBoundary,          // a boundary face (edge in 2D) of the elements not listed
   kOrphanEntity,             // a listed triangle (edge) that is no face (edge) of any element
   kDuplicateBoundaryEntity,  // a triangle or edge listed twice

@@ -89,7 +89,9 @@ std::vector<int> check_listed_edges(const Mesh& m, const Adjacency& adj, Collect
   return listed;
 }
 
-/// 2D: boundary edges form closed loops (two per boundary vertex) and are all listed.
+/// 2D: boundary edges form closed loops (an even count at each boundary vertex: two, or four and
+/// more where loops touch, as a hole touching the outer boundary at a vertex, which `riemesh mesh`
+/// and `adapt` make and keep) and are all listed.
 void check_planar_boundary(const Mesh& m, const Adjacency& adj, const Distinct& d, Collector& col) {
   const std::vector<int> listed = check_listed_edges(m, adj, col);
   std::vector<int> degree(m.num_vertices(), 0);
@@ -103,7 +105,7 @@ void check_planar_boundary(const Mesh& m, const Adjacency& adj, const Distinct& 
         col.add(CheckCategory::kMissingBoundary, EntityKind::kTriangle, d.id(e), fv, i);
     }
   for (std::size_t v = 0; v < degree.size(); ++v)
-    if (degree[v] != 0 && degree[v] != 2) {
+    if (degree[v] % 2 != 0) {
       const Id id = static_cast<Id>(v);
       col.add(CheckCategory::kNonManifoldBoundary, EntityKind::kVertex, id, {&id, 1});
     }
