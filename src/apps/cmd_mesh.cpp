@@ -100,6 +100,19 @@ void mesh_geometry(MeshArgs& a) {
   } catch (const InputError& e) {
     throw InputError(geo_message(a.input, e.what()));
   }
+  // The curves' nodes lie on the exact curves: the boundary is kept as meshed, and the sizes
+  // inside are those of its edges (hsiz would override the curvature's finer edges).
+  a.opt.keep_boundary = true;
+  a.opt.hsiz = 0.0;
+  a.opt.adapt.hausd = 0.0;
+  if (a.hgrad->count() == 0) a.opt.adapt.hgrad = 0.0;
+  Mesh2dResult r = mesh_domain(a, boundary.domain);
+  try {
+    assign_surface_refs(boundary, r.mesh);
+  } catch (const InputError& e) {
+    throw InputError(a.input + ": " + e.what());
+  }
+  // (Said once the surfaces are known to be consistent: a refused geometry gets one line.)
   if (!a.quiet) {
     for (const std::string& ignored : geometry.ignored)
       std::fprintf(stderr, "riemesh: note: %s: %s ignored\n", a.input.c_str(), ignored.c_str());
@@ -116,14 +129,6 @@ void mesh_geometry(MeshArgs& a) {
                  a.input.c_str(), boundary.curves, boundary.domain.num_edges(), sizes,
                  boundary.hausd);
   }
-  // The curves' nodes lie on the exact curves: the boundary is kept as meshed, and the sizes
-  // inside are those of its edges (hsiz would override the curvature's finer edges).
-  a.opt.keep_boundary = true;
-  a.opt.hsiz = 0.0;
-  a.opt.adapt.hausd = 0.0;
-  if (a.hgrad->count() == 0) a.opt.adapt.hgrad = 0.0;
-  Mesh2dResult r = mesh_domain(a, boundary.domain);
-  assign_surface_refs(boundary, r.mesh);
   keep_point_corners(boundary, r.mesh);
   finish(a, r);
 }

@@ -252,6 +252,7 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
   for (const GeoSurface& s : geometry.surfaces) {
     SurfacePolygons polygons;
     polygons.ref = b.surface_ref(s.id);
+    polygons.id = s.id;
     for (std::size_t k = 0; k < s.loops.size(); ++k) {
       const GeoLoop& loop = b.loop(s.loops[k]);
       const std::string where = line_of(loop.line) + "Curve Loop " + std::to_string(loop.id);
@@ -317,24 +318,48 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
 }
 
 void assign_surface_refs(const GeometryBoundary& boundary, Mesh& mesh) {
+  // The triangles of each region, then up to kSamples of them spread over it: a region is
+  // decided by the surfaces holding most of their centroids (one centroid near a curved
+  // boundary could fall outside the polygon of the curve's nodes).
+  constexpr std::size_t kSamples = 16;
+  std::map<int, std::vector<std::size_t>> of_region;
+  for (std::size_t t = 0; t < mesh.num_triangles(); ++t) of_region[mesh.tri_ref[t]].push_back(t);
   std::map<int, int> ref_of_region;
-  for (std::size_t t = 0; t < mesh.num_triangles(); ++t) {
-    const int region = mesh.tri_ref[t];
-    if (ref_of_region.count(region)) continue;
-    Vec2 c{};
-    for (int k = 0; k < 3; ++k)
-      for (int d = 0; d < 2; ++d)
-        c[d] += mesh.coords[2 * static_cast<std::size_t>(mesh.triangles[3 * t + k]) + d] / 3.0;
-    int ref = region;
-    for (const SurfacePolygons& s : boundary.surfaces) {
-      bool in = inside(s.loops.front(), c);
-      for (std::size_t h = 1; h < s.loops.size() && in; ++h) in = !inside(s.loops[h], c);
-      if (in) {
-        ref = s.ref;
-        break;
+  for (const auto& [region, tris] : of_region) {
+    std::map<std::vector<std::size_t>, std::size_t> votes;  // surfaces holding a centroid
+    Vec2 where{};
+    const std::size_t step = std::max<std::size_t>(1, tris.size() / kSamples);
+    for (std::size_t k = 0; k < tris.size(); k += step) {
+      const std::size_t t = tris[k];
+      Vec2 c{};
+      for (int i = 0; i < 3; ++i)
+        for (int d = 0; d < 2; ++d)
+          c[d] += mesh.coords[2 * static_cast<std::size_t>(mesh.triangles[3 * t + i]) + d] / 3.0;
+      if (k == 0) where = c;
+      std::vector<std::size_t> holding;
+      for (std::size_t s = 0; s < boundary.surfaces.size(); ++s) {
+        const SurfacePolygons& sp = boundary.surfaces[s];
+        bool in = inside(sp.loops.front(), c);
+        for (std::size_t h = 1; h < sp.loops.size() && in; ++h) in = !inside(sp.loops[h], c);
+        if (in) holding.push_back(s);
       }
+      ++votes[holding];
     }
-    ref_of_region[region] = ref;
+    const auto best =
+        std::max_element(votes.begin(), votes.end(),
+                         [](const auto& x, const auto& y) { return x.second < y.second; });
+    const std::vector<std::size_t>& holding = best->first;
+    char near[80];
+    std::snprintf(near, sizeof near, "near (%g, %g)", where[0], where[1]);
+    if (holding.empty())
+      throw InputError(std::string("the region ") + near +
+                       " lies in no Plane Surface: a hole inside a hole, or a hole loop that "
+                       "crosses or shares a curve with its outer loop");
+    if (holding.size() > 1)
+      throw InputError("Plane Surface " + std::to_string(boundary.surfaces[holding[0]].id) +
+                       " and Plane Surface " + std::to_string(boundary.surfaces[holding[1]].id) +
+                       " overlap " + near + " (a surface inside another must be one of its holes)");
+    ref_of_region[region] = boundary.surfaces[holding[0]].ref;
   }
   for (auto& r : mesh.tri_ref) r = ref_of_region.at(r);
 }

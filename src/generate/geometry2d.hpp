@@ -34,6 +34,7 @@ struct GeometryMeshOptions {
 /// A Plane Surface's meshed loops (outer first, counter-clockwise; holes clockwise) and its ref.
 struct SurfacePolygons {
   int ref = 0;
+  int id = 0;  ///< the Plane Surface's id (for messages)
   std::vector<std::vector<Vec2>> loops;
 };
 
@@ -53,7 +54,10 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
                                         const GeometryMeshOptions& options);
 
 /// Gives each triangle of a mesh of that domain (tri_ref = region 1, 2, ... from mesh_domain2d)
-/// the ref of the Plane Surface holding its centroid.
+/// the ref of the Plane Surface holding its region (outer loop in, holes out; decided on up to 16
+/// triangles' centroids per region, by majority). InputError when a region lies in no surface
+/// (a hole inside a hole, a hole loop crossing or sharing a curve with its outer loop) or in
+/// two (a surface inside another that does not list it as a hole, surfaces crossing at nodes).
 void assign_surface_refs(const GeometryBoundary& boundary, Mesh& mesh);
 
 /// Leaves the corner tag on the geometry's points only: mesh_domain2d, keeping the boundary, tags

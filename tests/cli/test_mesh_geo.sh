@@ -83,4 +83,36 @@ expect_error geo-tiny-lc mesh "$TMP/tiny.geo" -o "$TMP/o5.mesh"
 "$R" mesh "$TMP/tiny.geo" -o "$TMP/o5.mesh" 2>&1 | grep -Eq "tiny.geo:[0-9]+: Plane Surface [0-9]+: its sizes \(at most [0-9.e+-]+\) ask for more than 1e\+08 vertices" &&
   ok "geo-tiny-lc-names-surface" || ko "geo-tiny-lc-names-surface"
 expect_no_file geo-tiny-lc-no-file "$TMP/o5.mesh"
+
+# Regions that lie in no Plane Surface (a hole inside a hole of the same surface) or in two (a
+# surface inside another that does not list it as a hole) were meshed with a made-up ref or the
+# first surface's, silently.
+cat >"$TMP/nested.geo" <<'GEO'
+Point(1)={0,0,0,0.4}; Point(2)={4,0,0,0.4}; Point(3)={4,4,0,0.4}; Point(4)={0,4,0,0.4};
+Point(5)={1,1,0,0.4}; Point(6)={3,1,0,0.4}; Point(7)={3,3,0,0.4}; Point(8)={1,3,0,0.4};
+Point(9)={1.5,1.5,0,0.2}; Point(10)={2.5,1.5,0,0.2}; Point(11)={2.5,2.5,0,0.2}; Point(12)={1.5,2.5,0,0.2};
+Line(1)={1,2}; Line(2)={2,3}; Line(3)={3,4}; Line(4)={4,1};
+Line(5)={5,6}; Line(6)={6,7}; Line(7)={7,8}; Line(8)={8,5};
+Line(9)={9,10}; Line(10)={10,11}; Line(11)={11,12}; Line(12)={12,9};
+Curve Loop(1)={1:4}; Curve Loop(2)={5:8}; Curve Loop(3)={9:12};
+Plane Surface(1)={1,2,3};
+GEO
+expect_error geo-hole-in-hole mesh "$TMP/nested.geo" -o "$TMP/o6.mesh" -q
+"$R" mesh "$TMP/nested.geo" -o "$TMP/o6.mesh" -q 2>&1 | grep -q "nested.geo: the region near (.*) lies in no Plane Surface" &&
+  ok geo-hole-in-hole-named || ko geo-hole-in-hole-named
+cat >"$TMP/inside.geo" <<'GEO'
+Point(1)={0,0,0,0.4}; Point(2)={4,0,0,0.4}; Point(3)={4,4,0,0.4}; Point(4)={0,4,0,0.4};
+Point(5)={1,1,0,0.4}; Point(6)={2,1,0,0.4}; Point(7)={2,2,0,0.4}; Point(8)={1,2,0,0.4};
+Line(1)={1,2}; Line(2)={2,3}; Line(3)={3,4}; Line(4)={4,1};
+Line(5)={5,6}; Line(6)={6,7}; Line(7)={7,8}; Line(8)={8,5};
+Curve Loop(1)={1:4}; Curve Loop(2)={5:8}; Plane Surface(1)={1}; Plane Surface(2)={2};
+Physical Surface(1)={1}; Physical Surface(2)={2};
+GEO
+"$R" mesh "$TMP/inside.geo" -o "$TMP/o7.mesh" -q 2>&1 | grep -q "inside.geo: Plane Surface 1 and Plane Surface 2 overlap near" &&
+  ok geo-surface-inside-surface || ko geo-surface-inside-surface
+expect_no_file geo-overlap-no-file "$TMP/o7.mesh"
+# Listed as a hole of the first, the second is an island with its own ref.
+sed 's/Plane Surface(1)={1};/Plane Surface(1)={1,2};/' "$TMP/inside.geo" >"$TMP/island.geo"
+"$R" mesh "$TMP/island.geo" -o "$TMP/o8.mesh" -q && "$R" check "$TMP/o8.mesh" >/dev/null &&
+  ok geo-island || ko geo-island
 exit $fail
