@@ -147,8 +147,10 @@ std::array<Id, 4> sorted_key(std::span<const Id> v) {
   return key;
 }
 
-/// Reports duplicated elements; returns the ids of the first occurrences, in order, when there
-/// are duplicates (empty otherwise), so that topology is checked on distinct elements only.
+/// Reports duplicated elements; returns the ids of the elements topology is checked on, in
+/// order: the first occurrence of each, without the elements with a repeated vertex (reported
+/// by check_vertices; the adjacency cannot hold them: a tet "1 1 2 3" made the checker abort
+/// with a corrupted heap).
 std::vector<Id> find_duplicates(const Elements& el, Collector& col) {
   std::vector<std::pair<std::array<Id, 4>, Id>> keys(el.size());
   for (std::size_t e = 0; e < el.size(); ++e) keys[e] = {sorted_key(el.of(e)), static_cast<Id>(e)};
@@ -160,9 +162,13 @@ std::vector<Id> find_duplicates(const Elements& el, Collector& col) {
   for (std::size_t e = 0; e < el.size(); ++e) {
     if (dup[e]) col.add(CheckCategory::kDuplicateElement, el.kind, static_cast<Id>(e), el.of(e));
   }
-  if (!col.has(CheckCategory::kDuplicateElement)) return kept;
-  for (std::size_t e = 0; e < el.size(); ++e)
-    if (!dup[e]) kept.push_back(static_cast<Id>(e));
+  for (std::size_t e = 0; e < el.size(); ++e) {
+    const auto v = el.of(static_cast<Id>(e));
+    bool repeated = false;
+    for (std::size_t i = 0; i < v.size(); ++i)
+      for (std::size_t j = i + 1; j < v.size(); ++j) repeated = repeated || v[i] == v[j];
+    if (!dup[e] && !repeated) kept.push_back(static_cast<Id>(e));
+  }
   return kept;
 }
 

@@ -71,7 +71,7 @@ struct Elements {
 };
 
 /// Conformity, non-manifold faces, surface orientation and boundary consistency of the elements
-/// `el` restricted to `kept` (all of them when `kept` is empty).
+/// `el` restricted to `kept`.
 void check_topology(const Mesh& m, const Elements& el, const std::vector<Id>& kept, Collector& col);
 
 /// A mesh of edges only (e.g. the boundary of a 2D domain to be meshed): every vertex of an

@@ -18,12 +18,7 @@ struct Distinct {
 
 Distinct distinct_elements(const Elements& el, const std::vector<Id>& kept) {
   Distinct d;
-  if (kept.empty()) {
-    d.verts = *el.verts;
-    d.orig.resize(el.size());
-    for (std::size_t e = 0; e < el.size(); ++e) d.orig[e] = static_cast<Id>(e);
-    return d;
-  }
+  d.verts.reserve(kept.size() * static_cast<std::size_t>(el.k));
   for (Id e : kept) {
     const auto v = el.of(e);
     d.verts.insert(d.verts.end(), v.begin(), v.end());

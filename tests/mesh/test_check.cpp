@@ -207,6 +207,29 @@ TEST(Check, UnusedAndRepeatedVertices) {
   expect_only(check_mesh(e), C::kRepeatedVertex, 1);
 }
 
+TEST(Check, ElementsWithARepeatedVertexAreLeftOutOfTheTopology) {
+  // A single tet "1 1 2 3": the checker built the adjacency of it and aborted (heap corruption).
+  Mesh m;
+  m.dim = 3;
+  m.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  m.vert_ref.assign(4, 0);
+  m.vert_tag.assign(4, 0);
+  m.tets = {0, 0, 1, 2};
+  m.tet_ref = {1};
+  const CheckReport r = check_mesh(m);
+  EXPECT_EQ(r.count(C::kRepeatedVertex), 1u) << describe(r);
+  EXPECT_FALSE(r.valid());
+  // One in a cube's tets: reported, the others checked as usual.
+  Mesh cube = unit_cube(1);
+  cube.tets[1] = cube.tets[0];
+  const CheckReport c = check_mesh(cube);
+  EXPECT_EQ(c.count(C::kRepeatedVertex), 1u) << describe(c);
+  // The same for triangles.
+  Mesh tri = unit_square(2, 2);
+  tri.triangles[2] = tri.triangles[0];
+  EXPECT_EQ(check_mesh(tri).count(C::kRepeatedVertex), 1u) << describe(check_mesh(tri));
+}
+
 TEST(Check, PlanarDefects) {
   // A hole: an interior triangle of unit_square(3, 3) removed leaves 3 unlisted boundary edges.
   Mesh hole = unit_square(3, 3);
