@@ -71,8 +71,11 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
       constant_(same_metric<3>(background_.metrics())) {
   find_planes();
   std::vector<std::int32_t> curved;
+  // Curved patches are reconstructed from their outer faces; a ref only on interfaces between
+  // subdomains (whose vertices stay fixed) has none (it was taken for a curved patch with an
+  // empty surface: every gmsh multi-volume mesh was refused).
   for (const auto& [ref, pl] : planes_)
-    if (!pl.planar) curved.push_back(ref);
+    if (!pl.planar && pl.outer) curved.push_back(ref);
   if (!options.keep_surface && !curved.empty())
     boundary_ = std::make_unique<Boundary3d>(mesh_, std::move(curved), options),
     mesh_.surface = boundary_.get();
@@ -111,6 +114,7 @@ void Remesh3dContext::find_planes() {
     Plane& pl = it->second;
     if (fresh) pl.n = n, pl.d = dot(n, a);
     if (m.tadj[s] != kNoId || dot(n, pl.n) < 1.0 - 1e-9) pl.planar = false;
+    if (m.tadj[s] == kNoId) pl.outer = true;
     for (const Vec3* p : {&a, &b, &c})
       if (std::abs(dot(pl.n, *p) - pl.d) > tol) pl.planar = false;
   }

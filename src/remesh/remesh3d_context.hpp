@@ -68,6 +68,7 @@ class Remesh3dContext {
     Vec3 n{};
     double d = 0.0;
     bool planar = true;
+    bool outer = false;  ///< some face of the ref is on the outer boundary (not an interface)
   };
   void find_planes();
   void classify_vertices();

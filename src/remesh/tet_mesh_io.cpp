@@ -61,6 +61,11 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   for (std::size_t f = 0; f < mesh.num_triangles(); ++f)
     listed.emplace(sorted3(mesh.triangles[3 * f], mesh.triangles[3 * f + 1],
                            mesh.triangles[3 * f + 2]), f);
+  // A face between tets of different refs that is not listed is an interface all the same, kept
+  // as given (tets changed subdomain across it, the sphere of a gmsh sphere-in-box written with
+  // Physical Volumes only moved by 0.07): it gets the ref after the largest listed one.
+  std::int32_t interface_ref = 1;
+  for (const int r : mesh.tri_ref) interface_ref = std::max(interface_ref, r + 1);
   for (std::size_t t = 0; t < nt; ++t) {
     const Id* v = &mesh.tets[4 * t];
     // Rounded to zero or below, the exact orientation decides (a valid flat sliver of a
@@ -86,6 +91,8 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
         m.set_face(4 * t + i, m.ref_code(ref), ref);
       } else if (n == kNoId) {
         m.set_face(4 * t + i, m.ref_code(0), 0);  // an unlisted boundary face: ref 0
+      } else if (m.tref[t] != m.tref[static_cast<std::size_t>(n)]) {
+        m.set_face(4 * t + i, m.ref_code(interface_ref), interface_ref);
       }
     }
   }

@@ -327,3 +327,75 @@ TEST(Adapt3d, BadInputIsRefused) {
                  InputError);
   }
 }
+
+namespace {
+
+/// unit_cube(n) cut into two subdomains at x = 0.5 (tet refs 1 and 2), with the interface's
+/// triangles listed with ref 10 when `listed`.
+Mesh two_subdomains(int n, bool listed) {
+  Mesh m = unit_cube(n);
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    double x = 0.0;
+    for (int i = 0; i < 4; ++i) x += m.coords[3 * static_cast<std::size_t>(m.tets[4 * t + i])] / 4;
+    m.tet_ref[t] = x < 0.5 ? 1 : 2;
+  }
+  if (!listed) return m;
+  // The faces of the x < 0.5 tets whose three vertices are at x = 0.5.
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    if (m.tet_ref[t] != 1) continue;
+    const Id* v = &m.tets[4 * t];
+    for (int i = 0; i < 4; ++i) {
+      Id f[3];
+      int k = 0;
+      for (int j = 0; j < 4; ++j)
+        if (j != i) f[k++] = v[j];
+      bool mid = true;
+      for (const Id w : f) mid = mid && m.coords[3 * static_cast<std::size_t>(w)] == 0.5;
+      if (!mid) continue;
+      m.triangles.insert(m.triangles.end(), {f[0], f[1], f[2]});
+      m.tri_ref.push_back(10);
+      m.tri_tag.push_back(0);
+    }
+  }
+  return m;
+}
+
+std::map<int, double> volume_by_ref(const Mesh& m) {
+  std::map<int, double> out;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    Vec3 p[4];
+    for (int k = 0; k < 4; ++k) {
+      const Id v = m.tets[4 * t + k];
+      p[k] = Vec3{{m.coords[3 * v], m.coords[3 * v + 1], m.coords[3 * v + 2]}};
+    }
+    out[m.tet_ref[t]] += dot(cross(p[1] - p[0], p[2] - p[0]), p[3] - p[0]) / 6.0;
+  }
+  return out;
+}
+
+}  // namespace
+
+// Interfaces between subdomains are kept as given. Listed: their ref was taken for a curved
+// patch with no outer face, and every gmsh multi-volume mesh was refused ("surface analysis
+// needs a surface mesh"). Not listed: tets changed subdomain across them; now they are kept
+// and written with the ref after the largest listed one (7 here).
+TEST(Adapt3d, SubdomainInterfacesAreKept) {
+  for (const bool listed : {true, false}) {
+    const Mesh in = two_subdomains(4, listed);
+    const std::vector<SymMat3> metrics(in.num_vertices(), isotropic_metric<3>(0.12));
+    Adapt3dOptions o;
+    o.hgrad = 0.0;
+    const Adapt3dResult r = adapt3d(in, metrics, o);
+    const std::string name = listed ? "listed" : "unlisted";
+    EXPECT_TRUE(check_mesh(r.mesh).valid()) << name;
+    EXPECT_GT(r.mesh.num_tets(), 4 * in.num_tets()) << name;
+    const std::map<int, double> v = volume_by_ref(r.mesh);
+    ASSERT_EQ(v.size(), 2u) << name;
+    EXPECT_NEAR(v.at(1), 0.5, 1e-12) << name;
+    EXPECT_NEAR(v.at(2), 0.5, 1e-12) << name;
+    const std::map<int, double> a = area_by_ref(r.mesh);
+    const int interface = listed ? 10 : 7;
+    ASSERT_TRUE(a.count(interface)) << name;
+    EXPECT_NEAR(a.at(interface), 1.0, 1e-12) << name;
+  }
+}
