@@ -21,6 +21,44 @@ using surface_detail::State;
 /// computed for 3/4 of hausd: the sampled distance then stays within hausd.
 constexpr double kCentroidFactor = 0.75;
 
+/// The most vertices a remeshed surface may need: sizes asking for more (a mistyped --hsiz or
+/// --hausd) are refused before any point is added (a torus at --hausd 1e-9 reached 7 GB).
+constexpr double kMostSurfaceVertices = 5e7;
+
+/// Throws InputError when the unit mesh of the vertex metrics would need more than
+/// kMostSurfaceVertices vertices: (2/√3) Σ area × the mean of the vertices' sqrt(λ1 λ2), their
+/// two largest eigenvalues (an upper bound of the density in the tangent plane), naming the
+/// finest size and its place.
+void require_reachable_surface(const Mesh& in, const std::vector<SymMat3>& metrics) {
+  std::vector<double> density(metrics.size());
+  std::size_t finest = 0;
+  for (std::size_t v = 0; v < metrics.size(); ++v) {
+    const SymEigen<3> e = eigen(metrics[v]);
+    density[v] = std::sqrt(e.values[1] * e.values[2]);
+    if (!(density[v] <= density[finest])) finest = v;
+  }
+  double total = 0.0;
+  for (std::size_t t = 0; t < in.num_triangles(); ++t) {
+    const Id* v = &in.triangles[3 * t];
+    Vec3 p[3];
+    for (int k = 0; k < 3; ++k)
+      p[k] = Vec3{{in.coords[3 * static_cast<std::size_t>(v[k])],
+                   in.coords[3 * static_cast<std::size_t>(v[k]) + 1],
+                   in.coords[3 * static_cast<std::size_t>(v[k]) + 2]}};
+    const double area = 0.5 * norm(cross(p[1] - p[0], p[2] - p[0]));
+    total += area * (density[v[0]] + density[v[1]] + density[v[2]]) / 3.0;
+  }
+  const double vertices = 1.1547005383792515 * total;
+  if (vertices <= kMostSurfaceVertices) return;
+  char msg[256];
+  std::snprintf(msg, sizeof msg,
+                "the sizes ask for about %.3g vertices on the surface, more than %g; finest size "
+                "%.3g near (%g, %g, %g) (see --hsiz, --hausd and --hmin)",
+                vertices, kMostSurfaceVertices, 1.0 / std::sqrt(density[finest]),
+                in.coords[3 * finest], in.coords[3 * finest + 1], in.coords[3 * finest + 2]);
+  throw InputError(msg);
+}
+
 /// Quality below which the last passes split a triangle's longest edge (the floor).
 constexpr double kBadQuality = 0.3;
 
@@ -137,6 +175,7 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
         return vertex_metrics(mesh, adj, f, curvature, options);
       },
       0.5 * options.hausd);
+  require_reachable_surface(input, geo.metrics());
   State s = initial_state(input, geo);
   s.init_cover(geo);  // the state's triangles are the input's (compact keeps their order)
   s.geo = &geo;

@@ -75,5 +75,11 @@ expect_error adapt-surface-field-no-complexity adapt "$IN" -o "$TMP/x.mesh" --fi
 expect_error adapt-surface-field-and-metric adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/u.sol" --complexity 100 --metric "$TMP/size.sol"
 expect_error adapt-surface-field-recovery adapt "$IN" -o "$TMP/x.mesh" --field "$TMP/u.sol" --complexity 100 --recovery l2
 expect_error adapt-surface-optim adapt "$IN" -o "$TMP/x.mesh" --optim
+# Sizes far too small (a mistyped --hsiz or --hausd) are refused at once: they ran for minutes
+# and took gigabytes (a torus at --hausd 1e-9: 7 GB at 300 s).
+expect_error adapt-surface-hsiz-too-small adapt "$IN" -o "$TMP/x.mesh" --hsiz 1e-6
+"$R" adapt "$IN" -o "$TMP/x.mesh" --hsiz 1e-6 2>&1 | grep -q "the sizes ask for about .* vertices on the surface, more than 5e+07; finest size 1e-06" &&
+  ok adapt-surface-hsiz-too-small-named || ko adapt-surface-hsiz-too-small-named
+expect_error adapt-surface-hausd-too-small adapt "$IN" -o "$TMP/x.mesh" --hausd 1e-12 --hmin 1e-9
 expect_no_file adapt-surface-no-output "$TMP/x.mesh"
 exit $fail
