@@ -1,6 +1,7 @@
 #include "generate/domain2d.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -59,6 +60,34 @@ Constraints gather_constraints(const Mesh& in, const Triangulation2d& t) {
     c.both_ways.push_back(0);
   }
   return c;
+}
+
+/// Two distinct boundary points closer than 1e-12 of the domain's size (a curve touching
+/// itself: a figure-eight spline met itself 8.9e-16 away from its own node) would make
+/// zero-area triangles, and the boundary is no simple curve there: refused. Nearest neighbours
+/// are Delaunay neighbours, so the triangulation's edges find every such pair.
+void require_apart(const Triangulation2d& t) {
+  double lo[2] = {0, 0}, hi[2] = {0, 0};
+  for (std::size_t v = 0; v < t.num_points; ++v)
+    for (int k = 0; k < 2; ++k) {
+      const double x = t.xy[2 * v + k];
+      if (v == 0 || x < lo[k]) lo[k] = x;
+      if (v == 0 || x > hi[k]) hi[k] = x;
+    }
+  const double eps = 1e-12 * std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  for (std::size_t e = 0; e < t.tri.size(); ++e) {
+    const Id a = t.tri[e], b = t.tri[e - e % 3 + (e % 3 + 1) % 3];
+    if (a > b || t.is_super(a) || t.is_super(b)) continue;
+    const double d = std::hypot(t.xy[2 * a] - t.xy[2 * b], t.xy[2 * a + 1] - t.xy[2 * b + 1]);
+    if (d > 0.0 && d < eps) {
+      char msg[200];
+      std::snprintf(msg, sizeof msg,
+                    "boundary vertices %d and %d are %.2g apart, closer than 1e-12 of the domain's "
+                    "size: the boundary touches itself near ",
+                    a + 1, b + 1, d);
+      throw InputError(msg + place(&t.xy[2 * a]));
+    }
+  }
 }
 
 /// Every vertex of the boundary must continue into another edge: no open curve.
@@ -142,6 +171,7 @@ Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_point
   if (in.dim != 2) throw InputError("meshing a domain needs a planar boundary (Dimension 2)");
   if (in.edges.empty()) throw InputError("the domain has no boundary Edges");
   Triangulation2d t = delaunay2d(in.coords, order);
+  require_apart(t);
   const Constraints c = gather_constraints(in, t);
   require_closed(in, c);
   const std::vector<Id> on_constraint = recover_edges(t, c.ends);

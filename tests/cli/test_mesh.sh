@@ -80,4 +80,15 @@ expect_error mesh-hole-outside mesh "$TMP/hole.mesh" -o "$TMP/o3.mesh" --hole 9,
 expect_error mesh-bad-hole mesh "$TMP/hole.mesh" -o "$TMP/o4.mesh" --hole 1
 expect_error mesh-no-output mesh "$TMP/hole.mesh"
 expect_error mesh-missing mesh "$TMP/none.mesh" -o "$TMP/o5.mesh"
+# Two squares whose corners are 1e-13 apart: the boundary touches itself there (a figure-eight
+# spline made zero-area triangles and exit 0); refused, naming the vertices and the place.
+{
+  printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n8\n'
+  printf '0 0 0\n1 0 0\n1 1 0\n0 1 0\n1.0000000000001 1 0\n2 1 0\n2 2 0\n1 2 0\n'
+  printf 'Edges\n8\n1 2 1\n2 3 1\n3 4 1\n4 1 1\n5 6 1\n6 7 1\n7 8 1\n8 5 1\nEnd\n'
+} >"$TMP/touch.mesh"
+expect_error mesh-boundary-touches-itself mesh "$TMP/touch.mesh" -o "$TMP/touch_out.mesh"
+"$R" mesh "$TMP/touch.mesh" -o "$TMP/touch_out.mesh" 2>&1 | grep -q "boundary vertices 3 and 5 are 1e-13 apart.*touches itself near (1, 1)" &&
+  ok mesh-boundary-touches-itself-named || ko mesh-boundary-touches-itself-named
+expect_no_file mesh-boundary-touches-itself-no-file "$TMP/touch_out.mesh"
 exit $fail
