@@ -41,6 +41,7 @@ struct AdaptArgs {
   double approach = Adapt3dOptions{}.approach_growth;
   int verbosity = 0;
   Adapt2dOptions opt;
+  const CLI::Option* hsiz_given = nullptr;
 };
 
 /// The implied metric of the mesh at the vertices of its triangles; vertices in no triangle
@@ -117,6 +118,10 @@ std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
 
 /// The surface branch: geometric sizes from --hausd, capped by --hsiz (issue #6).
 void run_surface(const AdaptArgs& a, const Mesh& mesh) {
+  if (a.nosurf)
+    throw InputError(a.input +
+                     ": --nosurf applies to tetrahedral volumes (it keeps their "
+                     "boundary surface); this is a surface");
   if (a.optim)
     throw InputError(a.input + ": surface remeshing takes --hausd, --metric, --field and "
                      "--hsiz/--hmin/--hmax (no --optim)");
@@ -228,7 +233,8 @@ void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
   // 1 / hsiz² must be finite too: --hsiz 1e-300 failed as "metric has an infinite coefficient".
   if (!(a.hsiz >= 0.0) || !std::isfinite(a.hsiz) ||
-      (a.hsiz > 0.0 && !std::isfinite(1.0 / (a.hsiz * a.hsiz))))
+      (a.hsiz > 0.0 && !std::isfinite(1.0 / (a.hsiz * a.hsiz))) ||
+      (a.hsiz == 0.0 && a.hsiz_given && a.hsiz_given->count() > 0))
     throw InputError("--hsiz must be a size > 0 (and over 1e-154)");
   Mesh mesh = read_mesh(a.input);
   const bool surface = mesh.kind() == MeshKind::kSurface;
@@ -309,9 +315,10 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--aniso-max", a->aniso_max, "Largest anisotropy ratio with --field");
   cmd->add_option("--fields", a->fields, "Vertex fields (.sol) to transfer to the output (P1)");
   cmd->add_option("--out-fields", a->out_fields, "Where to write the transferred fields (.sol)");
-  cmd->add_option("--hsiz", a->hsiz,
-                  "Uniform size instead of a metric (2D, far finer than the mesh: the domain is "
-                  "meshed afresh from its boundary with the size's unit lattice)");
+  a->hsiz_given = cmd->add_option(
+      "--hsiz", a->hsiz,
+      "Uniform size instead of a metric (2D, far finer than the mesh: the domain is "
+      "meshed afresh from its boundary with the size's unit lattice)");
   cmd->add_option("--hmin", a->opt.hmin, "Smallest size")->capture_default_str();
   cmd->add_option("--hmax", a->opt.hmax, "Largest size");
   cmd->add_option("--hgrad", a->opt.hgrad, "Gradation: growth ratio between neighbours (0: off)")

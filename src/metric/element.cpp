@@ -17,8 +17,8 @@ void check_mesh_arrays(std::span<const double> coords, std::span<const int32_t> 
   const auto nv = static_cast<int64_t>(coords.size() / D);
   for (std::size_t k = 0; k < simplices.size(); ++k)
     if (simplices[k] < 0 || simplices[k] >= nv)
-      throw InputError("implied_metric: simplex " + std::to_string(k / (D + 1)) +
-                       " has vertex id " + std::to_string(simplices[k]) + " out of range");
+      throw InputError("element " + std::to_string(k / (D + 1) + 1) + " has vertex id " +
+                       std::to_string(simplices[k] + 1) + " out of range");
 }
 
 }  // namespace
@@ -42,7 +42,8 @@ std::vector<SymMat<D>> implied_log_metric(std::span<const double> coords,
     try {
       mk = element_metric(p);
     } catch (const InputError& e) {
-      throw InputError("implied_metric: simplex " + std::to_string(s) + ": " + e.what());
+      throw InputError("element " + std::to_string(s + 1) + " has no implied metric: " + e.what() +
+                       " (zero measure)");
     }
     const double w = std::abs(simplex_measure(p));
     const SymMat<D> wlog = w * log_spd(mk);
@@ -59,7 +60,7 @@ std::vector<SymMat<D>> implied_log_metric(std::span<const double> coords,
     } else if (in_simplex) {
       (*in_simplex)[v] = false;
     } else {
-      throw InputError("implied_metric: vertex " + std::to_string(v) + " is in no simplex");
+      throw InputError("vertex " + std::to_string(v + 1) + " is in no element: no implied metric");
     }
   }
   return log_sum;

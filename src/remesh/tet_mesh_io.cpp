@@ -64,6 +64,7 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   // A face between tets of different refs that is not listed is an interface all the same, kept
   // as given (tets changed subdomain across it, the sphere of a gmsh sphere-in-box written with
   // Physical Volumes only moved by 0.07): it gets the ref after the largest listed one.
+  std::vector<std::uint8_t> found(mesh.num_triangles(), 0);
   std::int32_t interface_ref = 1;
   for (const int r : mesh.tri_ref) interface_ref = std::max(interface_ref, r + 1);
   for (std::size_t t = 0; t < nt; ++t) {
@@ -87,6 +88,7 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
       const auto it = on_listed[a] && on_listed[b] && on_listed[c] ? listed.find(sorted3(a, b, c))
                                                                     : listed.end();
       if (it != listed.end()) {
+        found[it->second] = 1;
         const std::int32_t ref = mesh.tri_ref.empty() ? 0 : mesh.tri_ref[it->second];
         m.set_face(4 * t + i, m.ref_code(ref), ref);
       } else if (n == kNoId) {
@@ -96,6 +98,15 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
       }
     }
   }
+  // A listed triangle that is no tet face (a stray or misnumbered one) was dropped silently, its
+  // ref with it. (A triangle listed twice is found through its first copy.)
+  std::size_t stray = mesh.num_triangles();
+  for (const auto& [key, f] : listed)
+    if (!found[f]) stray = std::min(stray, f);
+  if (stray < mesh.num_triangles())
+    throw InputError("triangle " + std::to_string(stray + 1) + " (ref " +
+                     std::to_string(mesh.tri_ref.empty() ? 0 : mesh.tri_ref[stray]) +
+                     ") is no face of any tetrahedron");
   for (std::size_t v = 0; v < nv; ++v)
     if (m.vtet[v] == kNoId) m.free_verts.push_back(static_cast<Id>(v));  // in no tet: dropped
   std::reverse(m.free_verts.begin(), m.free_verts.end());

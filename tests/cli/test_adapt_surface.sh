@@ -81,5 +81,10 @@ expect_error adapt-surface-hsiz-too-small adapt "$IN" -o "$TMP/x.mesh" --hsiz 1e
 "$R" adapt "$IN" -o "$TMP/x.mesh" --hsiz 1e-6 2>&1 | grep -q "the sizes ask for about .* vertices on the surface, more than 5e+07; finest size 1e-06" &&
   ok adapt-surface-hsiz-too-small-named || ko adapt-surface-hsiz-too-small-named
 expect_error adapt-surface-hausd-too-small adapt "$IN" -o "$TMP/x.mesh" --hausd 1e-12 --hmin 1e-9
+# --nosurf on a surface was ignored (the surface remeshed); --hsiz 0 read as "no size field".
+expect_error adapt-surface-nosurf adapt "$IN" -o "$TMP/x.mesh" --hsiz 0.2 --nosurf
+expect_error adapt-hsiz-zero adapt "$IN" -o "$TMP/x.mesh" --hsiz 0
+"$R" adapt "$IN" -o "$TMP/x.mesh" --hsiz 0 2>&1 | grep -q -- "--hsiz must be a size > 0" &&
+  ok adapt-hsiz-zero-named || ko adapt-hsiz-zero-named
 expect_no_file adapt-surface-no-output "$TMP/x.mesh"
 exit $fail

@@ -313,6 +313,19 @@ TEST(Adapt3d, BadInputIsRefused) {
   metrics.assign(cube.num_vertices(), SymMat3::identity());
   metrics[5] = SymMat3::diagonal(1e204);
   EXPECT_THROW(adapt3d(cube, metrics, {}), InputError);
+  // A listed triangle that is no tet face was dropped silently, its ref with it.
+  Mesh stray = cube;
+  stray.triangles.insert(stray.triangles.end(), {0, 4, 26});  // across the cube: no tet face
+  stray.tri_ref.push_back(7);
+  stray.tri_tag.push_back(0);
+  try {
+    adapt3d(stray, std::vector<SymMat3>(cube.num_vertices(), SymMat3::identity()), {});
+    ADD_FAILURE() << "a stray triangle was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("(ref 7) is no face of any tetrahedron"),
+              std::string::npos)
+        << e.what();
+  }
   const Mesh square = unit_square(2, 2);
   EXPECT_THROW(adapt3d(square, std::vector<SymMat3>(square.num_vertices(), SymMat3::identity()), {}),
                InputError);
