@@ -53,6 +53,16 @@ Constraints gather_constraints(const Mesh& in, const Triangulation2d& t) {
     const auto [it, added] = seen.emplace(edge_key(a, b), static_cast<Id>(c.input_edge.size()));
     if (!added) {
       if (c.ends[2 * it->second] != a) c.both_ways[it->second] = 1;
+      // One edge keeps one ref: a second ref was dropped silently.
+      const auto first = static_cast<std::size_t>(c.input_edge[it->second]);
+      if (!in.edge_ref.empty() && in.edge_ref[first] != in.edge_ref[e]) {
+        char msg[200];
+        std::snprintf(msg, sizeof msg,
+                      "boundary edges %zu and %zu join the same vertices with different refs (%d "
+                      "and %d): an edge has one ref",
+                      first + 1, e + 1, in.edge_ref[first], in.edge_ref[e]);
+        throw InputError(msg);
+      }
       continue;
     }
     c.ends.insert(c.ends.end(), {a, b});
@@ -169,7 +179,12 @@ std::vector<std::uint8_t> holes_from_points(const Triangulation2d& t, const std:
 Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_points,
                               InsertionOrder order) {
   if (in.dim != 2) throw InputError("meshing a domain needs a planar boundary (Dimension 2)");
-  if (in.edges.empty()) throw InputError("the domain has no boundary Edges");
+  if (in.edges.empty())
+    throw InputError(in.triangles.empty()
+                         ? "the domain has no boundary Edges"
+                         : "the domain has no boundary Edges: a planar mesh of triangles (or a "
+                           "surface whose z are all 0) is adapted with riemesh adapt; riemesh mesh "
+                           "meshes a domain from its Edges, or the volume inside a closed surface");
   Triangulation2d t = delaunay2d(in.coords, order);
   require_apart(t);
   const Constraints c = gather_constraints(in, t);

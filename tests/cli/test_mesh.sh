@@ -91,4 +91,18 @@ expect_error mesh-boundary-touches-itself mesh "$TMP/touch.mesh" -o "$TMP/touch_
 "$R" mesh "$TMP/touch.mesh" -o "$TMP/touch_out.mesh" 2>&1 | grep -q "boundary vertices 3 and 5 are 1e-13 apart.*touches itself near (1, 1)" &&
   ok mesh-boundary-touches-itself-named || ko mesh-boundary-touches-itself-named
 expect_no_file mesh-boundary-touches-itself-no-file "$TMP/touch_out.mesh"
+# One edge listed twice with different refs: one ref was dropped silently; refused.
+{
+  printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n'
+  printf 'Edges\n5\n1 2 1\n2 3 1\n3 4 1\n4 1 1\n1 2 5\nEnd\n'
+} >"$TMP/dupref.mesh"
+expect_error mesh-edge-two-refs mesh "$TMP/dupref.mesh" -o "$TMP/dupref_out.mesh"
+"$R" mesh "$TMP/dupref.mesh" -o "$TMP/dupref_out.mesh" 2>&1 | grep -q "boundary edges 1 and 5 join the same vertices with different refs (1 and 5)" &&
+  ok mesh-edge-two-refs-named || ko mesh-edge-two-refs-named
+# The same square kept with --hsiz far smaller than its edges: a note on the slivers along them.
+sed '$d' "$TMP/dupref.mesh" | sed 's/^Edges$/Edges/; s/^5$/4/; /^1 2 5$/d' >"$TMP/sq.mesh"
+echo End >>"$TMP/sq.mesh"
+"$R" mesh "$TMP/sq.mesh" -o "$TMP/sq_out.mesh" --hsiz 0.05 --keep-boundary 2>&1 >/dev/null |
+  grep -q "note: .*sq.mesh: the boundary edges are 1 long on average, 20 times --hsiz; kept as given" &&
+  ok mesh-keep-boundary-coarse-noted || ko mesh-keep-boundary-coarse-noted
 exit $fail
