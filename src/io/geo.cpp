@@ -111,6 +111,10 @@ void Parser::statement() {
   if (is_option(word)) return option(head);
   const bool dotted = word.find('.') != std::string_view::npos;
   if (!dotted && in_.peek().is('=') && !geo_detail::is_reserved(word)) return assignment(head);
+  // 'Point{5} In Surface{1};', 'Curve{2} In Surface{1};' (embedded entities): not read.
+  if ((word == "Point" || word == "Line" || word == "Curve") && in_.peek().is('{'))
+    fail(head.line, "'" + std::string(word) +
+                        "{...} In Surface' (embedded entities) is not supported " + kSupported);
   if (word == "Point") return point(head);
   if (word == "Circle") return curve(head, GeoCurveKind::kCircle);
   if (word == "Spline") return curve(head, GeoCurveKind::kSpline);

@@ -422,6 +422,8 @@ TEST(Geo, Errors) {
        "line 1: expected ';' at the end of the option Mesh.Algorithm, found "
        "the end of the file"},
       // Unsupported statements.
+      {p + "Point{3} In Surface{1};",
+       "line 3: 'Point{...} In Surface' (embedded entities)" + std::string(kSupportedList)},
       {"Point(1) = {0, 0, 0};\nExtrude {0, 0, 1} { Point{1}; }",
        "line 2: 'Extrude'" + std::string(kSupportedList)},
       {sq + "\nTransfinite Line{1} = 10;",
