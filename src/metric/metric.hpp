@@ -3,6 +3,7 @@
 // sizes and directions. BOOK.md §1.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -98,6 +99,10 @@ inline void require_metric(const SymMat<D>& m, const std::string& what) {
   if (!is_spd(m)) throw InputError(what + ": metric is not positive definite");
   if (!std::isfinite(det(m)))
     throw InputError(what + ": metric too large (its determinant overflows)");
+  // Sizes beyond ~1e150 (2D; ~1e100 in 3D): the determinant underflows, and the background mesh
+  // then took the tensor for not positive definite, blaming the mesh.
+  if (!(det(m) >= std::numeric_limits<double>::min()))
+    throw InputError(what + ": metric too small (its determinant underflows)");
 }
 
 /// The metric every entry of `metrics` is, when they are all the same (exactly: a constant

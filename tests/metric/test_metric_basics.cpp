@@ -60,6 +60,15 @@ TEST(MetricBasics, RequireMetricRejectsBadInput) {
   EXPECT_THROW(require_metric(SymMat2{{1e308, 0.0, 1e308}}, "m"), InputError);
   EXPECT_THROW(require_metric(SymMat3::diagonal(1e110), "m"), InputError);
   EXPECT_NO_THROW(require_metric(SymMat3::diagonal(1e100), "m"));  // det 1e300
+  // Whose determinant underflows (sizes 1e150): the background mesh took it for not SPD and
+  // blamed the mesh file.
+  try {
+    require_metric(SymMat2{{1e-300, 0.0, 1e-300}}, "m");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "m: metric too small (its determinant underflows)");
+  }
+  EXPECT_NO_THROW(require_metric(SymMat3::diagonal(1e-100), "m"));  // det 1e-300
   try {
     require_metric(SymMat2{{-1.0, 0.0, 1.0}}, "vertex 7");
     FAIL();
