@@ -202,8 +202,16 @@ void Mesh2dOptions::validate() const {
   adapt.validate();
 }
 
-Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
-                           const PassCallback& on_pass) {
+namespace {
+
+/// The boundary cut to the sizes crosses itself (mesh_domain2d_impl): the caller retries with
+/// straight edges.
+struct CutBoundaryCrosses : InputError {
+  using InputError::InputError;
+};
+
+Mesh2dResult mesh_domain2d_impl(const Mesh& boundary, const Mesh2dOptions& options,
+                                const PassCallback& on_pass) {
   options.validate();
   if (!options.metric.empty() && options.metric.size() != boundary.num_vertices()) {
     std::string msg = "the metric has ";
@@ -243,7 +251,16 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   const Mesh cut = !options.keep_boundary && !given.empty()
                        ? split_boundary(boundary, given, options.adapt)
                        : Mesh{};
-  if (!cut.edges.empty()) domain = triangulate_domain2d(cut, options.holes);
+  if (!cut.edges.empty()) {
+    // The boundary as given passed the checks above: a defect now is the reconstruction's (a
+    // smooth curve through a vertex that turns less than --angle, bulging across a sharp spike
+    // next to it), in edges of the cut boundary the user never saw.
+    try {
+      domain = triangulate_domain2d(cut, options.holes);
+    } catch (const InputError& e) {
+      throw CutBoundaryCrosses(e.what());
+    }
+  }
   if (constant) {  // (the cut's metrics too: interpolating equal metrics is exact)
     const SymMat2 m = given.front();
     domain = with_lattice(cut.edges.empty() ? boundary : cut, std::move(domain), m, options.holes,
@@ -276,6 +293,28 @@ Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
   out.regions = domain.regions;
   out.holes = domain.holes;
   return out;
+}
+
+}  // namespace
+
+Mesh2dResult mesh_domain2d(const Mesh& boundary, const Mesh2dOptions& options,
+                           const PassCallback& on_pass) {
+  try {
+    return mesh_domain2d_impl(boundary, options, on_pass);
+  } catch (const CutBoundaryCrosses& e) {
+    // The smooth reconstruction through a vertex turning less than the corner angle bulged
+    // across a sharp spike next to it (a star polygon at --hsiz 0.05 was refused, naming edges
+    // of the cut boundary the user never saw): every turning vertex a corner, the boundary is
+    // cut along its straight edges, which cannot cross (the boundary as given passed).
+    Mesh2dOptions straight = options;
+    straight.adapt.angle_deg = 0.0;
+    straight.adapt.detect_angles = true;
+    Mesh2dResult out = mesh_domain2d_impl(boundary, straight, on_pass);
+    out.report.notes.push_back(
+        std::string("the boundary's smooth reconstruction crossed itself (") + e.what() +
+        "): it is kept straight between its vertices instead, every vertex a corner");
+    return out;
+  }
 }
 
 }  // namespace riemesh
