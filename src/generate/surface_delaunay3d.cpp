@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/predicates.hpp"
 
 namespace riemesh {
 
@@ -91,6 +92,24 @@ void require_closed_surface(const Mesh& s) {
     if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
       throw_defect("triangles with a repeated vertex", 1, "triangle " + std::to_string(t + 1));
   }
+  // Zero-area triangles (three collinear vertices, decided exactly: no plane through them holds
+  // the three points a + e_i): named here, not as a self-intersection with their neighbours.
+  std::size_t flat = 0, first_flat = 0;
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    const double* p[3];
+    for (int i = 0; i < 3; ++i)
+      p[i] = &s.coords[3 * static_cast<std::size_t>(s.triangles[3 * t + i])];
+    bool collinear = true;
+    for (int i = 0; i < 3 && collinear; ++i) {
+      double q[3] = {p[0][0], p[0][1], p[0][2]};
+      q[i] = p[0][i] + 1.0 != p[0][i] ? p[0][i] + 1.0 : 2.0 * p[0][i];
+      collinear = orient3d(p[0], p[1], p[2], q) == 0.0;
+    }
+    if (collinear && flat++ == 0) first_flat = t;
+  }
+  if (flat)
+    throw_defect("triangles of zero area (collinear vertices)", flat,
+                 "triangle " + std::to_string(first_flat + 1));
   const std::vector<DirectedEdge> e = directed_edges(s);
   std::size_t open = 0, non_manifold = 0, flipped = 0;
   std::string first_open, first_non_manifold, first_flipped;

@@ -17,7 +17,8 @@ namespace riemesh {
 /// a volume: no triangles, a triangle with a repeated vertex, an edge on more than two triangles
 /// (non-manifold), an edge on one triangle only (a hole), two triangles traversing their
 /// common edge the same way (inconsistent orientation), a vertex where separate sheets of the
-/// surface touch (non-manifold vertex), two vertices at the same place, a
+/// surface touch (non-manifold vertex), a triangle of zero area, two vertices at the same
+/// place, a
 /// coordinate over 1e150 in magnitude or not finite (squared lengths would overflow). Vertex
 /// numbers in messages are 1-based, as in the files. Self-intersections are not detected.
 void require_closed_surface(const Mesh& surface);

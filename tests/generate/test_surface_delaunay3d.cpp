@@ -133,6 +133,20 @@ TEST(SurfaceDelaunay3d, DefectsAreNamed) {
   EXPECT_NE(message(fin).find("non-manifold edges"), std::string::npos);
   Mesh none;
   EXPECT_NE(message(none).find("no triangles"), std::string::npos);
+  // A tetrahedron whose bottom face is split at the middle of an edge, that edge's other side
+  // covered by a zero-area triangle (1, 5, 2): it was named as a self-intersection of two other
+  // triangles.
+  Mesh flat;
+  flat.dim = 3;
+  flat.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5, 0, 0};
+  flat.triangles = {0, 2, 4, 4, 2, 1, 1, 3, 0, 0, 4, 1, 0, 3, 2, 1, 2, 3};
+  flat.tri_ref.assign(6, 1);
+  flat.tri_tag.assign(6, 0);
+  flat.vert_ref.assign(5, 0);
+  flat.vert_tag.assign(5, 0);
+  EXPECT_NE(message(flat).find("1 triangles of zero area (collinear vertices) (first: triangle 4)"),
+            std::string::npos)
+      << message(flat);
 }
 
 TEST(SurfaceDelaunay3d, PinchedVerticesAreNamed) {
