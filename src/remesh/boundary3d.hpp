@@ -53,9 +53,11 @@ class Boundary3d {
   /// p placed on the reconstruction (kSurface) or on the feature lines (kCurve).
   Vec3 place(VertexKind kind, const Vec3& p) const;
   /// The Hausdorff and normal checks of an operation replacing the boundary triangles old_t
-  /// (all of them) by new_t, kept[i] (an old triangle) becoming new_t[i].
+  /// (all of them) by new_t, kept[i] (an old triangle) becoming new_t[i]; triangle qualities
+  /// in `metric` (the operation's: a unit mesh of an anisotropic metric oblique to the surface
+  /// has triangles that are poor in Euclidean terms).
   bool accepts(const std::vector<Tri3>& old_t, const std::vector<Tri3>& kept,
-               const std::vector<Tri3>& new_t) const;
+               const std::vector<Tri3>& new_t, const SymMat3& metric) const;
 
  private:
   /// The reconstruction of Adapt3dOptions::geometry's triangles with curved refs.
