@@ -675,27 +675,9 @@ std::size_t Recovery::flip_cocircular_edges(
 RecoveredVolume Recovery::run() {
   for (;;) {
     const Tetrahedralization tz = kernel_->result();
-    std::vector<std::uint64_t> tet_edges;
-    std::vector<Tri> tet_faces;
-    tet_edges.reserve(6 * tz.num_tets());
-    tet_faces.reserve(4 * tz.num_tets());
-    for (std::size_t t = 0; t < tz.num_tets(); ++t) {
-      const Id* v = &tz.tets[4 * t];
-      for (int i = 0; i < 4; ++i) {
-        for (int j = i + 1; j < 4; ++j) tet_edges.push_back(pair_key(v[i], v[j]));
-        tet_faces.push_back(sorted3({v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]}));
-      }
-    }
-    std::sort(tet_edges.begin(), tet_edges.end());
-    tet_edges.erase(std::unique(tet_edges.begin(), tet_edges.end()), tet_edges.end());
-    std::sort(tet_faces.begin(), tet_faces.end());
-    tet_faces.erase(std::unique(tet_faces.begin(), tet_faces.end()), tet_faces.end());
-    const auto has_edge = [&](Id a, Id b) {
-      return std::binary_search(tet_edges.begin(), tet_edges.end(), pair_key(a, b));
-    };
-    const auto has_face = [&](const Tri& s) {
-      return std::binary_search(tet_faces.begin(), tet_faces.end(), sorted3(s));
-    };
+    const TetSkeleton skeleton(tz);
+    const auto has_edge = [&](Id a, Id b) { return skeleton.has_edge(a, b); };
+    const auto has_face = [&](const Tri& s) { return skeleton.has_face(s); };
 
     std::vector<std::pair<std::size_t, std::size_t>> missing_segments;
     for (std::size_t e = 0; e < edges_.size(); ++e)

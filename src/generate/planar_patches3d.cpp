@@ -29,33 +29,6 @@ Tri sorted3(Tri t) {
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
-/// The edges and faces of a tetrahedralisation, sorted, for membership tests.
-struct TetSkeleton {
-  std::vector<std::uint64_t> edges;
-  std::vector<Tri> faces;
-  explicit TetSkeleton(const Tetrahedralization& tz) {
-    edges.reserve(6 * tz.num_tets());
-    faces.reserve(4 * tz.num_tets());
-    for (std::size_t t = 0; t < tz.num_tets(); ++t) {
-      const Id* v = &tz.tets[4 * t];
-      for (int i = 0; i < 4; ++i) {
-        for (int j = i + 1; j < 4; ++j) edges.push_back(edge_key(v[i], v[j]));
-        faces.push_back(sorted3({v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]}));
-      }
-    }
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-  }
-  bool has_edge(Id a, Id b) const {
-    return std::binary_search(edges.begin(), edges.end(), edge_key(a, b));
-  }
-  bool has_face(const Tri& t) const {
-    return std::binary_search(faces.begin(), faces.end(), sorted3(t));
-  }
-};
-
 /// One patch's attempt: the faces of tz tiling it, oriented like it, or nothing.
 class PatchTiler {
  public:
@@ -228,6 +201,30 @@ class PatchTiler {
 };
 
 }  // namespace
+
+TetSkeleton::TetSkeleton(const Tetrahedralization& tz) {
+  edges.reserve(6 * tz.num_tets());
+  faces.reserve(4 * tz.num_tets());
+  for (std::size_t t = 0; t < tz.num_tets(); ++t) {
+    const Id* v = &tz.tets[4 * t];
+    for (int i = 0; i < 4; ++i) {
+      for (int j = i + 1; j < 4; ++j) edges.push_back(edge_key(v[i], v[j]));
+      faces.push_back(sorted3({v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]}));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+}
+
+bool TetSkeleton::has_edge(Id a, Id b) const {
+  return std::binary_search(edges.begin(), edges.end(), edge_key(a, b));
+}
+
+bool TetSkeleton::has_face(const std::array<Id, 3>& t) const {
+  return std::binary_search(faces.begin(), faces.end(), sorted3(t));
+}
 
 PatchTriangulation retriangulate_planar_patches(std::span<const Id> triangles,
                                                 std::span<const int> refs,

@@ -9,7 +9,9 @@
 // faces on its plane tile it (a patch on the convex hull always; inside, when no tet edge
 // pierces it), those faces replace its triangles. Vertices, outline, orientation and refs are
 // kept; only the patch's inner edges change.
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -17,6 +19,16 @@
 #include "mesh/mesh.hpp"
 
 namespace riemesh {
+
+/// The edges and faces of a tetrahedralisation, sorted, for membership tests (which surface
+/// edges and triangles it holds).
+struct TetSkeleton {
+  std::vector<std::uint64_t> edges;      // (lo << 32) | hi
+  std::vector<std::array<Id, 3>> faces;  // sorted vertex ids
+  explicit TetSkeleton(const Tetrahedralization& tz);
+  bool has_edge(Id a, Id b) const;
+  bool has_face(const std::array<Id, 3>& t) const;
+};
 
 struct PatchTriangulation {
   std::vector<Id> triangles;  ///< 3 point ids each, oriented as the input's
