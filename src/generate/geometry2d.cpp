@@ -301,7 +301,12 @@ GeometryBoundary mesh_geometry_boundary(const Geometry2d& geometry,
         std::reverse(refs.begin(), refs.end());
         std::reverse(xy.begin() + 1, xy.end());
       }
-      if (k > 0 && !inside(polygons.loops.front(), xy.front()))
+      // Outside when most of its nodes are (one node tested, a hole touching its outer loop at
+      // that node was called outside; crossing loops are caught by the domain's checks).
+      std::size_t out_nodes = 0;
+      if (k > 0)
+        for (const Vec2& p : xy) out_nodes += !inside(polygons.loops.front(), p);
+      if (k > 0 && 2 * out_nodes > xy.size())
         throw InputError(line_of(s.line) + "Plane Surface " + std::to_string(s.id) + ": hole " +
                          "Curve Loop " + std::to_string(loop.id) +
                          " lies outside its outer Curve Loop " + std::to_string(s.loops[0]));

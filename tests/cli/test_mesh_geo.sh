@@ -111,6 +111,17 @@ GEO
 "$R" mesh "$TMP/inside.geo" -o "$TMP/o7.mesh" -q 2>&1 | grep -q "inside.geo: Plane Surface 1 and Plane Surface 2 overlap near" &&
   ok geo-surface-inside-surface || ko geo-surface-inside-surface
 expect_no_file geo-overlap-no-file "$TMP/o7.mesh"
+# A hole touching its outer loop at one point (its first node): it was called outside.
+cat >"$TMP/touch.geo" <<'GEO'
+Point(1)={0,0,0,0.1}; Point(2)={1,0,0,0.1}; Point(3)={1,1,0,0.1}; Point(4)={0,1,0,0.1};
+Point(5)={0.5,0.3,0,0.1}; Point(6)={0.8,0.5,0,0.1};
+Line(1)={1,2}; Line(2)={2,3}; Line(3)={3,4}; Line(4)={4,1};
+Line(5)={2,5}; Line(6)={5,6}; Line(7)={6,2};
+Curve Loop(1)={1,2,3,4}; Curve Loop(2)={5,6,7}; Plane Surface(1)={1,2};
+GEO
+"$R" mesh "$TMP/touch.geo" -o "$TMP/o9.mesh" -q && "$R" check "$TMP/o9.mesh" >/dev/null &&
+  "$R" stats "$TMP/o9.mesh" | grep -q "total 0.905" && ok geo-hole-touching-outer-loop ||
+  ko geo-hole-touching-outer-loop
 # Listed as a hole of the first, the second is an island with its own ref.
 sed 's/Plane Surface(1)={1};/Plane Surface(1)={1,2};/' "$TMP/inside.geo" >"$TMP/island.geo"
 "$R" mesh "$TMP/island.geo" -o "$TMP/o8.mesh" -q && "$R" check "$TMP/o8.mesh" >/dev/null &&
