@@ -62,12 +62,23 @@ SolSection read_types(int file_dim, NextInt next_int, Fail fail) {
 /// What a reader accepts: sections at `location` (or, while `any` holds, the first solution
 /// section of any location, which then fixes it), with counts[location] entries.
 struct Wanted {
+  int mesh_dim = 0;  // the mesh's dimension (0: not known)
   bool any = false;
   SolLocation location = SolLocation::kVertices;
   std::size_t counts[3] = {0, 0, 0};
 };
 
 constexpr const char* kEntityNames[3] = {"vertices", "triangles", "tetrahedra"};
+
+/// Why a section of these types cannot serve a mesh of mesh_dim, or "" (scalars serve any).
+std::string dimension_mismatch(const SolSection& s, int file_dim, int mesh_dim) {
+  if (mesh_dim == 0 || file_dim == mesh_dim) return "";
+  for (const FieldKind k : s.kinds)
+    if (k != FieldKind::kScalar)
+      return "the file is in dimension " + std::to_string(file_dim) +
+             " but the mesh in dimension " + std::to_string(mesh_dim);
+  return "";
+}
 
 /// The location of a section code, or false for other keywords.
 bool location_of(int code, SolLocation& at) {
@@ -112,6 +123,10 @@ std::vector<Field> read_ascii(const std::string& path, std::string_view text, Wa
     const SolSection s = read_types(
         file_dim, [&] { return in.integer(kw); },
         [&](const std::string& what) { in.fail_here(kw, what); });
+    // Said before the values are read (a Dimension 3 tensor file for a planar mesh ran out of
+    // numbers: "expected a real number, found 'End'").
+    if (const std::string m = dimension_mismatch(s, file_dim, w.mesh_dim); !m.empty())
+      in.fail_here(kw, m);
     in.check_room(kw, n, static_cast<std::size_t>(s.components));
     fill_fields(s, n, file_dim, fields, [&] { return in.real(kw); });
   }
@@ -137,6 +152,8 @@ std::vector<Field> read_binary(const std::string& path, std::string_view bytes, 
     const SolSection s = read_types(
         file_dim, [&] { return std::int64_t{in.i32()}; },
         [&](const std::string& what) { in.fail_at(in.offset() - 4, what); });
+    if (const std::string m = dimension_mismatch(s, file_dim, w.mesh_dim); !m.empty())
+      in.fail_at(at, m);
     in.check_room(n, static_cast<std::size_t>(s.components) * in.real_size());
     fill_fields(s, n, file_dim, fields, [&] { return in.real(); });
     in.end_keyword(true);
@@ -152,6 +169,7 @@ std::vector<Field> read_sections(const std::string& path, std::string_view bytes
   medit_detail::check_sol_name(path);
   const bool binary = medit_detail::ends_with(path, ".solb");
   const bool any = w.any;
+  w.mesh_dim = dim;
   int file_dim = 0;
   std::vector<Field> fields =
       binary ? read_binary(path, bytes, w, file_dim) : read_ascii(path, bytes, w, file_dim);

@@ -44,8 +44,9 @@ TEST(MeditRegressions, DimensionChangeAfterVerticesIsAnError) {
             "a.meshb: byte 68: Dimension: dimension 2 after dimension 3");
 
   // A 3D tensor then a 2D scalar: read as dimension 2, the tensor had 6 values per vertex
-  // where 3 were expected.
-  const auto sol = [](const std::string& path) { read_sol(path, 1, 2); };
+  // where 3 were expected. (For a 3D mesh: for a planar one the tensor section is refused
+  // first, SolTensorOfAnotherDimensionIsNamedFirst.)
+  const auto sol = [](const std::string& path) { read_sol(path, 1, 3); };
   EXPECT_EQ(error_of("a.sol",
                      "MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n1\n1 3\n1 0 1 0 0 1\n"
                      "Dimension 2\nSolAtVertices\n1\n1 1\n5\nEnd\n",
@@ -57,6 +58,22 @@ TEST(MeditRegressions, DimensionChangeAfterVerticesIsAnError) {
   solb.keyword(3).i32(2);  // at 88 (8 + 12 + 12 + 8 + 48), value at 96
   EXPECT_EQ(error_of("a.solb", solb.finish(), sol),
             "a.solb: byte 96: Dimension: dimension 2 after dimension 3");
+}
+
+TEST(MeditRegressions, SolTensorOfAnotherDimensionIsNamedFirst) {
+  // A Dimension 3 metric (6 values per vertex) written with 3 values per line for a planar
+  // mesh: "expected a real number, found 'End'" at the end of the file; now the section.
+  const auto sol2 = [](const std::string& path) { read_sol(path, 2, 2); };
+  EXPECT_EQ(
+      error_of("a.sol",
+               "MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n2\n1 3\n1 0 1\n1 0 1\nEnd\n",
+               sol2),
+      "a.sol:5: SolAtVertices: the file is in dimension 3 but the mesh in dimension 2");
+  // Scalars serve any dimension.
+  EXPECT_EQ(
+      error_of("b.sol", "MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n2\n1 1\n1\n2\nEnd\n",
+               sol2),
+      "no error");
 }
 
 TEST(MeditRegressions, RepeatedSameDimensionIsFine) {
