@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 
@@ -94,7 +95,31 @@ Boundary3d::Boundary3d(const TetMesh& m, std::vector<std::int32_t> curved_refs,
   geo_ = std::make_unique<SurfaceProjection>(s, feature_options(options), std::move(metric),
                                              kLift * hausd_);
   tag_ = geo_->features().vert_tag;  // the kinds: the input's features
-  if (options.geometry) geo_ = geometry_projection(*options.geometry, options);
+  if (!options.geometry) return;
+  geo_ = geometry_projection(*options.geometry, options);
+  // The input's curved boundary must lie on the geometry (a previous run's output, within
+  // hausd): another surface was accepted, and every operation near it then refused, leaving the
+  // boundary as given without a word.
+  Vec3 lo = point_of(s, 0), hi = lo;
+  for (std::size_t v = 0; v < s.num_vertices(); ++v)
+    for (int k = 0; k < 3; ++k)
+      lo[k] = std::min(lo[k], s.coords[3 * v + k]), hi[k] = std::max(hi[k], s.coords[3 * v + k]);
+  // (Ten times hausd: a loop may tighten --hausd from one run to the next.)
+  const double tolerance = std::max(10.0 * hausd_, 1e-9 * norm(hi - lo));
+  for (std::size_t v = 0; v < s.num_vertices(); ++v) {
+    const Vec3 p = point_of(s, static_cast<Id>(v));
+    const double d = geo_->distance(p);
+    if (!(d <= tolerance)) {
+      char msg[240];
+      std::snprintf(
+          msg, sizeof msg,
+          "--geometry: the input's boundary point (%g, %g, %g) is %.3g from the "
+          "geometry's surface, more than 10 times --hausd (%g): not the surface the input "
+          "was meshed from",
+          p[0], p[1], p[2], d, hausd_);
+      throw InputError(msg);
+    }
+  }
 }
 
 std::unique_ptr<SurfaceProjection> Boundary3d::geometry_projection(const Mesh& g,
