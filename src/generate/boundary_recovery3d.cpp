@@ -123,6 +123,8 @@ class Recovery {
   double max_steiner_per_vertex_ = 0.0;
   bool refine_flat_ = true;
   std::optional<Delaunay3d> kernel_;
+  std::optional<Tetrahedralization> first_tz_;  // the constructor's, until run()'s first round
+  std::optional<TetSkeleton> first_skeleton_;
   BoundaryRecoveryStats stats_;
 };
 
@@ -215,8 +217,11 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
       if (angle < thinnest_angle_) thinnest_angle_ = angle, thinnest_triangle_ = f;
     }
   }
+  // The tetrahedralisation and its skeleton serve the first recovery round too (run()).
+  first_tz_ = kernel_->result();
+  first_skeleton_.emplace(*first_tz_);
   PatchTriangulation patches = retriangulate_planar_patches(
-      local, refs, tags, coords_, kernel_->result(), !options.keep_triangles);
+      local, refs, tags, coords_, *first_tz_, *first_skeleton_, !options.keep_triangles);
   local = {};
   stats_.missing_edges = patches.missing_edges;
   stats_.missing_faces = patches.missing_faces;
@@ -674,8 +679,10 @@ std::size_t Recovery::flip_cocircular_edges(
 
 RecoveredVolume Recovery::run() {
   for (;;) {
-    const Tetrahedralization tz = kernel_->result();
-    const TetSkeleton skeleton(tz);
+    // The first round's tetrahedralisation is the constructor's (nothing inserted since).
+    const Tetrahedralization tz = first_tz_ ? std::move(*first_tz_) : kernel_->result();
+    const TetSkeleton skeleton = first_skeleton_ ? std::move(*first_skeleton_) : TetSkeleton(tz);
+    first_tz_.reset(), first_skeleton_.reset();
     const auto has_edge = [&](Id a, Id b) { return skeleton.has_edge(a, b); };
     const auto has_face = [&](const Tri& s) { return skeleton.has_face(s); };
 

@@ -230,9 +230,9 @@ PatchTriangulation retriangulate_planar_patches(std::span<const Id> triangles,
                                                 std::span<const int> refs,
                                                 std::span<const int> tags,
                                                 const std::vector<double>& coords,
-                                                const Tetrahedralization& tz, bool retriangulate) {
+                                                const Tetrahedralization& tz,
+                                                const TetSkeleton& skeleton, bool retriangulate) {
   const std::size_t nt = triangles.size() / 3;
-  const TetSkeleton skeleton(tz);
   PatchTriangulation out;
   // Input edges with their triangles, and the counts of what tz misses.
   std::vector<std::pair<std::uint64_t, Id>> edges;

@@ -44,9 +44,11 @@ struct PatchTriangulation {
 /// of the points) replaced by the faces of `tz` tiling it, when they do; the other triangles as
 /// given, in their order, the new ones after them. Patches: triangles of equal ref and tag, joined
 /// by edges, whose vertices are exactly coplanar (exact orientation test). Deterministic.
-/// retriangulate false: the triangles as given, only the missing edges and faces counted.
+/// `skeleton`: tz's edges and faces (the caller's, which boundary recovery reuses for its first
+/// round). retriangulate false: the triangles as given, only the missing edges and faces counted.
 PatchTriangulation retriangulate_planar_patches(
     std::span<const Id> triangles, std::span<const int> refs, std::span<const int> tags,
-    const std::vector<double>& coords, const Tetrahedralization& tz, bool retriangulate = true);
+    const std::vector<double>& coords, const Tetrahedralization& tz, const TetSkeleton& skeleton,
+    bool retriangulate = true);
 
 }  // namespace riemesh
