@@ -178,13 +178,8 @@ std::vector<Field> read_sections(const std::string& path, std::string_view bytes
       medit_detail::fail(path, "", "no SolAtVertices, SolAtTriangles or SolAtTetrahedra section");
     medit_detail::fail(path, "SolAtVertices", "no solution at vertices in the file");
   }
-  for (const Field& f : fields) {
-    // Scalars do not depend on the dimension: a Dimension 3 .sol of a planar mesh is usable.
-    if (f.kind != FieldKind::kScalar && file_dim != dim)
-      medit_detail::fail(path, "Dimension",
-                         "the file is in dimension " + std::to_string(file_dim) +
-                             " but the mesh in dimension " + std::to_string(dim));
-  }
+  // (Tensors and vectors of another dimension than the mesh were refused section by section,
+  // dimension_mismatch; scalars serve any dimension.)
   const bool metric = fields.size() == 1 && fields[0].kind == FieldKind::kSymTensor;
   for (std::size_t i = 0; i < fields.size(); ++i)
     fields[i].name = metric ? "metric" : "sol" + std::to_string(i);
