@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "core/error.hpp"
@@ -27,6 +28,13 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& wh
   }
   if (values.empty()) throw InputError(what + ": no numbers given");
   return values;
+}
+
+void require_size_option(const std::string& option, double size) {
+  if (size > 0.0 && std::isnormal(1.0 / (size * size)) && std::isfinite(size * size)) return;
+  char msg[120];
+  std::snprintf(msg, sizeof msg, " must be a finite size > 0 (from 1e-150 to 1e150), got %g", size);
+  throw InputError(option + msg);
 }
 
 }  // namespace riemesh::cli

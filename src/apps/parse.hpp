@@ -8,4 +8,9 @@ namespace riemesh::cli {
 /// Parses "a,b,c" (commas or spaces) into finite doubles; throws InputError naming `what`.
 std::vector<double> parse_numbers(const std::string& text, const std::string& what);
 
+/// Throws InputError naming `option` unless `size` is a finite size > 0 whose metric 1/size²
+/// is a normal double (from about 1e-154 to 1e154): beyond, the error came later, as a metric
+/// the user never gave ("not positive definite", "infinite coefficient").
+void require_size_option(const std::string& option, double size);
+
 }  // namespace riemesh::cli
