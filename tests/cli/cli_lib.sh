@@ -22,6 +22,21 @@ expect_error() {
   fi
 }
 
+# expect_error_matching NAME PATTERN ARGS...: as expect_error, and the error line matches the
+# grep pattern PATTERN (basic regular expression).
+expect_error_matching() {
+  local name=$1 pattern=$2; shift 2
+  local out err code
+  out=$("$R" "$@" 2>"$TMP/err"); code=$?
+  err=$(cat "$TMP/err")
+  if [ "$code" -eq 2 ] && [ -z "$out" ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] &&
+     [[ "$err" == "riemesh: error: "* ]] && printf '%s\n' "$err" | grep -q -- "$pattern"; then
+    ok "$name ($err)"
+  else
+    ko "$name: exit $code, stdout '$out', stderr '$err' (expected /$pattern/)"
+  fi
+}
+
 # expect_no_file NAME PATH: PATH does not exist and its folder holds no temporary beside it.
 expect_no_file() {
   if [ ! -e "$2" ] && ! ls "$2".tmp-* >/dev/null 2>&1; then ok "$1"; else ko "$1: $2 left behind"; fi

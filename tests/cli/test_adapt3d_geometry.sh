@@ -49,9 +49,7 @@ expect_no_file geometry-other-refs-no-output "$TMP/bad.mesh"
 # A geometry with the input's refs but another surface (the same cylinder with ref 1, not the
 # bunny): accepted before, the boundary then left as it was without a word.
 sed 's/ 7$/ 1/' "$TMP/cyl.mesh" >"$TMP/cyl1.mesh"
-expect_error geometry-other-surface adapt "$TMP/run1.mesh" --hsiz 1.0 --geometry "$TMP/cyl1.mesh" -o "$TMP/bad.mesh"
-"$R" adapt "$TMP/run1.mesh" --hsiz 1.0 --geometry "$TMP/cyl1.mesh" -o "$TMP/bad.mesh" 2>&1 |
-  grep -q "from the geometry's surface, more than 10 times --hausd" && ok geometry-other-surface-named ||
-  ko geometry-other-surface-named
+expect_error_matching geometry-other-surface "from the geometry's surface, more than 10 times --hausd" \
+  adapt "$TMP/run1.mesh" --hsiz 1.0 --geometry "$TMP/cyl1.mesh" -o "$TMP/bad.mesh"
 expect_no_file geometry-other-surface-no-output "$TMP/bad.mesh"
 exit $fail

@@ -77,14 +77,13 @@ expect_error adapt-surface-field-recovery adapt "$IN" -o "$TMP/x.mesh" --field "
 expect_error adapt-surface-optim adapt "$IN" -o "$TMP/x.mesh" --optim
 # Sizes far too small (a mistyped --hsiz or --hausd) are refused at once: they ran for minutes
 # and took gigabytes (a torus at --hausd 1e-9: 7 GB at 300 s).
-expect_error adapt-surface-hsiz-too-small adapt "$IN" -o "$TMP/x.mesh" --hsiz 1e-6
-"$R" adapt "$IN" -o "$TMP/x.mesh" --hsiz 1e-6 2>&1 | grep -q "the sizes ask for about .* vertices on the surface, more than 5e+07; finest size 1e-06" &&
-  ok adapt-surface-hsiz-too-small-named || ko adapt-surface-hsiz-too-small-named
+expect_error_matching adapt-surface-hsiz-too-small \
+  "the sizes ask for about .* vertices on the surface, more than 5e+07; finest size 1e-06" \
+  adapt "$IN" -o "$TMP/x.mesh" --hsiz 1e-6
 expect_error adapt-surface-hausd-too-small adapt "$IN" -o "$TMP/x.mesh" --hausd 1e-12 --hmin 1e-9
 # --nosurf on a surface was ignored (the surface remeshed); --hsiz 0 read as "no size field".
 expect_error adapt-surface-nosurf adapt "$IN" -o "$TMP/x.mesh" --hsiz 0.2 --nosurf
-expect_error adapt-hsiz-zero adapt "$IN" -o "$TMP/x.mesh" --hsiz 0
-"$R" adapt "$IN" -o "$TMP/x.mesh" --hsiz 0 2>&1 | grep -q -- "--hsiz must be a size > 0" &&
-  ok adapt-hsiz-zero-named || ko adapt-hsiz-zero-named
+expect_error_matching adapt-hsiz-zero "--hsiz must be a finite size > 0 .*got 0" \
+  adapt "$IN" -o "$TMP/x.mesh" --hsiz 0
 expect_no_file adapt-surface-no-output "$TMP/x.mesh"
 exit $fail

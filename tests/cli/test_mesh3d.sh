@@ -158,8 +158,8 @@ expect_error mesh3d-passes-range mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --passe
 expect_error mesh3d-interp-refused mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --interp log
 expect_error mesh3d-nofill-hmax mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --nofill --hmax 0.1
 # A size whose metric 1/H² under- or overflows is a size error, not "metric not positive definite".
-"$R" mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --hsiz 1e154 2>&1 | grep -q -- "--hsiz must be a finite size" &&
-  ok mesh3d-hsiz-huge || ko mesh3d-hsiz-huge
+expect_error_matching mesh3d-hsiz-huge "--hsiz must be a finite size > 0" \
+  mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --hsiz 1e154
 expect_error mesh3d-hsiz-inf mesh "$TMP/cube2.mesh" -o "$TMP/y.mesh" --hsiz inf
 expect_no_file mesh3d-options-no-output "$TMP/y.mesh"
 
@@ -171,9 +171,9 @@ expect_no_file mesh3d-options-no-output "$TMP/y.mesh"
   printf 'Triangles\n8\n1 3 2 1\n1 2 4 1\n1 4 3 1\n2 3 4 1\n'
   printf '1 6 7 1\n1 7 5 1\n1 5 6 1\n5 7 6 1\nEnd\n'
 } >"$TMP/pinch.mesh"
-expect_error mesh3d-pinched-vertex mesh "$TMP/pinch.mesh" -o "$TMP/y.mesh"
-"$R" mesh "$TMP/pinch.mesh" -o "$TMP/y.mesh" 2>&1 | grep -q "non-manifold vertices (where separate sheets of the surface touch) (first: vertex 1)" &&
-  ok mesh3d-pinched-vertex-named || ko mesh3d-pinched-vertex-named
+expect_error_matching mesh3d-pinched-vertex \
+  "non-manifold vertices (where separate sheets of the surface touch) (first: vertex 1)" \
+  mesh "$TMP/pinch.mesh" -o "$TMP/y.mesh"
 
 # A unit cube with a 0.001 dent in its top face (gmsh, tests/data/cube_dent.mesh): the sizes
 # from the surface span 700:1; the vertex count was overestimated 1e5-fold and the surface

@@ -97,9 +97,8 @@ Line(9)={9,10}; Line(10)={10,11}; Line(11)={11,12}; Line(12)={12,9};
 Curve Loop(1)={1:4}; Curve Loop(2)={5:8}; Curve Loop(3)={9:12};
 Plane Surface(1)={1,2,3};
 GEO
-expect_error geo-hole-in-hole mesh "$TMP/nested.geo" -o "$TMP/o6.mesh" -q
-"$R" mesh "$TMP/nested.geo" -o "$TMP/o6.mesh" -q 2>&1 | grep -q "nested.geo: the region near (.*) lies in no Plane Surface" &&
-  ok geo-hole-in-hole-named || ko geo-hole-in-hole-named
+expect_error_matching geo-hole-in-hole "nested.geo: the region near (.*) lies in no Plane Surface" \
+  mesh "$TMP/nested.geo" -o "$TMP/o6.mesh" -q
 cat >"$TMP/inside.geo" <<'GEO'
 Point(1)={0,0,0,0.4}; Point(2)={4,0,0,0.4}; Point(3)={4,4,0,0.4}; Point(4)={0,4,0,0.4};
 Point(5)={1,1,0,0.4}; Point(6)={2,1,0,0.4}; Point(7)={2,2,0,0.4}; Point(8)={1,2,0,0.4};
@@ -108,8 +107,8 @@ Line(5)={5,6}; Line(6)={6,7}; Line(7)={7,8}; Line(8)={8,5};
 Curve Loop(1)={1:4}; Curve Loop(2)={5:8}; Plane Surface(1)={1}; Plane Surface(2)={2};
 Physical Surface(1)={1}; Physical Surface(2)={2};
 GEO
-"$R" mesh "$TMP/inside.geo" -o "$TMP/o7.mesh" -q 2>&1 | grep -q "inside.geo: Plane Surface 1 and Plane Surface 2 overlap near" &&
-  ok geo-surface-inside-surface || ko geo-surface-inside-surface
+expect_error_matching geo-surface-inside-surface \
+  "inside.geo: Plane Surface 1 and Plane Surface 2 overlap near" mesh "$TMP/inside.geo" -o "$TMP/o7.mesh" -q
 expect_no_file geo-overlap-no-file "$TMP/o7.mesh"
 # A hole touching its outer loop at one point (its first node): it was called outside.
 cat >"$TMP/touch.geo" <<'GEO'
