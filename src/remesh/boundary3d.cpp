@@ -14,7 +14,7 @@
 namespace riemesh {
 namespace {
 
-constexpr double kCosTurn = 0.8660254037844387;  // cos 30°: largest turn of a boundary triangle
+constexpr double kTurn = 0.5235987755982988;     // 30°: largest turn of a wide boundary triangle
 constexpr double kCheckMargin = 0.95;            // the checks use 0.95 hausd (as surface_ops)
 /// Placed points are at most this × hausd from the input polyhedron: the reconstruction is
 /// followed up to the Hausdorff bound that the checks then enforce.
@@ -49,6 +49,23 @@ Vec3 unit_normal(const Tri3& t) {
   const Vec3 n = cross(t[1] - t[0], t[2] - t[0]);
   const double l = norm(n);
   return l > 0.0 ? (1.0 / l) * n : Vec3{};
+}
+
+/// Smallest height of a triangle: twice its area over its longest edge.
+double width(const Tri3& t) {
+  const double l = std::max({norm(t[1] - t[0]), norm(t[2] - t[1]), norm(t[0] - t[2])});
+  return l > 0.0 ? norm(cross(t[1] - t[0], t[2] - t[0])) / l : 0.0;
+}
+
+/// Whether an operation turns a boundary triangle's normal by at most 30° more than the
+/// surface leaves undetermined: a triangle within h of the surface and of width w may lean by
+/// atan(h / w) across it (a thin triangle along a curved direction, as a metric oblique to the
+/// surface asks for, leans far from the surface's normal, and the next one the other way).
+bool normal_turn_ok(const Tri3& before, const Tri3& after, double h) {
+  const double c = std::clamp(dot(unit_normal(before), unit_normal(after)), -1.0, 1.0);
+  const double w = std::min(width(before), width(after));
+  const double slack = w > 0.0 ? std::atan(h / w) : 1.5707963267948966;
+  return std::acos(c) <= kTurn + slack;
 }
 
 FeatureOptions feature_options(const Adapt3dOptions& o) {
@@ -193,7 +210,7 @@ bool Boundary3d::accepts(const std::vector<Tri3>& old_t, const std::vector<Tri3>
   double old_worst = 1.0, new_worst = 1.0;
   for (const Tri3& t : old_t) old_worst = std::min(old_worst, tri_quality(t, metric));
   for (std::size_t i = 0; i < new_t.size(); ++i) {
-    if (dot(unit_normal(kept[i]), unit_normal(new_t[i])) < kCosTurn) return false;
+    if (!normal_turn_ok(kept[i], new_t[i], kCheckMargin * hausd_)) return false;
     new_worst = std::min(new_worst, tri_quality(new_t[i], metric));
   }
   if (new_worst < kTriangleFloor && new_worst < old_worst) return false;
