@@ -36,6 +36,12 @@ constexpr int kSplitSweeps = 3;              // per pass, as in 2D (1 or 2: slow
 // by the fixed surface, slivers no later operator removes (rotor: 111 -> 20 s, min dihedral
 // 1e-6 -> 0.03 degrees; bunny, elephant unchanged).
 constexpr double kKeptSurfaceSplitFloor = 0.05;
+// With curved patches, a split may not create a tet below this quality: an interior edge between
+// two boundary vertices whose chord lies in the surface (along a cylinder's straight direction)
+// has a flat shell, and splitting it strung interior vertices along the surface, each with flat
+// tets (a 1:50 metric oblique to a faceted cylinder: 177 tets below quality 0.1 -> 5; a planar
+// patch gives exactly flat tets, refused as such).
+constexpr double kCurvedSplitFloor = 1e-3;
 constexpr double kSwapBelow = 0.6;                 // swaps are tried around tets worse than this
 constexpr double kSwapMaxLength = 1.5;            // swaps create no edge longer than this
 constexpr double kBad = 0.45;                      // tets below this are removed by collapses
@@ -462,7 +468,10 @@ void run_pass(Remesh3dContext& ctx, const Adapt3dOptions& options, EdgeLists& li
               NeighbourTable& nbrs, SweepMemos& memos, std::size_t& in_order, PassStats& st) {
   TetMesh& m = ctx.mesh();
   if (options.insert) {
-    st.splits = split_sweeps(ctx, st, options.keep_surface ? kKeptSurfaceSplitFloor : 0.0, lists);
+    st.splits = split_sweeps(
+        ctx, st,
+        options.keep_surface ? kKeptSurfaceSplitFloor : (m.surface ? kCurvedSplitFloor : 0.0),
+        lists);
     keep_locality(ctx, options.renumber_after, memos, in_order, lists.short_edges, nbrs);
     st.collapses = collapse_sweep(ctx, st, std::move(lists.short_edges), nbrs);
   }
