@@ -25,10 +25,6 @@ constexpr double kOnLine = 0.25;
 /// Sizes on curved patches are computed for this fraction of hausd (as surface_adapt.cpp).
 constexpr double kCentroidFactor = 0.75;
 
-/// The chord gap on curved patches is at most this fraction of the metric's size across the
-/// surface or its finest along it, whichever is larger (lean_gap).
-constexpr double kLeanFraction = 0.25;
-
 /// A new boundary triangle below this quality (in the operation's metric) is refused unless an
 /// old one was worse (bad boundary triangles make every tet on them bad, and no volume operator
 /// repairs them). Measured in Euclidean terms before 2026-12-06, the floor refused the stretched
@@ -70,23 +66,6 @@ bool normal_turn_ok(const Tri3& before, const Tri3& after, double h) {
   const double w = std::min(width(before), width(after));
   const double slack = w > 0.0 ? std::atan(h / w) : 1.5707963267948966;
   return std::acos(c) <= kTurn + slack;
-}
-
-/// The largest chord gap (sagitta) that the metric m leaves room for at a surface point of unit
-/// normal n. A boundary triangle of width w whose long edges run along a curved direction leans
-/// across the surface by its sagitta over w, the next one the other way: where the gap is
-/// comparable both to the size across the surface (the tets below are as thin) and to the
-/// finest size along it (the triangles are as narrow), that washboard leaves flat tets no
-/// operator repairs (a 1:100 metric oblique to a cylinder's side: 1,600 tets below quality
-/// 0.1). kLeanFraction of the larger of the two sizes.
-double lean_gap(const SymMat3& m, const Vec3& n) {
-  const Vec3 u = normalize(std::abs(n[0]) < 0.9 ? cross(n, Vec3{{1.0, 0.0, 0.0}})
-                                                : cross(n, Vec3{{0.0, 1.0, 0.0}}));
-  const Vec3 w = cross(n, u);
-  // The metric on the tangent plane in the basis (u, w), and its larger eigenvalue.
-  const double a = quadratic(m, u), c = quadratic(m, w), b = 0.5 * (quadratic(m, u + w) - a - c);
-  const double along = 0.5 * (a + c) + std::sqrt(0.25 * (a - c) * (a - c) + b * b);
-  return kLeanFraction * std::max(1.0 / std::sqrt(along), 1.0 / std::sqrt(quadratic(m, n)));
 }
 
 FeatureOptions feature_options(const Adapt3dOptions& o) {
@@ -346,26 +325,9 @@ void intersect_curvature_sizes(const Mesh& volume, std::vector<SymMat3>& metrics
   so.anisotropic = true;
   so.hgrad = 0.0;  // graded with the volume metric afterwards (prepare_metrics)
   const std::vector<SymMat3> g = geometric_surface_metric(s, so, feature_options(options));
-  // Vertex normals (area-weighted; a triangle listed the other way round counts turned over).
-  std::vector<Vec3> normal(vid.size(), Vec3{});
-  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
-    const Id* f = &s.triangles[3 * t];
-    const Vec3 n =
-        cross(point_of(s, f[1]) - point_of(s, f[0]), point_of(s, f[2]) - point_of(s, f[0]));
-    for (int k = 0; k < 3; ++k) {
-      Vec3& acc = normal[static_cast<std::size_t>(f[k])];
-      acc = dot(acc, n) < 0.0 ? acc - n : acc + n;
-    }
-  }
-  for (std::size_t i = 0; i < vid.size(); ++i) {
-    SymMat3& mv = metrics[static_cast<std::size_t>(vid[i])];
-    SymMat3 gi = g[i];
-    // Curvature sizes scale as the square root of the gap: for a smaller gap, a larger metric.
-    const double gap = norm(normal[i]) > 0.0 ? lean_gap(mv, normalize(normal[i])) : so.hausd;
-    if (gap < so.hausd)
-      for (double& c : gi.c) c *= so.hausd / gap;
-    mv = intersect(mv, gi);
-  }
+  for (std::size_t i = 0; i < vid.size(); ++i)
+    metrics[static_cast<std::size_t>(vid[i])] =
+        intersect(metrics[static_cast<std::size_t>(vid[i])], g[i]);
 }
 
 }  // namespace riemesh

@@ -96,10 +96,9 @@ TEST(Adapt3dCurved, ObliqueAnisotropyFollowedOnACurvedPatch) {
   // A constant 1:50 metric across the direction (1, 1, 1): the side's triangles are thin, and
   // where their long edges run round the cylinder they lean far from its normal (a chord's
   // sagitta over their width). The boundary checks refused every operation turning such a
-  // triangle by more than 30°: 88.4% of edges in band, 8,676 tets; 93.1% and 8,092 since, but
-  // 16 tets below quality 0.1 where the leaning triangles sat on tets as thin (boundary3d.cpp
-  // lean_gap). Then 14,675 tets, 93.9% and 177 flat tets, strung along interior edges lying in
-  // the side (kCurvedSplitFloor, adapt3d.cpp); 14,483 tets, 94.6%, 5 below 0.1 since.
+  // triangle by more than 30°: 88.4% of edges in band, 8,676 tets; 93.1% and 8,092 since. Then
+  // 16 tets below quality 0.1 (and 177 in some variants), strung along interior edges lying in
+  // the side (kCurvedSplitFloor, adapt3d.cpp): 8,068 tets, 93.1%, 8 below 0.1 since.
   const Mesh input = test::faceted_cylinder(24, 2, 1.0, 1.0);
   const double h = 1.0, hd = 0.02;
   const Vec3 d = (1.0 / std::sqrt(3.0)) * Vec3{{1.0, 1.0, 1.0}};
