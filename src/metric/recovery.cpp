@@ -2,7 +2,9 @@
 // recovery_l2.cpp, recovery_green.cpp and recovery_lsq.cpp.
 #include "metric/recovery.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/error.hpp"
@@ -86,20 +88,60 @@ std::vector<Vec<D>> recover_gradient(const Mesh& mesh, std::span<const double> u
   return detail::l2_gradient<D>(mesh, u);
 }
 
+namespace {
+
+/// Rounding in u (relative 2.2e-16 of its largest magnitude U) reaches a recovered Hessian as
+/// about ε U / h², h the vertex's shortest edge, times the recovery's amplification: Hessians
+/// below kRoundoff U / h² are that noise (a linear field's, 1e-13 where the Lp normalisation
+/// then made sizes vary 48 times over a square), and are set to zero.
+constexpr double kRoundoff = 1e3 * 2.220446049250313e-16;
+
+template <int D>
+void drop_roundoff(const Mesh& mesh, std::span<const double> u, std::vector<SymMat<D>>& h) {
+  double big = 0.0;
+  for (const double x : u) big = std::max(big, std::abs(x));
+  const std::vector<Id>& elems = D == 2 ? mesh.triangles : mesh.tets;
+  std::vector<double> shortest(h.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t e = 0; e < elems.size(); e += D + 1)
+    for (int i = 0; i <= D; ++i)
+      for (int j = i + 1; j <= D; ++j) {
+        const Id a = elems[e + i], b = elems[e + j];
+        double l2 = 0.0;
+        for (int k = 0; k < D; ++k) {
+          const double d = mesh.coords[D * static_cast<std::size_t>(a) + k] -
+                           mesh.coords[D * static_cast<std::size_t>(b) + k];
+          l2 += d * d;
+        }
+        shortest[a] = std::min(shortest[a], l2), shortest[b] = std::min(shortest[b], l2);
+      }
+  for (std::size_t v = 0; v < h.size(); ++v) {
+    double norm2 = 0.0;  // Frobenius
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) norm2 += h[v](i, j) * h[v](i, j);
+    const double noise = kRoundoff * big / shortest[v];
+    if (std::sqrt(norm2) <= noise) h[v] = SymMat<D>::zero();
+  }
+}
+
+}  // namespace
+
 template <int D>
 std::vector<SymMat<D>> recover_hessian(const Mesh& mesh, std::span<const double> u,
                                        RecoveryMethod method) {
   detail::check_recovery_input<D>(mesh, u);
+  std::vector<SymMat<D>> h;
   switch (method) {
     case RecoveryMethod::kL2Projection:
-      return detail::l2_hessian<D>(mesh, u);
+      h = detail::l2_hessian<D>(mesh, u);
+      break;
     case RecoveryMethod::kGreen:
-      return detail::green_hessian<D>(mesh, u);
+      h = detail::green_hessian<D>(mesh, u);
+      break;
     case RecoveryMethod::kLeastSquares:
+      detail::lsq_recover<D>(mesh, u, nullptr, &h);
       break;
   }
-  std::vector<SymMat<D>> h;
-  detail::lsq_recover<D>(mesh, u, nullptr, &h);
+  drop_roundoff<D>(mesh, u, h);
   return h;
 }
 
