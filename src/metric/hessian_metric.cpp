@@ -105,20 +105,31 @@ struct Shapes {
 };
 
 template <int D>
-Shapes<D> shapes(std::span<const SymMat<D>> hessians, double det_exponent) {
+Shapes<D> shapes(std::span<const SymMat<D>> hessians, double det_exponent, bool unit_scale) {
   Shapes<D> s{std::vector<Vec<D>>(hessians.size()), std::vector<Mat<D>>(hessians.size()), false};
-  double largest = 0.0;
+  // The eigenvalues of H / (its largest coefficient over the mesh): entries of 1e201 (a field
+  // of magnitude 1e200) overflowed in the eigen solver's discriminant.
+  double biggest = 0.0;
   for (std::size_t v = 0; v < hessians.size(); ++v) {
     if (!is_finite(hessians[v]))
       throw InputError("the Hessian at vertex " + std::to_string(v + 1) + " is not finite");
-    const SymEigen<D> e = eigen(hessians[v]);
+    for (const double c : hessians[v].c) biggest = std::max(biggest, std::abs(c));
+  }
+  const double pre = biggest > 0.0 ? 1.0 / biggest : 1.0;
+  double largest = 0.0;
+  for (std::size_t v = 0; v < hessians.size(); ++v) {
+    const SymEigen<D> e = eigen(pre * hessians[v]);
     s.vectors[v] = e.vectors;
     for (int i = 0; i < D; ++i) largest = std::max(largest, s.mu[v][i] = std::abs(e.values[i]));
   }
-  const double floor = largest > 0.0 ? 1e-12 * largest : 1.0;
+  // For a complexity the metric does not depend on the field's scale: |H| / largest keeps the
+  // determinants below in range (a field of magnitude 1e-200 made det|H| underflow and the
+  // metric NaN); for a tolerance, |H| itself.
+  const double unit = unit_scale && largest > 0.0 ? 1.0 / largest : 1.0 / pre;
+  const double floor = largest > 0.0 ? 1e-12 * largest * unit : 1.0;
   for (Vec<D>& mu : s.mu) {
     double det = 1.0;
-    for (int i = 0; i < D; ++i) det *= (mu[i] = std::max(mu[i], floor));
+    for (int i = 0; i < D; ++i) det *= (mu[i] = std::max(mu[i] * unit, floor));
     const double scale = std::pow(det, det_exponent);
     for (int i = 0; i < D; ++i) mu[i] *= scale;  // kept in the order of the eigenvectors
   }
@@ -186,12 +197,23 @@ constexpr double kCd[4] = {0.0, 0.0, 2.0 / 9.0, 9.0 / 32.0};
 
 }  // namespace
 
+namespace {
+
+/// Whether 1/size² and size² are both normal numbers: metrics of that size can be stored.
+bool storable_size(double size) {
+  return size > 0.0 && std::isnormal(1.0 / (size * size)) && std::isfinite(size * size);
+}
+
+}  // namespace
+
 void HessianMetricOptions::validate() const {
   if (!(norm >= 1.0)) throw InputError("--norm must be a number >= 1 or inf, got " + num(norm));
-  if (!(complexity >= 0.0) || !std::isfinite(complexity))
-    throw InputError("--complexity must be a number > 0, got " + num(complexity));
-  if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
-    throw InputError("--tolerance must be a number > 0, got " + num(tolerance));
+  // (Out of these ranges the metric's coefficients under- or overflow: complexity 1e-300 printed
+  // "complexity: -nan" and wrote a file that riemesh then refused.)
+  if (!(complexity == 0.0 || (complexity >= 1e-6 && complexity <= 1e15)))
+    throw InputError("--complexity must be a number from 1e-6 to 1e15, got " + num(complexity));
+  if (!(tolerance == 0.0 || (tolerance >= 1e-150 && tolerance <= 1e150)))
+    throw InputError("--tolerance must be a number from 1e-150 to 1e150, got " + num(tolerance));
   if (complexity > 0.0 && tolerance > 0.0)
     throw InputError("--complexity and --tolerance contradict: give one of them");
   if (complexity == 0.0 && tolerance == 0.0)
@@ -199,8 +221,10 @@ void HessianMetricOptions::validate() const {
   if (tolerance > 0.0 && std::isfinite(norm))
     throw InputError("--tolerance gives the L∞ metric c|H|/E: use it with --norm inf, or give "
                      "--complexity N for the L" + num(norm) + " metric");
-  if (!(hmin >= 0.0) || !std::isfinite(hmin)) throw InputError("--hmin must be a finite size >= 0");
-  if (!(hmax > 0.0)) throw InputError("--hmax must be a size > 0");
+  if (!(hmin == 0.0 || storable_size(hmin)))
+    throw InputError("--hmin must be 0 or a finite size from 1e-150 to 1e150, got " + num(hmin));
+  if (!(hmax == std::numeric_limits<double>::infinity() || storable_size(hmax)))
+    throw InputError("--hmax must be a size from 1e-150 to 1e150, got " + num(hmax));
   if (hmin > hmax) throw InputError("--hmin " + num(hmin) + " is larger than --hmax " + num(hmax));
   if (!(aniso_max >= 1.0)) throw InputError("--aniso-max must be a ratio >= 1, got " + num(aniso_max));
 }
@@ -214,7 +238,7 @@ std::vector<SymMat<D>> hessian_metric(const Mesh& mesh, std::span<const SymMat<D
   const double p = options.norm;
   // Lp: det|H|^{-1/(2p+D)} |H| (exponent 0 for p = ∞); L∞: c_d |H| / ε.
   const double det_exponent = lp && std::isfinite(p) ? -1.0 / (2.0 * p + D) : 0.0;
-  const Shapes<D> s = shapes<D>(hessians, det_exponent);
+  const Shapes<D> s = shapes<D>(hessians, det_exponent, lp);
   double k = kCd[D] / options.tolerance;
   if (lp) {
     // BOOK.md §2: K = N^{2/D} (∫ det|H|^{p/(2p+D)})^{-2/D}, then refined so that the clipped

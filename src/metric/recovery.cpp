@@ -101,7 +101,7 @@ void drop_roundoff(const Mesh& mesh, std::span<const double> u, std::vector<SymM
   double big = 0.0;
   for (const double x : u) big = std::max(big, std::abs(x));
   const std::vector<Id>& elems = D == 2 ? mesh.triangles : mesh.tets;
-  std::vector<double> shortest(h.size(), std::numeric_limits<double>::infinity());
+  std::vector<double> shortest2(h.size(), std::numeric_limits<double>::infinity());
   for (std::size_t e = 0; e < elems.size(); e += D + 1)
     for (int i = 0; i <= D; ++i)
       for (int j = i + 1; j <= D; ++j) {
@@ -112,14 +112,12 @@ void drop_roundoff(const Mesh& mesh, std::span<const double> u, std::vector<SymM
                            mesh.coords[D * static_cast<std::size_t>(b) + k];
           l2 += d * d;
         }
-        shortest[a] = std::min(shortest[a], l2), shortest[b] = std::min(shortest[b], l2);
+        shortest2[a] = std::min(shortest2[a], l2), shortest2[b] = std::min(shortest2[b], l2);
       }
   for (std::size_t v = 0; v < h.size(); ++v) {
-    double norm2 = 0.0;  // Frobenius
-    for (int i = 0; i < D; ++i)
-      for (int j = 0; j < D; ++j) norm2 += h[v](i, j) * h[v](i, j);
-    const double noise = kRoundoff * big / shortest[v];
-    if (std::sqrt(norm2) <= noise) h[v] = SymMat<D>::zero();
+    double largest = 0.0;  // the largest coefficient (no squares: a field of 1e-200 has them)
+    for (const double c : h[v].c) largest = std::max(largest, std::abs(c));
+    if (largest <= kRoundoff * big / shortest2[v]) h[v] = SymMat<D>::zero();
   }
 }
 

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "core/error.hpp"
@@ -446,8 +447,15 @@ std::string stall_reason(const TriMesh& m) {
 }  // namespace
 
 void Adapt2dOptions::validate() const {
-  if (!(hmin >= 0.0) || !std::isfinite(hmin)) throw InputError("--hmin must be a finite size >= 0");
-  if (!(hmax > 0.0)) throw InputError("--hmax must be a size > 0");
+  // Sizes whose metric 1/h² under- or overflows cannot be stored (--hmin 1e300 was reported as
+  // "gradation: vertex 0: metric is not positive definite", blaming the mesh).
+  const auto storable = [](double h) {
+    return h > 0.0 && std::isnormal(1.0 / (h * h)) && std::isfinite(h * h);
+  };
+  if (!(hmin == 0.0 || storable(hmin)))
+    throw InputError("--hmin must be 0 or a finite size from 1e-150 to 1e150, got " + num(hmin));
+  if (!(hmax == std::numeric_limits<double>::infinity() || storable(hmax)))
+    throw InputError("--hmax must be a size from 1e-150 to 1e150, got " + num(hmax));
   if (hmin > 0.0 && hmax < hmin)
     throw InputError("--hmin " + num(hmin) + " is larger than --hmax " + num(hmax));
   if (!(hgrad == 0.0 || (hgrad > 1.0 && std::isfinite(hgrad))))

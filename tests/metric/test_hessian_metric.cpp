@@ -175,6 +175,15 @@ TEST(HessianMetric, LpMetricIsInvariantUnderScalingOfU) {
   for (SymMat2& hv : h) hv = 1e4 * hv;
   const std::vector<SymMat2> ms = hessian_metric<2>(mesh, h, o);
   for (std::size_t v = 0; v < m.size(); ++v) EXPECT_TRUE(metrics_equal(m[v], ms[v], 1e-9));
+  // Down to scales where det|H| underflows and up to where the eigen solver's discriminant
+  // overflowed (both gave NaN metrics and an internal error before 2026-12-06).
+  for (const double scale : {1e-204, 1e196}) {
+    std::vector<SymMat2> hs = hessians_on<2>(mesh);
+    for (SymMat2& hv : hs) hv = scale * hv;
+    const std::vector<SymMat2> mx = hessian_metric<2>(mesh, hs, o);
+    for (std::size_t v = 0; v < m.size(); ++v)
+      EXPECT_TRUE(metrics_equal(m[v], mx[v], 1e-9)) << scale;
+  }
 }
 
 // H = diag(100, 1e-4), L∞ with ε = 2/9: M = diag(100, 1e-4), anisotropy 1000; aniso_max 10
@@ -235,6 +244,14 @@ TEST(HessianMetric, ValidateNamesTheBadOption) {
   sizes.hmin = 0.0;
   sizes.hmax = 0.0;
   EXPECT_NE(message(sizes).find("--hmax"), std::string::npos);
+  // Out of range: metrics that cannot be stored (1/h² under- or overflows).
+  EXPECT_NE(message(lp(2.0, 1e-300)).find("--complexity"), std::string::npos);
+  EXPECT_NE(message(lp(2.0, 1e300)).find("--complexity"), std::string::npos);
+  sizes.hmax = 1e-320;
+  EXPECT_NE(message(sizes).find("--hmax"), std::string::npos);
+  sizes.hmax = kInf;
+  sizes.hmin = 1e300;
+  EXPECT_NE(message(sizes).find("--hmin"), std::string::npos);
   HessianMetricOptions aniso = lp(2.0, 100.0);
   aniso.aniso_max = 0.5;
   EXPECT_NE(message(aniso).find("--aniso-max"), std::string::npos);
