@@ -25,6 +25,10 @@ constexpr int kLine = 1, kTriangle = 2, kTetrahedron = 4, kPoint = 15;
 /// type is unknown.
 int nodes_per_element(int type);
 
+/// "N elements of type T (name): riemesh reads ... only": elements other than lines, triangles,
+/// tetrahedra and points are refused (they were dropped without a word).
+std::string unsupported_elements(int type, std::uint64_t count);
+
 /// The bytes of a .msh file read as text tokens (section names, ASCII data, headers) or as
 /// binary values. Every failure throws InputError("<file>:<line>: $<Section>: <what>"), with a
 /// byte offset instead of the line for binary data.

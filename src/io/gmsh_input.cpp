@@ -1,7 +1,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <string>
 
 #include "core/error.hpp"
 #include "io/gmsh_detail.hpp"
@@ -13,12 +15,44 @@ int nodes_per_element(int type) {
   // elm-type table of the MSH specification (first- to fifth-order Lagrange elements).
   static constexpr int kNodes[] = {
       0, 2,  3,  4,  4,  8,  6, 5, 3, 6,  9,  10, 27, 18, 14, 1, 8,  20, 15, 13,  // 0-19
-      9, 10, 12, 15, 15, 21, 4, 5, 6, 20, 35, 56, 0,  0,  0,  0, 16, 0,  0,  0,   // 20-39
+      9, 10, 12, 15, 15, 21, 4, 5, 6, 20, 35, 56, 0,  0,  0,  0, 16, 25, 36, 0,   // 20-39
   };
   if (type == 92) return 64;   // 64-node third-order hexahedron
   if (type == 93) return 125;  // 125-node fourth-order hexahedron
   if (type < 0 || type >= static_cast<int>(std::size(kNodes))) return 0;
   return kNodes[type];
+}
+
+std::string unsupported_elements(int type, std::uint64_t count) {
+  const char* kind = "";
+  switch (type) {
+    case 3:
+      kind = " (4-node quadrangle)";
+      break;
+    case 5:
+      kind = " (8-node hexahedron)";
+      break;
+    case 6:
+      kind = " (6-node prism)";
+      break;
+    case 7:
+      kind = " (5-node pyramid)";
+      break;
+    case 8:
+      kind = " (3-node line)";
+      break;
+    case 9:
+      kind = " (6-node triangle)";
+      break;
+    case 11:
+      kind = " (10-node tetrahedron)";
+      break;
+    default:
+      break;
+  }
+  return std::to_string(count) + (count == 1 ? " element" : " elements") + " of type " +
+         std::to_string(type) + kind +
+         ": riemesh reads 2-node lines, 3-node triangles and 4-node tetrahedra only";
 }
 
 GmshInput::GmshInput(std::string name, std::string_view bytes)

@@ -181,6 +181,7 @@ void read_elements_41(GmshInput& in, GmshAssembler& out) {
     in.check_room(n, 8 * static_cast<std::size_t>(1 + nv), static_cast<std::size_t>(1 + nv),
                   "elements");
     const bool kept = kept_type(type);
+    if (!kept && type != kPoint && n > 0) in.fail(unsupported_elements(type, n));
     if (!kept) out.skipped[type] += static_cast<std::size_t>(n);
     if (kept && n > kMaxIds) in.fail("too many elements for 32-bit ids");
     const int ref = out.ref_of(entity_dim, entity_tag);
@@ -226,6 +227,12 @@ int read_format(GmshInput& in, GmshReadInfo& info) {
   const int data_size = in.int32("the data size");
   if (data_size != 4 && data_size != 8)
     in.fail("data size " + std::to_string(data_size) + " (4 or 8 expected)");
+  // (The room checks of binary 4.1 blocks count 8-byte size_t values: a valid file of a 32-bit
+  // host was refused as truncated.)
+  if (v == 41 && file_type == 1 && data_size == 4)
+    in.fail(
+        "binary MSH 4.1 with 4-byte sizes (a 32-bit host's) is not supported: re-save it "
+        "as ASCII or on a 64-bit machine");
   info.version = v == 41 ? 4.1 : 2.2;
   info.binary = file_type == 1;
   if (info.binary) {

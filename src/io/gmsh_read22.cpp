@@ -24,8 +24,10 @@ void read_element_nodes(GmshInput& in, GmshAssembler& out, int type, int nv, int
   }
   if (kept)
     out.add(type, v, ref);
-  else
+  else if (type == kPoint)
     ++out.skipped[type];
+  else
+    in.fail(unsupported_elements(type, 1));
 }
 
 // 2.2 tags: physical, elementary, ...; physical 0 means none: the elementary tag is the ref.

@@ -66,6 +66,10 @@ const Edit kBad[] = {
      "'$EndNodes'"},
     {"0 1 0\n$EndNodes", "0 1 0 0\n$EndNodes", "bad.msh:16: $Nodes: expected $EndNodes, got '0'"},
     {"1 1 2 3\n", "1 1 2 9\n", "bad.msh:21: $Elements: unknown node tag 9"},
+    {"2 1 2 1\n1 1 2 3\n", "2 1 3 1\n1 1 2 3 1\n",
+     "bad.msh:20: $Elements: 1 element of type 3 (4-node quadrangle): riemesh reads 2-node "
+     "lines, 3-node triangles and 4-node tetrahedra only"},
+    {"4.1 0 8", "4.1 1 4", "bad.msh:2: $MeshFormat: binary MSH 4.1 with 4-byte sizes"},
     {"2 1 2 1\n", "2 1 99 1\n", "bad.msh:20: $Elements: unknown element type 99"},
     {"2 1 2 1\n", "2 1 2 5\n", "bad.msh:20: $Elements: the blocks hold more elements than the 1"},
     {"1 1 1 1\n", "1 2 1 1\n", "bad.msh:21: $Elements: the blocks hold 1 elements, not the 2"},
@@ -110,6 +114,10 @@ const Edit kBad[] = {
      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n"
      "$Elements\n1\n1 15 2 0 1 1\n$EndElements\n",
      nullptr},  // fine: one corner
+    {nullptr,
+     "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n"
+     "$Elements\n1\n1 9 2 0 1 1 1 1 1 1 1\n$EndElements\n",
+     "bad.msh:10: $Elements: 1 element of type 9 (6-node triangle)"},
 };
 
 TEST(GmshErrors, AsciiTable) {

@@ -66,7 +66,10 @@ const BadInput kBadAscii[] = {
      "bad.mesh:8: NormalAtVertices: normal id 2 out of range (the file has 1 normal)"},
     {true, "Quadrilaterals 2\n1 2 3 4 0\n", "bad.mesh:3: Quadrilaterals: count 2 is larger than"},
     {true, "Quadrilaterals 2\n1 2 3 4 0\n# padding padding padding\n",
-     "bad.mesh:4: Quadrilaterals: unexpected end of file, expected an integer"},
+     "bad.mesh:3: Quadrilaterals: 2 elements of a kind riemesh does not read (it reads linear "
+     "Edges, Triangles and Tetrahedra only)"},
+    {true, "TrianglesP2 1\n1 2 3 4 5 6 0\n# padding padding padding\n",
+     "bad.mesh:3: TrianglesP2: 1 elements of a kind riemesh does not read"},
 };
 
 TEST(MeditErrors, AsciiTable) {
