@@ -270,7 +270,13 @@ Mesh read_gmsh_bytes(const std::string& name, std::string_view bytes,
     const bool need_nodes = name_of == "Elements" || name_of == "NodeData";
     if (need_nodes && !out.have_nodes) in.fail("section before $Nodes");
     if (name_of == "Nodes" && out.have_nodes) in.fail("second $Nodes section");
-    if (name_of == "Entities" && version == 41) {
+    if (name_of == "PartitionedEntities" && version == 41) {
+      // Its elements sit on partition entities: read as such, they took the partitions' tags as
+      // refs and the partition interfaces became boundary Edges.
+      in.fail(
+          "partitioned MSH 4.1 files are not supported: save the mesh unpartitioned "
+          "(or as MSH 2.2)");
+    } else if (name_of == "Entities" && version == 41) {
       read_entities_41(in, out);
     } else if (name_of == "Nodes") {
       version == 41 ? read_nodes_41(in, out) : read_nodes_22(in, out);

@@ -13,18 +13,33 @@ namespace {
 // A 2.2 node tag (an int) as a tag for NodeMap: non-positive tags become 0, which no node has.
 std::uint64_t node_tag(std::int32_t tag) { return tag > 0 ? static_cast<std::uint64_t>(tag) : 0; }
 
+/// The element read last: MSH 2.2 writes an element once per physical group of its entity, one
+/// copy after the other (with another physical tag); the copies are one element, as in 4.1.
+struct LastElement {
+  int type = -1;
+  std::int32_t entity = 0;
+  std::int32_t nodes[4] = {};
+};
+
 // One 2.2 element once its type and tags are known: node tags, then the element if kept.
-void read_element_nodes(GmshInput& in, GmshAssembler& out, int type, int nv, int ref) {
+void read_element_nodes(GmshInput& in, GmshAssembler& out, int type, int nv, int ref,
+                        std::int32_t entity, LastElement& last) {
   const bool kept = type == kPoint || type == kLine || type == kTriangle || type == kTetrahedron;
   Id v[4] = {};
+  std::int32_t tags[4] = {};
   for (int k = 0; k < nv; ++k) {
     const std::int32_t tag = in.int32("a node tag");
     if (tag <= 0) in.fail("node tag " + std::to_string(tag) + " (tags start at 1)");
-    if (kept) v[k] = out.node(node_tag(tag), in);
+    if (kept) v[k] = out.node(node_tag(tag), in), tags[k] = tag;
   }
-  if (kept)
+  if (kept) {
+    const bool copy =
+        type == last.type && entity == last.entity && std::equal(tags, tags + nv, last.nodes);
+    if (copy) return;
+    last.type = type, last.entity = entity;
+    std::copy(tags, tags + nv, last.nodes);
     out.add(type, v, ref);
-  else if (type == kPoint)
+  } else if (type == kPoint)
     ++out.skipped[type];
   else
     in.fail(unsupported_elements(type, 1));
@@ -66,6 +81,9 @@ void read_elements_22(GmshInput& in, GmshAssembler& out) {
   in.begin_data();
   in.check_room(n, 12, 5, "elements");
   std::int32_t tags[64];
+  LastElement last;
+  // 2.2 tags: physical, elementary, ...
+  auto entity_of = [&](std::int32_t num_tags) { return num_tags >= 2 ? tags[1] : 0; };
   auto read_tags = [&](std::int32_t num_tags) {
     if (num_tags < 0 || num_tags > 64)
       in.fail("element tag count " + std::to_string(num_tags) + " (0 to 64 expected)");
@@ -80,7 +98,7 @@ void read_elements_22(GmshInput& in, GmshAssembler& out) {
       check_type(in, type, nv);
       const std::int32_t num_tags = in.int32("the number of tags");
       read_tags(num_tags);
-      read_element_nodes(in, out, type, nv, ref_of_tags(tags, num_tags));
+      read_element_nodes(in, out, type, nv, ref_of_tags(tags, num_tags), entity_of(num_tags), last);
     }
   } else {
     // Blocks: elm-type num-elm-follow num-tags, then per element: number, tags, nodes.
@@ -101,7 +119,8 @@ void read_elements_22(GmshInput& in, GmshAssembler& out) {
       for (std::int32_t e = 0; e < follow; ++e) {
         in.int32("an element number");
         read_tags(num_tags);
-        read_element_nodes(in, out, type, nv, ref_of_tags(tags, num_tags));
+        read_element_nodes(in, out, type, nv, ref_of_tags(tags, num_tags), entity_of(num_tags),
+                           last);
       }
       seen += static_cast<std::uint64_t>(follow);
     }

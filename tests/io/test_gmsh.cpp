@@ -157,6 +157,22 @@ TEST(Gmsh, EmptyAndVertexOnlyMeshes) {
   }
 }
 
+TEST(Gmsh, Msh22CopiesPerPhysicalGroupAreOneElement) {
+  // gmsh writes a 2.2 element once per physical group of its entity (here triangle 1 of entity
+  // 1 in groups 7 and 8, edge 1-2 of entity 2 in groups 10 and 30): every element was doubled.
+  test::ScratchDir dir;
+  test::write_text(dir.file("m.msh"),
+                   "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n"
+                   "3 1 1 0\n4 0 1 0\n$EndNodes\n$Elements\n6\n"
+                   "1 1 2 10 2 1 2\n2 1 2 30 2 1 2\n"
+                   "3 2 2 7 1 1 2 3\n4 2 2 8 1 1 2 3\n5 2 2 7 1 1 3 4\n6 2 2 8 1 1 3 4\n"
+                   "$EndElements\n");
+  const Mesh m = read_gmsh(dir.file("m.msh"));
+  EXPECT_EQ(m.num_triangles(), 2u);
+  EXPECT_EQ(m.tri_ref, (std::vector<std::int32_t>{7, 7}));
+  EXPECT_EQ(m.edge_ref, (std::vector<std::int32_t>{10}));
+}
+
 TEST(Gmsh, PlanarOptionKeepsZ) {
   test::ScratchDir dir;
   write_gmsh(test::square_2d(), dir.file("s.msh"));

@@ -70,6 +70,8 @@ const Edit kBad[] = {
      "bad.msh:20: $Elements: 1 element of type 3 (4-node quadrangle): riemesh reads 2-node "
      "lines, 3-node triangles and 4-node tetrahedra only"},
     {"4.1 0 8", "4.1 1 4", "bad.msh:2: $MeshFormat: binary MSH 4.1 with 4-byte sizes"},
+    {"$Entities", "$PartitionedEntities\n0\n$EndPartitionedEntities\n$Entities",
+     "bad.msh:4: $PartitionedEntities: partitioned MSH 4.1 files are not supported"},
     {"2 1 2 1\n", "2 1 99 1\n", "bad.msh:20: $Elements: unknown element type 99"},
     {"2 1 2 1\n", "2 1 2 5\n", "bad.msh:20: $Elements: the blocks hold more elements than the 1"},
     {"1 1 1 1\n", "1 2 1 1\n", "bad.msh:21: $Elements: the blocks hold 1 elements, not the 2"},
