@@ -178,6 +178,25 @@ bool make_planar(Mesh& mesh) {
     xy[2 * v] = mesh.coords[3 * v];
     xy[2 * v + 1] = mesh.coords[3 * v + 1];
   }
+  // Gmsh orients a 2D mesh as its curve loops: all counter-clockwise, or all clockwise (a loop
+  // given clockwise), which is the same mesh mirrored and is read turned over (it was called
+  // inverted by `check` and turned over by `convert` only). Triangles of both orientations are
+  // no planar mesh but a surface that lies in z = 0: it stays one.
+  std::size_t ccw = 0, cw = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); t += 3) {
+    const double* a = &xy[2 * static_cast<std::size_t>(mesh.triangles[t])];
+    const double* b = &xy[2 * static_cast<std::size_t>(mesh.triangles[t + 1])];
+    const double* c = &xy[2 * static_cast<std::size_t>(mesh.triangles[t + 2])];
+    const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    ccw += area2 > 0.0, cw += area2 < 0.0;
+  }
+  if (ccw > 0 && cw > 0) return false;
+  if (cw > 0) {
+    for (std::size_t t = 0; t < mesh.triangles.size(); t += 3)
+      std::swap(mesh.triangles[t + 1], mesh.triangles[t + 2]);
+    for (std::size_t e = 0; e < mesh.edges.size(); e += 2)
+      std::swap(mesh.edges[e], mesh.edges[e + 1]);
+  }
   mesh.coords = std::move(xy);
   mesh.dim = 2;
   return true;

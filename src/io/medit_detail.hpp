@@ -104,7 +104,8 @@ struct MeshAssembler {
 };
 
 /// True (and converts to dim 2) if mesh is a 3D mesh lying in z = 0 without tetrahedra,
-/// normals or tangents.
+/// normals or tangents, whose triangles are all counter-clockwise or all clockwise (then turned
+/// over, its edges too: Gmsh's meshes of clockwise loops).
 bool make_planar(Mesh& mesh);
 
 // ---- writing -------------------------------------------------------------------------------

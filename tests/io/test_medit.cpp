@@ -158,6 +158,20 @@ TEST(Medit, PlanarAsTwoD) {
       dir.file("bent.mesh"),
       "Dimension 3\nVertices 3\n0 0 0 1\n1 0 0 2\n0 1 1e-300 3\nTriangles 1\n1 2 3 4\n");
   EXPECT_EQ(read_medit(dir.file("bent.mesh")).dim, 3);
+
+  // All clockwise (Gmsh's mesh of a clockwise loop): the same mesh turned over, edges too.
+  const std::string square = "Dimension 3\nVertices 4\n0 0 0 0\n1 0 0 0\n1 1 0 0\n0 1 0 0\n";
+  test::write_text(dir.file("cw.mesh"), square + "Triangles 2\n1 3 2 1\n1 4 3 1\nEdges 1\n1 4 7\n");
+  const Mesh cw = read_medit(dir.file("cw.mesh"));
+  EXPECT_EQ(cw.dim, 2);
+  EXPECT_EQ(cw.triangles, (std::vector<Id>{0, 1, 2, 0, 2, 3}));
+  EXPECT_EQ(cw.edges, (std::vector<Id>{3, 0}));
+  // Both orientations: no planar mesh, a surface lying in z = 0 (it was made planar, and
+  // `convert` turned half of it over).
+  test::write_text(dir.file("mixed.mesh"), square + "Triangles 2\n1 3 2 1\n1 3 4 1\n");
+  const Mesh mixed = read_medit(dir.file("mixed.mesh"));
+  EXPECT_EQ(mixed.dim, 3);
+  EXPECT_EQ(mixed.triangles, (std::vector<Id>{0, 2, 1, 0, 2, 3}));
 }
 
 TEST(Medit, AsciiDialects) {
