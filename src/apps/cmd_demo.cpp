@@ -23,8 +23,18 @@
 namespace riemesh::cli {
 namespace {
 
+/// The demo's folder, made before the demo runs: a file, an empty name or a path that cannot
+/// be made is bad input named here (it was an internal error after the whole demo had run).
+void make_folder(const std::string& dir) {
+  if (dir.empty()) throw InputError("--dir: empty folder name");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir, ec))
+    throw InputError(dir + ": cannot make the demo's folder" + (ec ? ": " + ec.message() : ""));
+}
 
 void adaptation_demo(const std::string& dir) {
+  make_folder(dir);
   const AnalyticCase c{AnalyticField::kPolar2, 0.004};
   std::printf("Adapting the unit square (20 x 20 cells) to the polar-2 metric (sizes 0.004 to 0.1,\n"
               "anisotropy up to 25), re-evaluating the metric after each run as the UGAWG\n"
@@ -41,7 +51,6 @@ void adaptation_demo(const std::string& dir) {
                 r.report.passes.size());
     m = r.mesh;
   }
-  std::filesystem::create_directories(dir);
   write_medit(m, dir + "/square.mesh");
   Field f{"metric", FieldKind::kSymTensor, {}};
   for (const SymMat2& x : analytic_metrics(c, m)) f.values.insert(f.values.end(), {x.c[0], x.c[1], x.c[2]});

@@ -82,4 +82,12 @@ err=$("$R" adapt "$TMP/cw.mesh" --hsiz 0.2 -o "$TMP/n.mesh" -q 2>&1)
 # --hsiz 1e-300: 1/h² overflows; the error named an infinite metric coefficient, not the option.
 err=$("$R" adapt "$AILE" --hsiz 1e-300 -o "$TMP/s.mesh" 2>&1)
 [[ "$err" == "riemesh: error: --hsiz "* ]] && ok "adapt-hsiz-1e-300 ($err)" || ko "adapt-hsiz-1e-300: $err"
+# demo --dir on a file or an empty name: bad input at once (an internal error after the demo ran).
+touch "$TMP/afile"
+expect_error_matching demo-dir-file "afile: cannot make the demo's folder" demo --dir "$TMP/afile"
+expect_error_matching demo-dir-empty "empty folder name" demo --dir ""
+# Option values out of range name the option (they blamed the mesh or wrote unreadable files).
+expect_error_matching adapt-hmin-huge "^riemesh: error: --hmin must be" adapt "$AILE" --hsiz 0.1 --hmin 1e300 -o "$TMP/s.mesh"
+expect_error_matching hessian-hmax-tiny "^riemesh: error: --hmax must be" metric hessian "$SHARED/data/formats/lshape.mesh" "$SHARED/data/formats/lshape.sol" \
+  --complexity 100 --hmax 1e-320 -o "$TMP/h.sol"
 exit $fail
