@@ -245,6 +245,19 @@ void run(AdaptArgs& a) {
     throw InputError("--field needs the target complexity --complexity N (> 0)");
   if (a.field.empty() && a.complexity > 0.0)
     throw InputError("--complexity applies to --field: give the solution with --field F.sol");
+  // (They were accepted and ignored, even with values such as --norm abc.)
+  if (a.field.empty()) {
+    const char* given = !a.field_name.empty()        ? "--field-name"
+                        : a.norm != "2"              ? "--norm"
+                        : a.recovery != "lsq"        ? "--recovery"
+                        : std::isfinite(a.aniso_max) ? "--aniso-max"
+                                                     : nullptr;
+    if (given)
+      throw InputError(std::string(given) +
+                       " applies to --field: give the solution with --field F.sol");
+    if (a.fields.empty() && !a.out_fields.empty())
+      throw InputError("--out-fields applies to --fields (or --field): nothing to transfer");
+  }
   if (!a.field.empty() && a.fields.empty()) {
     // The solution itself is transferred to the new mesh, next to it by default.
     a.fields = a.field;

@@ -20,7 +20,10 @@ struct ConvertArgs {
 };
 
 void run_convert(const ConvertArgs& a) {
-  mesh_format(a.out);  // an unknown output extension fails before any work
+  // An unknown output extension fails before any work; --binary applies to .msh only (.meshb is
+  // the binary Medit file; it was accepted and ignored).
+  if (mesh_format(a.out) != MeshFormat::kGmsh && a.binary)
+    throw InputError("--binary applies to .msh output (for binary Medit, write .meshb)");
   Mesh mesh = load_mesh(a.in);
   if (a.boundary) mesh = extract_boundary2d(mesh);
   if (a.hilbert) renumber_hilbert(mesh);

@@ -24,6 +24,8 @@ struct GeometricArgs {
 };
 
 void run_geometric(GeometricArgs& a) {
+  if (!a.opt.anisotropic && a.opt.beta_fraction != SurfaceMetricOptions{}.beta_fraction)
+    throw InputError("--beta applies to --aniso (the isotropic metric has no anisotropy)");
   const Mesh mesh = load_mesh(a.mesh);
   require_measurable(mesh, a.mesh);
   if (mesh.kind() != MeshKind::kSurface)

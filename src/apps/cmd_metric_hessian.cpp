@@ -254,6 +254,20 @@ void combine(CombineArgs& a) {
   require_hgrad(a.hgrad);
   if (a.mode == "lp") return combine_spacetime(a);
   if (a.mode != "intersect") throw InputError("--mode must be intersect or lp, got '" + a.mode + "'");
+  // The lp options were accepted and ignored in intersect mode, even contradicting ones.
+  const HessianMetricOptions defaults;
+  const char* lp_only = a.norm != "2"                             ? "--norm"
+                        : a.opt.complexity != defaults.complexity ? "--complexity"
+                        : a.intervals != 1                        ? "--intervals"
+                        : !a.meshes.empty()                       ? "--meshes"
+                        : a.time != "max"                         ? "--time"
+                        : !a.lengths.empty()                      ? "--lengths"
+                        : !a.time_steps.empty()                   ? "--time-steps"
+                        : a.opt.hmin != defaults.hmin             ? "--hmin"
+                        : a.opt.hmax != defaults.hmax             ? "--hmax"
+                        : a.opt.aniso_max != defaults.aniso_max   ? "--aniso-max"
+                                                                  : nullptr;
+  if (lp_only) throw InputError(std::string(lp_only) + " applies to --mode lp");
   if (a.mesh.empty()) throw InputError("--mesh is required (the mesh the metrics live on)");
   const Mesh mesh = load_mesh(a.mesh);
   require_measurable(mesh, a.mesh);

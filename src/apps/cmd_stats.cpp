@@ -17,6 +17,7 @@ struct StatsArgs {
   std::string file, metric, plot;
   bool json = false;
   int width = 900;
+  const CLI::Option* width_given = nullptr;
 };
 
 void write_plot(const StatsReport& r, const std::string& path, int width) {
@@ -33,6 +34,8 @@ void write_plot(const StatsReport& r, const std::string& path, int width) {
 }
 
 void run_stats(const StatsArgs& a) {
+  if (a.plot.empty() && a.width_given->count() > 0)
+    throw InputError("--width applies to --plot: give the picture with --plot OUT.png");
   const Mesh mesh = load_mesh(a.file);
   require_measurable(mesh, a.file);
   const std::vector<double> metric =
@@ -54,9 +57,9 @@ void register_stats(CLI::App& app) {
   cmd->add_option("--metric", a->metric, "Metric field (.sol/.solb, one tensor per vertex)");
   cmd->add_flag("--json", a->json, "Print one JSON object (keys in README.md)");
   cmd->add_option("--plot", a->plot, "Draw the histograms into OUT.png or OUT.svg");
-  cmd->add_option("--width", a->width, "Width of the --plot picture in pixels")
-      ->capture_default_str()
-      ->check(CLI::Range(64, 8192));
+  a->width_given = cmd->add_option("--width", a->width, "Width of the --plot picture in pixels")
+                       ->capture_default_str()
+                       ->check(CLI::Range(64, 8192));
   cmd->callback([a] { run_stats(*a); });
 }
 

@@ -70,6 +70,8 @@ void run(UnsteadyArgs& a) {
   if (a.time == "max") a.opt.time = TimeCombination::kMax;
   else if (a.time == "integral") a.opt.time = TimeCombination::kIntegral;
   else throw InputError("--time must be max or integral, got '" + a.time + "'");
+  if (a.opt.combine == UnsteadyCombine::kIntersect && a.time != "max")
+    throw InputError("--time applies to --combine lp (intersect takes every sample's metric)");
   a.opt.single = !a.no_single;
   a.opt.validate();
   UnsteadyCallback on_step;

@@ -90,4 +90,19 @@ expect_error_matching demo-dir-empty "empty folder name" demo --dir ""
 expect_error_matching adapt-hmin-huge "^riemesh: error: --hmin must be" adapt "$AILE" --hsiz 0.1 --hmin 1e300 -o "$TMP/s.mesh"
 expect_error_matching hessian-hmax-tiny "^riemesh: error: --hmax must be" metric hessian "$SHARED/data/formats/lshape.mesh" "$SHARED/data/formats/lshape.sol" \
   --complexity 100 --hmax 1e-320 -o "$TMP/h.sol"
+# Options that apply to another one were accepted and ignored, even with invalid values.
+L="$SHARED/data/formats/lshape"
+expect_error_matching adapt-norm-without-field "^riemesh: error: --norm applies to --field" \
+  adapt "$L.mesh" --metric "${L}_metric.sol" --norm abc -o "$TMP/s.mesh"
+expect_error_matching adapt-out-fields-alone "^riemesh: error: --out-fields applies to --fields" \
+  adapt "$L.mesh" --hsiz 0.2 --out-fields "$TMP/f.sol" -o "$TMP/s.mesh"
+expect_error_matching convert-binary-mesh "^riemesh: error: --binary applies to .msh" \
+  convert --binary "$AILE" "$TMP/o.mesh"
+expect_error_matching stats-width-alone "^riemesh: error: --width applies to --plot" stats "$AILE" --width 100
+expect_error_matching combine-lp-option "^riemesh: error: --complexity applies to --mode lp" \
+  metric combine "${L}_metric.sol" --mesh "$L.mesh" --complexity 5 -o "$TMP/c.sol"
+expect_error_matching unsteady-time-intersect "^riemesh: error: --time applies to --combine lp" \
+  unsteady --complexities 200 --combine intersect --time integral --no-single
+expect_error_matching geometric-beta-alone "^riemesh: error: --beta applies to --aniso" \
+  metric geometric "$SHARED/data/surf/fandisk.mesh" --beta 0.5 -o "$TMP/g.sol"
 exit $fail
