@@ -46,7 +46,9 @@ SymMat<D> abs_hessian(const SymMat<D>& h, double floor);
 
 /// H_i of one sub-interval of length `length` from the Hessians of its samples (equally spaced,
 /// first and last at the ends of the interval; one sample stands for the whole interval), on the
-/// same vertices. Absolute eigenvalues are floored at 1e-12 of the largest over all samples.
+/// same vertices. Absolute eigenvalues are floored at 1e-12 of the largest over all samples;
+/// samples all zero give H_i = 0 (no interpolation error: the sub-interval takes almost none of
+/// the complexity, and the coarsest metric its bounds allow).
 /// Throws InputError for no sample, samples of different sizes, non-finite values or
 /// length <= 0.
 template <int D>

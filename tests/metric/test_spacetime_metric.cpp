@@ -100,6 +100,33 @@ TEST(SpaceTime, LpMetricsHaveTheRequestedMeanComplexity) {
   EXPECT_NEAR((2.0 * r[0].complexity + r[1].complexity) / 3.0 / 3000.0, 1.0, 0.05);
 }
 
+TEST(SpaceTime, AnIntervalWithoutErrorTakesNoComplexity) {
+  // Sub-interval 1: a linear solution (zero Hessians); 2: a small one (1e-6). Floored to the
+  // identity, interval 1 took 1999.8 of 2000; now the whole budget goes where the error is,
+  // whatever its scale.
+  const Mesh m = unit_square(10, 10);
+  const std::vector<std::vector<SymMat2>> zero = {
+      std::vector<SymMat2>(m.num_vertices(), SymMat2::zero())};
+  const std::vector<std::vector<SymMat2>> small = {
+      std::vector<SymMat2>(m.num_vertices(), SymMat2::diagonal(1e-6))};
+  for (const TimeCombination how : {TimeCombination::kMax, TimeCombination::kIntegral}) {
+    const std::vector<SymMat2> h0 = combine_in_time<2>(zero, 0.5, how);
+    for (const SymMat2& h : h0) EXPECT_EQ(h, SymMat2::zero());
+    const std::vector<SymMat2> h1 = combine_in_time<2>(small, 0.5, how);
+    const std::vector<SpaceTimeInterval<2>> in = {{&m, h0, 0.5}, {&m, h1, 0.5}};
+    const std::vector<double> n = spacetime_complexities<2>(in, 1000.0, 2.0);
+    EXPECT_EQ(n[0], 0.0);
+    EXPECT_NEAR(n[1], 2000.0, 1e-9);
+    HessianMetricOptions o;
+    o.complexity = 1000.0;
+    o.hmax = 0.5;
+    std::vector<MetricReport> r;
+    const auto metrics = spacetime_lp_metrics<2>(in, o, &r);
+    for (const SymMat2& x : metrics[0]) EXPECT_NEAR(x(0, 0), 4.0, 1e-9);  // hmax everywhere
+    EXPECT_NEAR(r[1].complexity, 2000.0, 1e-6);
+  }
+}
+
 TEST(SpaceTime, OneIntervalIsTheSteadyMetric) {
   const Mesh m = unit_square(9, 9);
   const std::vector<SymMat2> h = front_hessians(m, 0.5);
