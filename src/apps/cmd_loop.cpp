@@ -164,27 +164,13 @@ void write_plot(const AnalyticFunction& f, const LoopArgs& a, const LoopResult& 
   plot_loglog(p, a.plot);
 }
 
-/// Fails early (before a long loop) on a plot path that is neither .png nor .svg.
-void require_image_path(const std::string& path) {
-  auto ends = [&path](const char* e) {
-    const std::string ext = e;
-    if (path.size() < ext.size()) return false;
-    for (std::size_t i = 0; i < ext.size(); ++i)
-      if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i])
-        return false;
-    return true;
-  };
-  if (!ends(".png") && !ends(".svg"))
-    throw InputError(path + ": unknown image extension (expected .png or .svg)");
-}
-
 void run(LoopArgs& a) {
   const AnalyticFunction& f = analytic_function(a.function);
   a.opt.complexities = parse_numbers(a.complexities, "--complexities");
   a.opt.recovery = parse_recovery_method(a.recovery);
   a.opt.uniform = a.uniform || !a.plot.empty();
   a.opt.validate();
-  if (!a.plot.empty()) require_image_path(a.plot);
+  if (!a.plot.empty()) require_image_output(a.plot);  // before the loop, not after
   LoopCallback on_step;
   bool uniform_header = false;
   if (!a.json) {

@@ -7,6 +7,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/mesh_args.hpp"
+#include "apps/parse.hpp"
 #include "core/error.hpp"
 #include "render/render.hpp"
 
@@ -28,6 +29,8 @@ ViewFrom parse_view(const std::string& v) {
 void run_render(const RenderArgs& a) {
   if (a.color == "ref" && !a.metric.empty())
     throw InputError("--metric has no effect with --color ref");
+  // The output first: its errors were reported after the drawing, under the input's name.
+  require_image_output(a.out);
   const Mesh mesh = load_mesh(a.file);
   require_measurable(mesh, a.file);
   if (!a.view.empty() && mesh.dim == 2)

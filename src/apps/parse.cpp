@@ -1,11 +1,13 @@
 #include "apps/parse.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace riemesh::cli {
 
@@ -35,6 +37,20 @@ void require_size_option(const std::string& option, double size) {
   char msg[120];
   std::snprintf(msg, sizeof msg, " must be a finite size > 0 (from 1e-150 to 1e150), got %g", size);
   throw InputError(option + msg);
+}
+
+void require_image_output(const std::string& path) {
+  auto ends = [&path](const char* e) {
+    const std::string ext = e;
+    if (path.size() < ext.size()) return false;
+    for (std::size_t i = 0; i < ext.size(); ++i)
+      if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i])
+        return false;
+    return true;
+  };
+  if (!ends(".png") && !ends(".svg"))
+    throw InputError(path + ": unknown image extension (expected .png or .svg)");
+  require_writable(path);
 }
 
 }  // namespace riemesh::cli

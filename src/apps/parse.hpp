@@ -13,4 +13,8 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& wh
 /// the user never gave ("not positive definite", "infinite coefficient").
 void require_size_option(const std::string& option, double size);
 
+/// Throws InputError naming `path` unless it ends in .png or .svg (any case) and can be written
+/// (its folder exists): checked before the work, not after it.
+void require_image_output(const std::string& path);
+
 }  // namespace riemesh::cli

@@ -35,7 +35,12 @@ std::string read_file_bytes(const std::string& path) {
   if (!f) throw InputError(path + ": cannot open for reading: " + errno_text());
   std::string bytes;
   struct stat st {};
-  if (::fstat(::fileno(f), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+  const bool stated = ::fstat(::fileno(f), &st) == 0;
+  if (stated && S_ISDIR(st.st_mode)) {
+    std::fclose(f);
+    throw InputError(path + ": is a folder, not a file");  // (was "read error")
+  }
+  if (stated && S_ISREG(st.st_mode) && st.st_size > 0) {
     bytes.resize(static_cast<std::size_t>(st.st_size));
     bytes.resize(std::fread(bytes.data(), 1, bytes.size(), f));
   }

@@ -11,7 +11,10 @@ namespace riemesh::io_detail {
 
 class TextScanner {
  public:
-  explicit TextScanner(std::string_view text) : text_(text) {}
+  /// A UTF-8 byte-order mark (a Windows editor's) is skipped.
+  explicit TextScanner(std::string_view text) : text_(text) {
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
+  }
 
   /// Moves to the next token; false at the end of the text.
   bool next(std::string_view& token);

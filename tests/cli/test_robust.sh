@@ -105,4 +105,12 @@ expect_error_matching unsteady-time-intersect "^riemesh: error: --time applies t
   unsteady --complexities 200 --combine intersect --time integral --no-single
 expect_error_matching geometric-beta-alone "^riemesh: error: --beta applies to --aniso" \
   metric geometric "$SHARED/data/surf/fandisk.mesh" --beta 0.5 -o "$TMP/g.sol"
+# A folder as input, and render's output checked before the drawing (its errors carried the
+# input's name).
+mkdir -p "$TMP/dd.msh"
+expect_error_matching folder-input "dd.msh: is a folder, not a file" check "$TMP/dd.msh"
+expect_error_matching render-output-extension "^riemesh: error: $TMP/o.jpg: unknown image extension" \
+  render "$AILE" -o "$TMP/o.jpg"
+expect_error_matching loop-plot-folder "^riemesh: error: /nonexistent-folder/x.png: cannot create" \
+  loop --complexities 1000 --plot /nonexistent-folder/x.png
 exit $fail

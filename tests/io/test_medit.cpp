@@ -179,7 +179,7 @@ TEST(Medit, AsciiDialects) {
   // without a known layout, BAMG strings, repeated sections (meshio), no End; an empty section
   // of elements riemesh does not read (a non-empty one is refused: MeditErrors.AsciiTable).
   const std::string text =
-      "# header comment\n"
+      "\xEF\xBB\xBF# header comment (after a UTF-8 byte-order mark)\n"
       "meshversionformatted\n1\n\n"
       "DIMENSION 2 # inline comment\n"
       "Identifier\n\"some name, Date: 1/2/3\"\n"
