@@ -155,6 +155,8 @@ void run_surface(const AdaptArgs& a, const Mesh& mesh) {
   s.options.insert = !a.noinsert;
   s.options.swap = !a.noswap;
   s.options.move = !a.nomove;
+  // --passes bounds the surface remesher's cycles (it had no effect); its default keeps theirs.
+  if (a.opt.max_passes != Adapt2dOptions{}.max_passes) s.options.max_cycles = a.opt.max_passes;
   s.quiet = a.quiet || a.verbosity < 0;
   run_adapt_surface(s, mesh);
 }
@@ -272,6 +274,10 @@ void run(AdaptArgs& a) {
   if (!a.geometry.empty() && mesh.kind() != MeshKind::kVolume)
     throw InputError("--geometry applies to tetrahedral volumes");
   require_outputs(a);
+  // The ranges of --hmin, --hmax, --hgrad, --hausd, --angle, --passes and --interp hold for
+  // surfaces too (--hmax -1, --hgrad nan, --interp bogus were taken there).
+  a.opt.validate();
+  parse_interp_scheme(a.interp);
   if (surface) return run_surface(a, mesh);
   if (sources == 0)
     throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");

@@ -32,10 +32,11 @@ void run_geometric(GeometricArgs& a) {
     throw InputError(a.mesh + ": metric geometric needs a surface mesh (3D triangles, no tetrahedra)");
   a.features.detect_angle = !a.nr;
   const Adjacency adj = build_adjacency(mesh);
-  const SurfaceFeatures f = detect_features(mesh, adj, a.features);
-  const SurfaceSectors s = surface_sectors(mesh, adj, f);
+  SurfaceFeatures f;
   SurfaceMetricReport r;
   const std::vector<SymMat3> m = naming_file(a.mesh, [&] {
+    f = detect_features(mesh, adj, a.features);
+    const SurfaceSectors s = surface_sectors(mesh, adj, f);
     return geometric_surface_metric(mesh, adj, f, vertex_curvatures(mesh, adj, f, s), a.opt, &r);
   });
   Field out{"metric", FieldKind::kSymTensor, {}};

@@ -2,6 +2,7 @@
 #include "remesh/surface_adapt.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -160,6 +161,27 @@ double triangle_quality(const double* a, const double* b, const double* c) {
   return surface_detail::quality({{a[0], a[1], a[2]}}, {{b[0], b[1], b[2]}}, {{c[0], c[1], c[2]}});
 }
 
+namespace {
+
+/// A triangle listed twice (same three vertices) made zero-area triangles in the output.
+void require_no_duplicate_triangles(const Mesh& m) {
+  std::vector<std::array<Id, 4>> keys(m.num_triangles());
+  for (std::size_t t = 0; t < keys.size(); ++t) {
+    std::array<Id, 3> v{m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]};
+    std::sort(v.begin(), v.end());
+    keys[t] = {v[0], v[1], v[2], static_cast<Id>(t)};
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (std::equal(keys[i].begin(), keys[i].begin() + 3, keys[i - 1].begin()))
+      throw InputError("triangles " + std::to_string(keys[i - 1][3] + 1) + " and " +
+                       std::to_string(keys[i][3] + 1) + " have the same vertices (" +
+                       std::to_string(keys[i][0] + 1) + ", " + std::to_string(keys[i][1] + 1) +
+                       ", " + std::to_string(keys[i][2] + 1) + ")");
+}
+
+}  // namespace
+
 Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
                    SurfaceAdaptReport* report) {
   options.validate();
@@ -167,6 +189,7 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
     throw InputError("adapt_surface: need a surface mesh (3D triangles, no tetrahedra)");
   if (!options.metric.empty() && options.metric.size() != input.num_vertices())
     throw InputError("adapt_surface: the metric needs one tensor per input vertex");
+  require_no_duplicate_triangles(input);
   // The metric from the projection's own analysis (features and curvature computed once).
   const SurfaceProjection geo(
       input, options.features,

@@ -30,6 +30,15 @@ void require_surface(const Mesh& mesh, const Adjacency& adj) {
   if (adj.verts_per_simplex != 3 || adj.num_elements() != mesh.num_triangles() ||
       adj.num_vertices != mesh.num_vertices())
     throw InputError("surface analysis: adjacency not built from the mesh's triangles");
+  // A triangle that repeats a vertex has an edge the adjacency does not list: the analysis wrote
+  // before its arrays (heap corruption, abort).
+  for (std::size_t t = 0; t < mesh.num_triangles(); ++t) {
+    const Id* v = &mesh.triangles[3 * t];
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
+      throw InputError("triangle " + std::to_string(t + 1) + " repeats vertex " +
+                       std::to_string((v[0] == v[1] || v[0] == v[2] ? v[0] : v[1]) + 1) +
+                       " (a degenerate triangle)");
+  }
 }
 
 /// Triangles on each adjacency edge: count, and the first two (with their local edge index).

@@ -86,4 +86,19 @@ expect_error adapt-surface-nosurf adapt "$IN" -o "$TMP/x.mesh" --hsiz 0.2 --nosu
 expect_error_matching adapt-hsiz-zero "--hsiz must be a finite size > 0 .*got 0" \
   adapt "$IN" -o "$TMP/x.mesh" --hsiz 0
 expect_no_file adapt-surface-no-output "$TMP/x.mesh"
+# A triangle repeating a vertex aborted adapt and metric geometric (heap corruption); a triangle
+# listed twice gave zero-area output triangles; option ranges were not checked on surfaces.
+tet='MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n'
+printf "${tet}Triangles\n4\n1 3 2 1\n1 2 4 1\n2 3 4 1\n1 1 3 1\nEnd\n" >"$TMP/rep.mesh"
+printf "${tet}Triangles\n5\n1 3 2 1\n1 2 4 1\n2 3 4 1\n1 4 3 1\n1 3 4 1\nEnd\n" >"$TMP/dup.mesh"
+expect_error_matching surface-repeated-vertex "rep.mesh: triangle 4 repeats vertex 1" \
+  adapt "$TMP/rep.mesh" --hausd 0.01 -o "$TMP/x.mesh"
+expect_error_matching geometric-repeated-vertex "rep.mesh: triangle 4 repeats vertex 1" \
+  metric geometric "$TMP/rep.mesh" --hausd 0.01 -o "$TMP/x.sol"
+expect_error_matching surface-duplicate-triangle "dup.mesh: triangles 4 and 5 have the same vertices" \
+  adapt "$TMP/dup.mesh" --hsiz 0.05 -o "$TMP/x.mesh"
+expect_error_matching surface-hmax-negative "^riemesh: error: --hmax must be" \
+  adapt "$IN" --hausd 0.01 --hmax -1 -o "$TMP/x.mesh"
+expect_error_matching surface-interp-unknown "unknown interpolation scheme 'bogus'" \
+  adapt "$IN" --hausd 0.01 --interp bogus -o "$TMP/x.mesh"
 exit $fail
