@@ -119,6 +119,9 @@ std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
     const GradationReport r = gradate<D>(in.coords, adj.edges, std::span<SymMat<D>>(out), g);
     report.gradation_before = r.measure_before;
     report.gradation_after = r.measure_after;
+    // Gradation only shrinks sizes: --hmin again after it (it left 0.00991 for --hmin 0.01).
+    if (hi < std::numeric_limits<double>::max())
+      for (SymMat<D>& m : out) m = project_spd(m, 0.0, hi);
   }
   return out;
 }

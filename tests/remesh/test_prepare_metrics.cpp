@@ -2,11 +2,15 @@
 // against the complexity integrated numerically.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
 
+#include "core/eigen.hpp"
 #include "core/error.hpp"
+#include "mesh/adjacency.hpp"
+#include "mesh/fixtures.hpp"
 #include "metric/metric.hpp"
 #include "remesh/prepare_metrics.hpp"
 
@@ -86,4 +90,27 @@ TEST(PrepareMetrics, GeometricMeanIsAnUpperBoundOfLinearSizes) {
     EXPECT_FALSE(refused(one_tet(h), 1.001 * bound, ComplexityBound::kLinearSizes));
     EXPECT_TRUE(refused(one_tet(h), 0.999 * bound, ComplexityBound::kLinearSizes));
   }
+}
+
+TEST(PrepareMetrics, HminHoldsAfterGradation) {
+  // Anisotropic sizes 0.001 x 0.2 clipped to --hmin 0.01, turned 60° from vertex to vertex:
+  // gradation intersects neighbouring ellipses, whose intersection is finer than either in
+  // directions between theirs, after the clip (0.00991 seen for --hmin 0.01).
+  const Mesh m = unit_square(8, 8);
+  std::vector<SymMat2> metrics(m.num_vertices());
+  for (std::size_t v = 0; v < metrics.size(); ++v) {
+    const double a = 1.0471975511965976 * static_cast<double>(v % 3);
+    const double c = std::cos(a), s = std::sin(a), l1 = 1.0 / (0.001 * 0.001), l2 = 1.0 / 0.04;
+    metrics[v] = SymMat2{{l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c}};
+  }
+  Adapt2dOptions o;
+  o.hmin = 0.01;
+  o.hgrad = 1.3;
+  Adapt2dReport report;
+  const std::vector<SymMat2> out =
+      prepare_metrics<2>(m, build_adjacency(m.triangles, 3, m.num_vertices()),
+                         std::span<const SymMat2>(metrics), o, report);
+  double largest = 0.0;
+  for (const SymMat2& x : out) largest = std::max(largest, eigen(x).values[1]);
+  EXPECT_LE(largest, (1.0 + 1e-9) / (0.01 * 0.01));
 }
