@@ -60,7 +60,17 @@ void run(const TransferArgs& a) {
   if (in.location == SolLocation::kVertices) {
     if (a.p0)
       throw InputError(a.old_sol + ": --p0 asks for element fields, the file holds SolAtVertices");
-    write_sol(a.output, transfer_p1(from, in.fields, to), to.dim);
+    P1TransferReport report;
+    write_sol(a.output, transfer_p1(from, in.fields, to, &report), to.dim);
+    // Vertices outside the old mesh take the values at their projection: silent before, even
+    // onto a mesh of another domain (the P0 transfer reports its uncovered measure).
+    std::printf("P1 transfer: %zu vertices", to.num_vertices());
+    if (report.outside > 0)
+      std::printf(
+          ", %zu outside the old mesh (up to %.3g from it: they take the values at their "
+          "projection)",
+          report.outside, report.farthest);
+    std::printf("\n");
     return;
   }
   const bool planar = from.kind() == MeshKind::kPlanar;

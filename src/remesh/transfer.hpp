@@ -13,7 +13,15 @@ namespace riemesh {
 /// vertices of `to`; vertices outside `from` (a curved boundary) take the values at their
 /// projection. 2D triangle meshes and tetrahedral volumes. Throws InputError for fields whose size
 /// does not match `from` or meshes of different kinds.
-std::vector<Field> transfer_p1(const Mesh& from, const std::vector<Field>& fields, const Mesh& to);
+/// What a P1 transfer met: the new vertices outside the old mesh and their largest distance to
+/// it (a curved boundary remeshed: small; another domain: as large as the gap).
+struct P1TransferReport {
+  std::size_t outside = 0;
+  double farthest = 0.0;
+};
+
+std::vector<Field> transfer_p1(const Mesh& from, const std::vector<Field>& fields, const Mesh& to,
+                               P1TransferReport* report = nullptr);
 
 /// What a conservative transfer measured (measures are areas in 2D, volumes in 3D). Integrals are
 /// Σ value × measure per field component (fields in order, components in order).

@@ -33,3 +33,20 @@ TEST(Transfer, RejectsMismatchedFields) {
   Field bad{"u", FieldKind::kScalar, {1.0, 2.0}};
   EXPECT_THROW(transfer_p1(m, {bad}, m), InputError);
 }
+
+TEST(Transfer, VerticesOutsideTheOldMeshAreReported) {
+  // The same square shifted by 0.5 in x: the vertices beyond x = 1 are outside, up to 0.5 away
+  // (the transfer said nothing of them before).
+  const Mesh from = unit_square(4, 4);
+  Mesh to = from;
+  for (std::size_t v = 0; v < to.num_vertices(); ++v) to.coords[2 * v] += 0.5;
+  const std::vector<Field> f = {
+      {"u", FieldKind::kScalar, std::vector<double>(from.num_vertices(), 1.0)}};
+  P1TransferReport report;
+  transfer_p1(from, f, to, &report);
+  EXPECT_EQ(report.outside, 10u);  // the columns x = 1.25 and 1.5
+  EXPECT_NEAR(report.farthest, 0.5, 1e-12);
+  transfer_p1(from, f, from, &report);
+  EXPECT_EQ(report.outside, 0u);
+  EXPECT_EQ(report.farthest, 0.0);
+}
