@@ -52,6 +52,11 @@ int parse_metrics(const std::vector<std::string>& texts, std::vector<std::vector
 template <int D>
 void print_metric(const SymMat<D>& m, bool json) {
   const MetricSummary<D> s = summarize(m);
+  // NaN and inf were printed (invalid JSON too), with exit 0.
+  bool finite = is_finite(m) && std::isfinite(s.anisotropy) && std::isfinite(s.det) && s.det > 0.0;
+  for (int i = 0; i < D; ++i) finite = finite && std::isfinite(s.sizes[i]);
+  if (!finite)
+    throw InputError("the resulting metric (or its determinant) is out of the range of doubles");
   std::fputs(json ? (to_json(s) + "\n").c_str() : to_text(s).c_str(), stdout);
 }
 
@@ -80,12 +85,31 @@ void run_intersect(const CalcArgs& a, const std::vector<std::vector<double>>& c)
   print_metric(m, a.json);
 }
 
+/// Throws InputError unless every coefficient of m is finite and m is positive definite: an
+/// answer out of the doubles' range (NaN and inf were printed, with exit 0).
+template <int D>
+void require_representable(const SymMat<D>& m, const char* what) {
+  if (!is_finite(m) || !is_spd(m))
+    throw InputError(std::string(what) + ": the answer is out of the range of doubles");
+}
+
 template <int D>
 void run_element(const CalcArgs& a, const std::vector<std::vector<double>>& pts) {
+  // Computed on the simplex scaled to a unit longest edge L, then divided by L²: the sums of
+  // v vᵀ over edges of 1e78 overflowed (NaN) though the answer, 1e-156, is a double.
   Vec<D> p[D + 1];
+  double longest = 0.0;  // the largest coordinate difference (no squares: 1e200 overflowed)
   for (int i = 0; i <= D; ++i)
-    for (int k = 0; k < D; ++k) p[i][k] = pts[i][k];
-  print_metric(element_metric<D>(p), a.json);
+    for (int j = i + 1; j <= D; ++j)
+      for (int k = 0; k < D; ++k) longest = std::max(longest, std::abs(pts[i][k] - pts[j][k]));
+  if (!(longest > 0.0) || !std::isfinite(longest))
+    throw InputError("element: the points must be distinct and their distances finite");
+  for (int i = 0; i <= D; ++i)
+    for (int k = 0; k < D; ++k) p[i][k] = (pts[i][k] - pts[0][k]) / longest;
+  SymMat<D> m = element_metric<D>(p);
+  for (double& c : m.c) c = c / longest / longest;
+  require_representable(m, "element");
+  print_metric(m, a.json);
 }
 
 template <int D>
@@ -93,7 +117,11 @@ void run_length(const CalcArgs& a, const std::vector<double>& coeffs, const std:
   const SymMat<D> m = to_metric<D>(coeffs, "--metric");
   Vec<D> u{};
   for (int k = 0; k < D; ++k) u[k] = v[k];
-  const double l = length(m, u);
+  // |u|_M = s |u/s|_M with s the largest |u_k|: uᵀ M u overflowed for u = (1e300, 0).
+  double scale = 0.0;
+  for (int k = 0; k < D; ++k) scale = std::max(scale, std::abs(u[k]));
+  const double l = scale > 0.0 ? scale * length(m, (1.0 / scale) * u) : 0.0;
+  if (!std::isfinite(l)) throw InputError("length: the answer is out of the range of doubles");
   if (a.json)
     std::printf("{\"length\": %.17g}\n", l);
   else

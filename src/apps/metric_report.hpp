@@ -1,5 +1,7 @@
 #pragma once
 // Printing a metric for people (sizes, directions, anisotropy, determinant) or as one JSON object.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -17,10 +19,22 @@ struct MetricSummary {
   double det;
 };
 
+/// Computed on m over its largest coefficient c (the eigen solver overflowed on entries of
+/// 1e160: NaN directions), sizes and determinant scaled back.
 template <int D>
 MetricSummary<D> summarize(const SymMat<D>& m) {
-  const MetricSizes<D> s = sizes(m);
-  return {m, s.sizes, s.directions, s.sizes[0] / s.sizes[D - 1], riemesh::det(m)};
+  double c = 0.0;
+  for (const double x : m.c) c = std::max(c, std::abs(x));
+  if (!(c > 0.0) || !std::isfinite(c)) c = 1.0;
+  const MetricSizes<D> s = sizes((1.0 / c) * m);
+  MetricSummary<D> out{m, s.sizes, s.directions, s.sizes[0] / s.sizes[D - 1], 0.0};
+  double det = 1.0;
+  for (int i = 0; i < D; ++i) {
+    out.sizes[i] = s.sizes[i] / std::sqrt(c);
+    det *= c / (s.sizes[i] * s.sizes[i]);  // each factor in range: λ_i of m
+  }
+  out.det = det;
+  return out;
 }
 
 /// The JSON object {"metric": [...], "sizes": [...], "directions": [...], "anisotropy": a,
