@@ -79,5 +79,5 @@ out=$("$R" metric calc --json element 0,0 1e78,0 0,1e78)
 [[ "$out" == '{"metric": [1e-156, 5.0000000000000002e-157, 1e-156],'* ]] && ok "element-1e78" || ko "element-1e78: $out"
 out=$("$R" metric calc --json length --metric 1,0,4 1e300,0)
 [ "$out" = '{"length": 1.0000000000000001e+300}' ] && ok "length-1e300" || ko "length-1e300: $out"
-expect_error element-det-overflow metric calc element 0,0 1e-80,0 0,1e-80
+expect_error element-det-overflow element 0,0 1e-80,0 0,1e-80
 exit $fail
