@@ -113,7 +113,19 @@ void register_distance(CLI::App& app) {
   cmd->add_option("--spacing", a->options.spacing,
                   "Finer lattice on large triangles: order >= longest edge / S (0: off)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            // (CLI::NonNegativeNumber printed the largest double, 320 digits, for inf.)
+            double v = 0.0;
+            try {
+              v = std::stod(text);
+            } catch (...) {
+              return std::string("expected a number, got '" + text + "'");
+            }
+            return v >= 0.0 && std::isfinite(v) ? std::string()
+                                                : "must be a finite length >= 0, got " + text;
+          },
+          "LENGTH"));
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->callback([a] { run_distance(*a); });
 }

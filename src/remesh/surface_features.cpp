@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -38,6 +39,18 @@ void require_surface(const Mesh& mesh, const Adjacency& adj) {
       throw InputError("triangle " + std::to_string(t + 1) + " repeats vertex " +
                        std::to_string((v[0] == v[1] || v[0] == v[2] ? v[0] : v[1]) + 1) +
                        " (a degenerate triangle)");
+    // Two vertices at one point (a UV sphere's unmerged pole): the error came from the
+    // gradation, naming an internal 0-based edge.
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 a = vertex_at(mesh, v[i]), b = vertex_at(mesh, v[(i + 1) % 3]);
+      if (a == b) {
+        char at[96];
+        std::snprintf(at, sizeof at, " at (%g, %g, %g)", a[0], a[1], a[2]);
+        throw InputError("triangle " + std::to_string(t + 1) + ": vertices " +
+                         std::to_string(v[i] + 1) + " and " + std::to_string(v[(i + 1) % 3] + 1) +
+                         " are at the same point" + at + " (merge them)");
+      }
+    }
   }
 }
 

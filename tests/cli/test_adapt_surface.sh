@@ -101,4 +101,10 @@ expect_error_matching surface-hmax-negative "^riemesh: error: --hmax must be" \
   adapt "$IN" --hausd 0.01 --hmax -1 -o "$TMP/x.mesh"
 expect_error_matching surface-interp-unknown "unknown interpolation scheme 'bogus'" \
   adapt "$IN" --hausd 0.01 --interp bogus -o "$TMP/x.mesh"
+# Two vertices of a triangle at one point: named (the error came from the gradation, "edge 0").
+printf "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 1 0\nTriangles\n4\n1 3 2 1\n1 2 4 1\n2 5 4 1\n1 4 3 1\nEnd\n" >"$TMP/same.mesh"
+expect_error_matching surface-coincident-vertices "same.mesh: triangle 3: vertices 5 and 4 are at the same point" \
+  adapt "$TMP/same.mesh" --hausd 0.01 -o "$TMP/x.mesh"
+expect_error_matching distance-spacing-inf "^riemesh: error: --spacing: must be a finite length >= 0, got inf" \
+  distance "$IN" "$IN" --spacing inf
 exit $fail
