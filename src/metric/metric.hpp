@@ -101,8 +101,17 @@ inline void require_metric(const SymMat<D>& m, const std::string& what) {
     throw InputError(what + ": metric too large (its determinant overflows)");
   // Sizes beyond ~1e150 (2D; ~1e100 in 3D): the determinant underflows, and the background mesh
   // then took the tensor for not positive definite, blaming the mesh.
-  if (!(det(m) >= std::numeric_limits<double>::min()))
+  if (!(det(m) >= std::numeric_limits<double>::min())) {
+    // A product of diagonal entries far above the determinant is cancellation, not underflow:
+    // an SPD tensor of anisotropy ~1e5 was said to be "too small".
+    double diagonal = 1.0;
+    for (int i = 0; i < D; ++i) diagonal *= m(i, i);
+    if (diagonal >= 1e-200)
+      throw InputError(what +
+                       ": metric too ill-conditioned (its determinant cancels out in "
+                       "double precision)");
     throw InputError(what + ": metric too small (its determinant underflows)");
+  }
 }
 
 /// The metric every entry of `metrics` is, when they are all the same (exactly: a constant

@@ -69,6 +69,16 @@ TEST(MetricBasics, RequireMetricRejectsBadInput) {
     EXPECT_EQ(std::string(e.what()), "m: metric too small (its determinant underflows)");
   }
   EXPECT_NO_THROW(require_metric(SymMat3::diagonal(1e-100), "m"));  // det 1e-300
+  // SPD but ill-conditioned: the cofactor determinant cancels (eigenvalues 1.2e-6, 2.3e-5, 5e4);
+  // it was said to be "too small".
+  try {
+    require_metric(SymMat3{{6464.821874137391, -15934.760581379865, 39276.65756418232,
+                            5223.905612717553, -12876.098797617155, 4221.182031972738}},
+                   "m");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("too ill-conditioned"), std::string::npos) << e.what();
+  }
   try {
     require_metric(SymMat2{{-1.0, 0.0, 1.0}}, "vertex 7");
     FAIL();
