@@ -129,7 +129,16 @@ void write_vtu(const Mesh& mesh, const std::string& path, const VtuWriteOptions&
 
   std::vector<Array> point_data, cell_data, geometry, cells;
   point_data.push_back(make_array("Int32", "ref", 1, vert_ref));
-  for (const Field& field : mesh.fields) point_data.push_back(field_array(mesh, field, path));
+  for (const Field& field : mesh.fields) {
+    // A field called "ref" gave the file two point arrays of that name: it becomes "ref_field".
+    if (field.name != "ref") {
+      point_data.push_back(field_array(mesh, field, path));
+      continue;
+    }
+    Field renamed = field;
+    renamed.name = "ref_field";
+    point_data.push_back(field_array(mesh, renamed, path));
+  }
   cell_data.push_back(make_array("Int32", "ref", 1, refs));
   cell_data.push_back(make_array("UInt8", "dim", 1, dims));
   geometry.push_back(make_array("Float64", "", 3, points));

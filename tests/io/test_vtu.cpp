@@ -113,6 +113,20 @@ TEST(Vtu, PlanarMeshGetsZeroZAndPaddedFields) {
   for (int k = 0; k < 6; ++k) EXPECT_EQ(tensor[k], expected[k]);
 }
 
+TEST(Vtu, AFieldCalledRefIsRenamed) {
+  // The vertex refs are the point array "ref": a field of that name made a second one.
+  Mesh m = test::square_2d();
+  m.fields.push_back({"ref", FieldKind::kScalar, std::vector<double>(9, 5.0)});
+  test::ScratchDir dir;
+  write_vtu(m, dir.file("r.vtu"));
+  const std::string text = test::read_text(dir.file("r.vtu"));
+  EXPECT_NE(text.find("Name=\"ref_field\""), std::string::npos);
+  const auto arrays = appended_arrays(text);
+  const auto values = as<double>(arrays.at("ref_field"));
+  ASSERT_EQ(values.size(), 9u);
+  EXPECT_EQ(values[0], 5.0);
+}
+
 TEST(Vtu, BadFieldSizeIsAnError) {
   Mesh m = test::square_2d();
   m.fields.push_back({"u", FieldKind::kScalar, {1.0}});
