@@ -236,6 +236,12 @@ void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
   if (a.hsiz_given->count() > 0) require_size_option("--hsiz", a.hsiz);
   Mesh mesh = read_mesh(a.input);
+  // (A mesh of Edges only was told "no size field", or "the mesh has no triangles" with one.)
+  if (mesh.triangles.empty() && mesh.tets.empty())
+    throw InputError(a.input + ": the mesh has no triangles or tetrahedra to adapt" +
+                     (mesh.edges.empty() || mesh.dim != 2
+                          ? ""
+                          : " (only Edges: mesh the domain with riemesh mesh)"));
   const bool surface = mesh.kind() == MeshKind::kSurface;
   if (a.aniso && !surface)
     throw InputError("--aniso applies to surface meshes (the 2D metric is given)");

@@ -113,4 +113,8 @@ expect_error_matching render-output-extension "^riemesh: error: $TMP/o.jpg: unkn
   render "$AILE" -o "$TMP/o.jpg"
 expect_error_matching loop-plot-folder "^riemesh: error: /nonexistent-folder/x.png: cannot create" \
   loop --complexities 1000 --plot /nonexistent-folder/x.png
+# A 3D mesh of Edges only: named, with the real problem (it said "no size field").
+printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n2\n0 0 0 0\n1 0 0 0\nEdges\n1\n1 2 0\nEnd\n' >"$TMP/eo.mesh"
+expect_error_matching adapt-edges-only "eo.mesh: the mesh has no triangles or tetrahedra to adapt" \
+  adapt "$TMP/eo.mesh" -o "$TMP/o.mesh"
 exit $fail
