@@ -282,8 +282,8 @@ void run(AdaptArgs& a) {
   require_outputs(a);
   // The ranges of --hmin, --hmax, --hgrad, --hausd, --angle, --passes and --interp hold for
   // surfaces too (--hmax -1, --hgrad nan, --interp bogus were taken there).
+  a.opt.interp = parse_interp_scheme(a.interp);
   a.opt.validate();
-  parse_interp_scheme(a.interp);
   if (surface) return run_surface(a, mesh);
   if (sources == 0)
     throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");
@@ -291,9 +291,7 @@ void run(AdaptArgs& a) {
   a.opt.swap = !a.noswap;
   a.opt.move = !a.nomove;
   a.opt.detect_angles = !a.nr;
-  a.opt.interp = parse_interp_scheme(a.interp);
   if (a.optim && a.opt.hgrad > 0.0) a.opt.hgrad = 0.0;  // the implied sizes are kept as they are
-  a.opt.validate();
   if (a.verbosity < 0) a.quiet = true;  // MMG's -v -1: silent
   if (mesh.kind() == MeshKind::kVolume) return run3d(a, std::move(mesh));
   if (mesh.dim != 2)

@@ -64,6 +64,12 @@ void run(const TransferArgs& a) {
     write_sol(a.output, transfer_p1(from, in.fields, to, &report), to.dim);
     // Vertices outside the old mesh take the values at their projection: silent before, even
     // onto a mesh of another domain (the P0 transfer reports its uncovered measure).
+    if (a.quiet) return;
+    if (a.json) {
+      std::printf("{\"vertices\": %zu, \"outside\": %zu, \"farthest\": %s}\n", to.num_vertices(),
+                  report.outside, json_number(report.farthest).c_str());
+      return;
+    }
     std::printf("P1 transfer: %zu vertices", to.num_vertices());
     if (report.outside > 0)
       std::printf(
@@ -99,8 +105,8 @@ void register_transfer(CLI::App& app) {
   cmd->add_option("new_mesh", a->new_mesh, "Mesh to carry them to")->required();
   cmd->add_option("-o,--output", a->output, "Output fields (.sol/.solb), same section as the input");
   cmd->add_flag("--p0", a->p0, "Require element fields (fail on a SolAtVertices file)");
-  cmd->add_flag("--json", a->json, "P0: print the report as one JSON object");
-  cmd->add_flag("-q,--quiet", a->quiet, "P0: print nothing");
+  cmd->add_flag("--json", a->json, "Print the report as one JSON object");
+  cmd->add_flag("-q,--quiet", a->quiet, "Print nothing");
   cmd->footer(
       "SolAtVertices: each new vertex is located in the old mesh by walking and takes the linear "
       "interpolant; vertices outside the old mesh (curved boundaries) take the value at their "

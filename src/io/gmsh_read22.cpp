@@ -39,10 +39,9 @@ void read_element_nodes(GmshInput& in, GmshAssembler& out, int type, int nv, int
     last.type = type, last.entity = entity;
     std::copy(tags, tags + nv, last.nodes);
     out.add(type, v, ref);
-  } else if (type == kPoint)
-    ++out.skipped[type];
-  else
-    in.fail(unsupported_elements(type, 1));
+  } else {
+    in.fail(unsupported_elements(type, 1));  // (points are kept: kPoint above)
+  }
 }
 
 // 2.2 tags: physical, elementary, ...; physical 0 means none: the elementary tag is the ref.

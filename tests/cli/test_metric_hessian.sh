@@ -68,6 +68,12 @@ def vals(p):
 g, w = vals(sys.argv[1]), vals(sys.argv[2])
 sys.exit(0 if len(g) == len(w) and max(abs(a - b) for a, b in zip(g, w)) < 1e-9 else 1)
 PY
+# The P1 report: the adapted mesh's vertices are all inside the L-shape (or on its straight
+# boundary); printed as JSON with --json, nothing with -q.
+out=$("$R" transfer "$D/lshape.mesh" "$TMP/u.sol" "$TMP/a.mesh" -o "$TMP/got.sol" --json)
+[[ "$out" == '{"vertices": '*', "outside": 0, "farthest": 0}' ]] && ok transfer-p1-json || ko "transfer-p1-json: $out"
+out=$("$R" transfer "$D/lshape.mesh" "$TMP/u.sol" "$TMP/a.mesh" -o "$TMP/got.sol" -q)
+[ -z "$out" ] && ok transfer-p1-quiet || ko "transfer-p1-quiet: $out"
 
 M=(metric hessian "$D/lshape.mesh" "$D/lshape.sol")
 expect_error no-such-field "${M[@]}" --field nope --complexity 100 -o "$TMP/x.sol"
