@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <span>
 
 #include "core/error.hpp"
 
@@ -202,6 +203,47 @@ SurfaceFeatures detect_features(const Mesh& mesh, const Adjacency& adj,
   return f;
 }
 
+namespace {
+
+/// The orientation of each triangle of v's ball `b` relative to the first of its sector, found
+/// across the smooth edges through v: -1 where a triangle runs along such an edge the same way
+/// as the one it was reached from. Volume meshes list their boundary triangles in any
+/// orientation; summed as given, the normals of a flipped triangle and its neighbour cancel (a
+/// cylinder's side got a sector normal tangent to it).
+void orient_ball(const Mesh& mesh, const Adjacency& adj, const SurfaceFeatures& features, Id v,
+                 std::span<const Id> b, std::vector<double>& sign) {
+  sign.assign(b.size(), 0.0);
+  std::vector<std::size_t> stack;
+  for (std::size_t first = 0; first < b.size(); ++first) {
+    if (sign[first] != 0.0) continue;
+    sign[first] = 1.0;
+    stack.assign(1, first);
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      const auto t = static_cast<std::size_t>(b[i]);
+      const Id* tri = &mesh.triangles[3 * t];
+      const int iv = local_index(tri, 3, v);
+      for (int j : {(iv + 1) % 3, (iv + 2) % 3}) {
+        if (features.edge_feature[static_cast<std::size_t>(adj.elem2edge[3 * t + j])]) continue;
+        const Id nb = adj.elem2elem[3 * t + j];
+        if (nb == kNoId) continue;
+        const auto k =
+            static_cast<std::size_t>(std::lower_bound(b.begin(), b.end(), nb) - b.begin());
+        if (k >= b.size() || b[k] != nb || sign[k] != 0.0) continue;
+        // The edge opposite corner j runs tri[j+1] -> tri[j+2] in t; nb agrees if it runs back.
+        const Id* other = &mesh.triangles[3 * static_cast<std::size_t>(nb)];
+        const int ia = local_index(other, 3, tri[(j + 1) % 3]);
+        const bool same_way = other[(ia + 1) % 3] == tri[(j + 2) % 3];
+        sign[k] = same_way ? -sign[i] : sign[i];
+        stack.push_back(k);
+      }
+    }
+  }
+}
+
+}  // namespace
+
 SurfaceSectors surface_sectors(const Mesh& mesh, const Adjacency& adj,
                                const SurfaceFeatures& features) {
   require_surface(mesh, adj);
@@ -209,6 +251,7 @@ SurfaceSectors surface_sectors(const Mesh& mesh, const Adjacency& adj,
   SurfaceSectors s;
   s.corner2sector.assign(mesh.triangles.size(), kNoId);
   std::vector<Id> label;  // sector label of each ball triangle, by union of neighbours
+  std::vector<double> sign;  // +1 or -1: each ball triangle's orientation against its sector's
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
     const auto b = ball(adj, static_cast<Id>(v));
     label.resize(b.size());
@@ -234,6 +277,7 @@ SurfaceSectors surface_sectors(const Mesh& mesh, const Adjacency& adj,
         }
       }
     }
+    orient_ball(mesh, adj, features, static_cast<Id>(v), b, sign);
     // Number the sectors of v in order of their smallest ball index, then sum their normals.
     const auto first_sector = static_cast<Id>(s.sector2vert.size());
     std::vector<Id> id_of(b.size(), kNoId);
@@ -248,7 +292,7 @@ SurfaceSectors surface_sectors(const Mesh& mesh, const Adjacency& adj,
       const int iv = local_index(&mesh.triangles[3 * t], 3, static_cast<Id>(v));
       const Id sec = id_of[l];
       s.corner2sector[3 * t + iv] = sec;
-      s.normal[static_cast<std::size_t>(sec)] += corner_angle(mesh, t, iv) * tn[t];
+      s.normal[static_cast<std::size_t>(sec)] += (corner_angle(mesh, t, iv) * sign[i]) * tn[t];
     }
     for (auto k = static_cast<std::size_t>(first_sector); k < s.normal.size(); ++k) {
       const double l = norm(s.normal[k]);

@@ -1,9 +1,11 @@
+#include <cstdio>
 // adapt3d on volumes with curved boundaries (issue #7): new boundary vertices on the smooth
 // reconstruction of the input surface, within hausd of it, the rest of the behaviour unchanged.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "curved_test_meshes.hpp"
 #include "mesh/check.hpp"
@@ -12,6 +14,7 @@
 #include "metric/element.hpp"
 #include "metric/metric.hpp"
 #include "remesh/adapt3d.hpp"
+#include "remesh/boundary3d.hpp"
 
 using namespace riemesh;
 using riemesh::test::point;
@@ -83,10 +86,16 @@ TEST(Adapt3dCurved, FixturesAreValid) {
 TEST(Adapt3dCurved, RefinedCylinderStaysACylinder) {
   const CylinderCase c;
   const Adapt3dResult r = adapt_cylinder(c);
+  std::printf(
+      "refined cylinder: %zu side vertices (input %zu), %zu tets, %.4f in band, q min %.3f\n",
+      count_side_vertices(r.mesh), count_side_vertices(c.input), r.mesh.num_tets(),
+      r.report.passes.back().len_in, worst_quality(r));
   const CheckReport check = check_mesh(r.mesh);
   EXPECT_TRUE(check.valid()) << (check.issues.empty() ? "" : to_string(check.issues[0].category));
   // Many new side vertices, all on the cylinder (the facets' midpoints are 8.6e-3 inside).
-  EXPECT_GT(count_side_vertices(r.mesh), 2 * count_side_vertices(c.input));
+  // Measured 134 for 72 (170 while the fixture's one facet listed the other way round gave its
+  // edges' vertices a sector normal tangent to the side, and a wrong curvature there).
+  EXPECT_GT(2 * count_side_vertices(r.mesh), 3 * count_side_vertices(c.input));
   EXPECT_LT(side_error(r.mesh, 1.0), 1e-3);
   EXPECT_GT(worst_quality(r), 0.2);
   EXPECT_GT(r.report.passes.back().len_in, 0.8);
@@ -98,7 +107,11 @@ TEST(Adapt3dCurved, ObliqueAnisotropyFollowedOnACurvedPatch) {
   // sagitta over their width). The boundary checks refused every operation turning such a
   // triangle by more than 30°: 88.4% of edges in band, 8,676 tets; 93.1% and 8,092 since. Then
   // 16 tets below quality 0.1 (and 177 in some variants), strung along interior edges lying in
-  // the side (kCurvedSplitFloor, adapt3d.cpp): 8,068 tets, 93.1%, 8 below 0.1 since.
+  // the side (kCurvedSplitFloor, adapt3d.cpp): 8,068 tets, 93.1%, 8 below 0.1 since. Those
+  // figures came with a wrong curvature along one generator: the fixture lists one facet's
+  // triangles the other way round, and their normals cancelled the neighbours' in the sector
+  // normals (fixed in surface_sectors). Since: 4,629 tets, 90.4% in band, 0.28% below 0.1 (the
+  // same as with that facet listed like the others).
   const Mesh input = test::faceted_cylinder(24, 2, 1.0, 1.0);
   const double h = 1.0, hd = 0.02;
   const Vec3 d = (1.0 / std::sqrt(3.0)) * Vec3{{1.0, 1.0, 1.0}};
@@ -108,11 +121,49 @@ TEST(Adapt3dCurved, ObliqueAnisotropyFollowedOnACurvedPatch) {
   Adapt3dOptions o;
   o.hausd = 0.03;
   const Adapt3dResult r = adapt3d(input, std::vector<SymMat3>(input.num_vertices(), m), o);
+  std::printf("oblique 1:50: %zu tets, %.4f in band, %.5f below quality 0.1\n", r.mesh.num_tets(),
+              r.report.passes.back().len_in, fraction_flat(r));
   const CheckReport check = check_mesh(r.mesh);
   EXPECT_TRUE(check.valid()) << (check.issues.empty() ? "" : to_string(check.issues[0].category));
-  EXPECT_GT(r.report.passes.back().len_in, 0.92);
-  EXPECT_LT(fraction_flat(r), 0.002);
+  EXPECT_GT(r.report.passes.back().len_in, 0.89);
+  EXPECT_LT(fraction_flat(r), 0.004);
   EXPECT_LT(side_error(r.mesh, 1.0), 1e-3);
+}
+
+TEST(Adapt3dCurved, BoundaryTrianglesInAnyOrientation) {
+  // The fixture lists one facet's triangles the other way round (volume meshes list boundary
+  // triangles in any orientation). The curvature sizes are those of the facets listed alike,
+  // or of every other side triangle reversed: the flipped triangles' normals cancelled their
+  // neighbours' in the sector normals, and the sizes along that generator were wrong.
+  const CylinderCase c;
+  Mesh alike = c.input, mixed = c.input;
+  const std::size_t facets = 24;
+  // The side triangles come first, two per facet and layer, the reversed facet last in each.
+  for (std::size_t layer = 0; layer < 2; ++layer)
+    for (std::size_t k = 0; k < 2; ++k) {
+      const std::size_t t = layer * 2 * facets + 2 * (facets - 1) + k;
+      std::swap(alike.triangles[3 * t + 1], alike.triangles[3 * t + 2]);
+    }
+  for (std::size_t t = 0; t < 4 * facets; t += 2)
+    std::swap(mixed.triangles[3 * t + 1], mixed.triangles[3 * t + 2]);
+  Adapt3dOptions o;
+  o.hausd = 0.003;
+  auto sizes = [&](const Mesh& m) {
+    std::vector<SymMat3> metric(m.num_vertices(), SymMat3::diagonal(1.0));
+    intersect_curvature_sizes(m, metric, o);
+    return metric;
+  };
+  const std::vector<SymMat3> ref = sizes(alike);
+  double finest = 0.0;
+  for (const SymMat3& x : ref) finest = std::max(finest, x(0, 0) + x(1, 1) + x(2, 2));
+  EXPECT_GT(finest, 100.0);  // the side's curvature sizes are there (about 0.15)
+  for (const Mesh* m : {&c.input, static_cast<const Mesh*>(&mixed)}) {
+    const std::vector<SymMat3> x = sizes(*m);
+    ASSERT_EQ(x.size(), ref.size());
+    for (std::size_t v = 0; v < x.size(); ++v)
+      for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) EXPECT_NEAR(x[v](i, j), ref[v](i, j), 1e-9 * finest) << v;
+  }
 }
 
 TEST(Adapt3dCurved, Deterministic) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "io/medit.hpp"
@@ -42,6 +43,24 @@ TEST(SurfaceFeatures, SphereNormalsAreRadialAndNoFeatures) {
   EXPECT_EQ(f.num_corners, 0u);
   const SurfaceSectors s = surface_sectors(m, adj, f);
   EXPECT_EQ(s.num_sectors(), m.num_vertices());
+}
+
+TEST(SurfaceFeatures, SectorNormalsIgnoreHowTrianglesAreListed) {
+  // Every third triangle of the sphere listed the other way round (volume meshes list their
+  // boundary triangles in any orientation): each sector normal is the same up to its sign
+  // (the normals of a flipped triangle and its neighbours cancelled: tangent sector normals).
+  const Mesh m = sphere_mesh(3, 2.0);
+  Mesh flipped = m;
+  for (std::size_t t = 0; t < flipped.num_triangles(); t += 3)
+    std::swap(flipped.triangles[3 * t + 1], flipped.triangles[3 * t + 2]);
+  auto sectors = [](const Mesh& x) {
+    const Adjacency adj = build_adjacency(x);
+    return surface_sectors(x, adj, detect_features(x, adj, {}));
+  };
+  const SurfaceSectors a = sectors(m), b = sectors(flipped);
+  ASSERT_EQ(a.num_sectors(), b.num_sectors());
+  for (std::size_t k = 0; k < a.num_sectors(); ++k)
+    EXPECT_NEAR(std::abs(dot(a.normal[k], b.normal[k])), 1.0, 1e-12) << k;
 }
 
 TEST(SurfaceFeatures, AngleWeightedNormalIgnoresTriangulationOfAPlane) {
