@@ -145,6 +145,25 @@ TEST(SurfaceCurvature, Saddle) {
   EXPECT_LT(fine.max, 2e-3);
 }
 
+TEST(SurfaceCurvature, StretchedRingsSpreadAcross) {
+  // Rows far thinner than the facets are wide: the 2-ring of a vertex is a strip along the axis
+  // (cells 1:60 on the 10-sided prism, 1:25 on the finer tube). Fitted on the strip alone, the
+  // quadric's term along the axis took up the residual around it: |k1| 570 on the prism (exact
+  // 1 for the circle through its edges, 0.55-1.5 for a quadric on its facets).
+  for (const int sides : {10, 64}) {
+    std::vector<Vec2> uv;
+    const Mesh m = param_grid(cylinder_param(1.0), sides, 200, 0, 2 * kPi, 0, 2, true, false, &uv);
+    const auto c = curvatures(m);
+    const double tol = sides == 10 ? 0.5 : 0.02;  // the 64-gon is close to its circle
+    for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+      if (uv[v][1] < 0.5 || uv[v][1] > 1.5) continue;
+      EXPECT_NEAR(std::abs(c[v].geometry.k1), 1.0, tol) << sides << " sides, vertex " << v;
+      EXPECT_LT(std::abs(c[v].geometry.k2), 0.05) << sides << " sides, vertex " << v;
+      EXPECT_LT(std::abs(c[v].geometry.w1[2]), 0.05) << sides << " sides, vertex " << v;
+    }
+  }
+}
+
 TEST(SurfaceCurvature, CylinderDirections) {
   // w1 (largest |k|) goes around the axis, w2 along it.
   std::vector<Vec2> uv;
