@@ -16,6 +16,8 @@ namespace {
 
 constexpr double kSqrt2 = 1.4142135623730951;
 constexpr double kCosTurn = 0.8660254037844387;  // cos 30°: largest turn of a triangle's normal
+constexpr double kTinyEdge =
+    0.25;  // edges below this may collapse into worse triangles (try_collapse)
 /// Smoothing leaves a vertex alone when the worst triangle of its ball is at least this good.
 constexpr double kSmoothEnough = 0.9;
 
@@ -371,7 +373,10 @@ bool try_collapse(State& s, PassBalls& balls, Id v, Id w, CollapseScratch& scrat
   for (Id x : nv)
     if (x != w && s.size_length(w, x) > kSqrt2) return false;
   // A new triangle may not fall below min(0.3, the worst old one): the old ones measured only
-  // when a new one is below 0.3.
+  // when a new one is below 0.3. Edges far below unit length (a stretched input, cells 1:6 an
+  // order of magnitude finer than the metric asks) may make a triangle up to 2x worse, as in 2D
+  // (adapt2d.cpp): each collapse there gives a slightly worse triangle on the way to coarse ones.
+  const double relative_floor = s.size_length(v, w) < kTinyEdge ? 0.5 : 1.0;
   double qmin_old = -1.0;
   auto worst_old = [&] {
     if (qmin_old < 0.0) {
@@ -404,7 +409,7 @@ bool try_collapse(State& s, PassBalls& balls, Id v, Id w, CollapseScratch& scrat
     const Vec3 n_old = tri_normal(c[0], c[1], c[2]), n_new = tri_normal(n[0], n[1], n[2]);
     if (dot(n_old, n_new) < kCosTurn) return false;
     const double q = quality(tri_metric(s, t, v, &s.m[us(w)]), n[0], n[1], n[2]);
-    if (q < 0.3 && q < worst_old()) return false;
+    if (q < 0.3 && q < relative_floor * worst_old()) return false;
     gap = std::min(gap, to_triangle(s.x[us(v)], n));
   }
   if (gap > hausd || !new_triangles_close(s, new_t, s.surf_hint[us(v)], old_t) ||

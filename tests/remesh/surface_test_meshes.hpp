@@ -22,9 +22,11 @@ struct Param {
 
 /// Grid of nu x nv cells on [u0, u1] x [v0, v1], periodic in u and/or v (the last row then
 /// wraps to the first); each cell split into two triangles oriented like σu × σv. Vertex (i, j)
-/// has id j * (number of u columns) + i; its parameters go to `uv`.
+/// has id j * (number of u columns) + i; its parameters go to `uv`. The cells' diagonals
+/// alternate, or all join (i, j) to (i + 1, j + 1) when `alternate` is false.
 inline Mesh param_grid(const Param& s, int nu, int nv, double u0, double u1, double v0, double v1,
-                       bool periodic_u, bool periodic_v, std::vector<Vec2>* uv = nullptr) {
+                       bool periodic_u, bool periodic_v, std::vector<Vec2>* uv = nullptr,
+                       bool alternate = true) {
   Mesh m;
   m.dim = 3;
   const int cu = periodic_u ? nu : nu + 1, cv = periodic_v ? nv : nv + 1;
@@ -41,7 +43,7 @@ inline Mesh param_grid(const Param& s, int nu, int nv, double u0, double u1, dou
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
       // Alternate the diagonal so that the grid has no preferred direction.
-      if ((i + j) % 2 == 0) {
+      if (!alternate || (i + j) % 2 == 0) {
         m.triangles.insert(m.triangles.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1)});
         m.triangles.insert(m.triangles.end(), {id(i, j), id(i + 1, j + 1), id(i, j + 1)});
       } else {

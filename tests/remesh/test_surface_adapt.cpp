@@ -149,6 +149,32 @@ TEST(SurfaceAdapt, AnisotropicCylinder) {
   EXPECT_GT(along / total, 0.5);  // the long axial edges dominate the total edge length
 }
 
+TEST(SurfaceAdapt, StretchedInputIsCoarsened) {
+  // A tube of radius 0.25 in cells 1:6.5 (0.033 around, 0.005 along, every diagonal the same
+  // way) and the same tube in cells of 0.033 x 0.021: the geometry, hence the output, is the
+  // same. The stretched rings made the curvature fit ask for sizes near hausd (10-sided prisms:
+  // 627 k triangles, crumpled), and the collapses of the short edges were refused for making a
+  // triangle of quality ~0.27 a little worse (0 collapses: this tube was refined to twice the
+  // input).
+  SurfaceAdaptOptions o;
+  o.hausd = 0.01;
+  const Outcome coarse =
+      run(param_grid(cylinder_param(0.25), 48, 48, 0, 2 * kPi, 0, 1, true, false), o);
+  const Mesh thin =
+      param_grid(cylinder_param(0.25), 48, 200, 0, 2 * kPi, 0, 1, true, false, nullptr, false);
+  const Outcome r = run(thin, o);
+  std::printf("stretched tube: %zu -> %zu triangles (%zu from square-ish cells), %zu collapses\n",
+              thin.num_triangles(), r.out.num_triangles(), coarse.out.num_triangles(),
+              r.report.collapses);
+  EXPECT_TRUE(check_mesh(r.out).valid());
+  EXPECT_EQ(euler(r.out), 0);
+  EXPECT_EQ(find_self_intersections(r.out).pairs, 0u);
+  EXPECT_LE(r.hausdorff, 0.95 * o.hausd + 1e-12);
+  EXPECT_LT(r.out.num_triangles(), 3 * coarse.out.num_triangles() / 2);
+  EXPECT_GT(r.out.num_triangles(), 2 * coarse.out.num_triangles() / 3);
+  EXPECT_GE(r.report.q_min, 0.3);
+}
+
 TEST(SurfaceAdapt, TorusKeepsGenusOne) {
   const Mesh in = param_grid(torus_param(1.0, 0.4), 96, 48, 0, 2 * kPi, 0, 2 * kPi, true, true);
   SurfaceAdaptOptions o;
