@@ -26,6 +26,25 @@ else
 fi
 "$R" check "$TMP/two.mesh" >/dev/null && ok check-two-triangles || ko check-two-triangles
 
+# Surfaces: triangles crossing each other make a surface invalid (a triangle in z = 0 and one
+# piercing it), named with the first pair; moved apart, the two are valid.
+write_pierced() {  # FILE X0 X1 (x of the second triangle's vertices)
+  printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n6\n0 0 0 1\n1 0 0 1\n0 1 0 1\n' >"$1"
+  printf '%s 0.2 -0.5 1\n%s 0.2 0.5 1\n%s 0.4 0.5 1\n' "$2" "$3" "$2" >>"$1"
+  printf 'Triangles\n2\n1 2 3 1\n4 5 6 2\nEnd\n' >>"$1"
+}
+write_pierced "$TMP/apart.mesh" 2.2 2.4
+out=$("$R" check "$TMP/apart.mesh"); code=$?
+if [ $code -eq 0 ] && [[ "$out" == *": valid, surface"* ]]; then ok check-surface-valid; else ko "check-surface-valid: $code $out"; fi
+write_pierced "$TMP/pierced.mesh" 0.2 0.4
+out=$("$R" check "$TMP/pierced.mesh"); code=$?
+if [ $code -eq 1 ] && [[ "$out" == *"INVALID"* ]] &&
+  [[ "$out" == *"self-intersection: 1 pairs of triangles (first: triangles 1 and 2 at ("* ]]; then
+  ok check-surface-crossing
+else
+  ko "check-surface-crossing: $code $out"
+fi
+
 # --- stats --json on two right triangles ------------------------------------------------------
 # Areas ½ each; Euclidean mean ratio 4√3·½/(1+1+2) = √3/2 (bin [0.8, 0.9)). With M = diag(4, 1):
 # lengths 2 (x edges), 1 (y edges), √5 (diagonal) -> 2 of 5 in [1/√2, √2]; histogram bins
