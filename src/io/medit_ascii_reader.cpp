@@ -91,12 +91,7 @@ void AsciiMeditReader::skip_section(std::string_view name) {
   const int ints = skipped_keyword_ints(name);
   if (ints > 0) {
     const std::size_t n = count(name, static_cast<std::size_t>(ints));
-    // Elements riemesh cannot hold were dropped without a word (a quad or P2 mesh read as empty
-    // and called valid, a mixed one converted with a hole).
-    if (n > 0 && !io_detail::iequals(name, "RequiredQuadrilaterals"))
-      fail_here(name, std::to_string(n) +
-                          " elements of a kind riemesh does not read (it reads "
-                          "linear Edges, Triangles and Tetrahedra only)");
+    if (n > 0 && holds_elements(name)) fail_here(name, unread_elements(n));
     for (std::size_t i = 0; i < n * static_cast<std::size_t>(ints); ++i) integer(name);
     return;
   }

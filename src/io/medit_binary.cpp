@@ -65,6 +65,7 @@ class BinaryMeshReader {
           pairs(m.tangent_at_vertex, Bound::kTangent);
           break;
         default:
+          refuse_elements(code);
           read = false;
           break;
       }
@@ -77,6 +78,17 @@ class BinaryMeshReader {
 
  private:
   std::size_t isize() const { return static_cast<std::size_t>(in_.int_size()); }
+
+  /// Quadrilaterals, Prisms, P2 elements ...: refused when the section holds any (see the ASCII
+  /// reader), skipped when empty.
+  void refuse_elements(int code) {
+    int ints = 0;
+    const char* name = skipped_keyword(code, ints);
+    if (!name || !holds_elements(name)) return;
+    const std::size_t at = in_.offset();
+    const std::size_t n = in_.count(static_cast<std::size_t>(ints) * isize());
+    if (n > 0) fail(in_.where(at), name, unread_elements(n));
+  }
 
   void vertices() {
     Mesh& m = out_.mesh;

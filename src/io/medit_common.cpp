@@ -39,21 +39,18 @@ constexpr NamedCode kKeywords[] = {
 struct SkippedKeyword {
   const char* name;
   int ints;
+  int code;  // libMeshb's GmfKwdCod (medit_detail.hpp)
 };
 
 // Element keywords of libMeshb (GmfKwdFmt) with a fixed number of integers per entry. FreeFem's
 // BAMG keywords (SubDomainFromGeom has 4 ints there but 3 in libMeshb) are not listed: the
 // ASCII reader skips unlisted keywords by scanning to the next word.
 constexpr SkippedKeyword kSkipped[] = {
-    {"Quadrilaterals", 5},
-    {"Prisms", 7},
-    {"Hexahedra", 9},
-    {"Pyramids", 6},
-    {"EdgesP2", 4},
-    {"TrianglesP2", 7},
-    {"TetrahedraP2", 11},
-    {"QuadrilateralsQ2", 10},
-    {"RequiredQuadrilaterals", 1},
+    {"Quadrilaterals", 5, 7}, {"Prisms", 7, 9},
+    {"Hexahedra", 9, 10},     {"Pyramids", 6, 49},
+    {"EdgesP2", 4, 25},       {"TrianglesP2", 7, 24},
+    {"TetrahedraP2", 11, 30}, {"QuadrilateralsQ2", 10, 27},
+    {"HexahedraQ2", 28, 33},  {"RequiredQuadrilaterals", 1, 18},
 };
 
 const char* bound_name(Bound b) {
@@ -98,6 +95,25 @@ int skipped_keyword_ints(std::string_view name) {
   for (const SkippedKeyword& k : kSkipped)
     if (io_detail::iequals(name, k.name)) return k.ints;
   return -1;
+}
+
+const char* skipped_keyword(int code, int& ints) {
+  for (const SkippedKeyword& k : kSkipped)
+    if (k.code == code) {
+      ints = k.ints;
+      return k.name;
+    }
+  return nullptr;
+}
+
+bool holds_elements(std::string_view name) {
+  return !io_detail::iequals(name, "RequiredQuadrilaterals");
+}
+
+std::string unread_elements(std::size_t n) {
+  return std::to_string(n) +
+         " elements of a kind riemesh does not read (it reads linear Edges, Triangles and "
+         "Tetrahedra only)";
 }
 
 std::string quote(std::string_view token) {

@@ -63,6 +63,15 @@ const char* keyword_name(int code);
 /// Integers per entry of libMeshb element keywords Riemesh skips (Quadrilaterals, Prisms, ...);
 /// -1 if the keyword is not one of them.
 int skipped_keyword_ints(std::string_view name);
+/// The name of the skipped element keyword of that code and its integers per entry; nullptr
+/// (ints unchanged) if the code is not one of them.
+const char* skipped_keyword(int code, int& ints);
+/// False for the skipped keywords that list no elements (RequiredQuadrilaterals).
+bool holds_elements(std::string_view name);
+/// "N elements of a kind riemesh does not read (...)": why a skipped element section is refused
+/// (elements dropped without a word made a quad or P2 mesh read as empty and valid, and a mixed
+/// one convert with a hole).
+std::string unread_elements(std::size_t n);
 
 /// A short printable form of a token for error messages.
 std::string quote(std::string_view token);

@@ -15,8 +15,8 @@ namespace {
 
 using test::MeshbFixture;
 
-// A mesh with every keyword Riemesh reads plus two it skips (Quadrilaterals and an unknown
-// code), all values exact in float so that version 1 reads them back exactly.
+// A mesh with every keyword Riemesh reads plus two it skips (an empty Quadrilaterals section and
+// an unknown code), all values exact in float so that version 1 reads them back exactly.
 std::string fixture(int version, bool swapped) {
   MeshbFixture f(version, swapped, 3);
   f.keyword(4, 5);  // Vertices
@@ -25,7 +25,7 @@ std::string fixture(int version, bool swapped) {
     for (double x : xyz[v]) f.real(x);
     f.integer(v + 10);
   }
-  f.keyword(7, 1).integer(1).integer(2).integer(3).integer(4).integer(0);  // Quadrilaterals
+  f.keyword(7, 0);  // Quadrilaterals
   f.keyword(5, 2).integer(1).integer(2).integer(3).integer(3).integer(4).integer(-1);  // Edges
   f.keyword(6, 2);                                                                     // Triangles
   for (int t : {1, 3, 2, 7, 1, 2, 4, 8}) f.integer(t);
@@ -78,6 +78,46 @@ TEST(MeshbVersions, EveryVersionAndByteOrderReads) {
       test::expect_same_mesh(expected(), read_medit(path));
     }
   }
+}
+
+TEST(MeshbVersions, ElementsRiemeshDoesNotReadAreRefused) {
+  // libMeshb codes (GmfKwdCod) and integers per entry; they were jumped over without a word (a
+  // quad mesh read as empty and valid). A RequiredQuadrilaterals list is skipped.
+  struct Case {
+    int code, ints;
+    const char* name;
+  };
+  test::ScratchDir dir;
+  for (const Case& c :
+       {Case{7, 5, "Quadrilaterals"}, Case{9, 7, "Prisms"}, Case{10, 9, "Hexahedra"},
+        Case{49, 6, "Pyramids"}, Case{24, 7, "TrianglesP2"}, Case{30, 11, "TetrahedraP2"}}) {
+    for (int version : {2, 4}) {
+      SCOPED_TRACE(std::string(c.name) + " version " + std::to_string(version));
+      MeshbFixture f(version, false, 3);
+      f.keyword(4, 4);
+      for (int v = 0; v < 4; ++v) f.real(v == 1).real(v == 2).real(v == 3).integer(0);
+      f.keyword(c.code, 2);
+      for (int i = 0; i < 2 * c.ints; ++i) f.integer(1 + i % 4);
+      const std::string path = dir.file("e.meshb");
+      test::write_text(path, f.finish());
+      try {
+        read_medit(path);
+        ADD_FAILURE() << "no error";
+      } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(std::string(c.name) + ": 2 elements of a kind riemesh does not read"),
+                  std::string::npos)
+            << what;
+        EXPECT_NE(what.find("e.meshb: byte "), std::string::npos) << what;
+      }
+    }
+  }
+  MeshbFixture f(2, false, 3);
+  f.keyword(4, 1).real(0).real(0).real(0).integer(0);
+  f.keyword(18, 1).integer(1);  // RequiredQuadrilaterals
+  const std::string path = dir.file("rq.meshb");
+  test::write_text(path, f.finish());
+  EXPECT_EQ(read_medit(path).num_vertices(), 1u);
 }
 
 TEST(MeshbVersions, LibraryWriterMatchesTheIndependentEncoder) {
