@@ -29,6 +29,20 @@ void run_adapt_surface(const SurfaceAdaptArgs& args, const Mesh& mesh) {
   }
   const std::vector<Field> fields =
       args.fields.empty() ? std::vector<Field>{} : read_sol(args.fields, mesh);
+  if (!args.quiet)
+    options.on_cycle = [&start](const SurfaceCycle& c) {
+      const double t =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      char label[24];
+      if (c.cycle > 0)
+        std::snprintf(label, sizeof label, "cycle %2d", c.cycle);
+      else
+        std::snprintf(label, sizeof label, "final   ");
+      std::fprintf(stderr,
+                   "%s: %zu vertices %zu triangles; %zu splits %zu collapses %zu swaps %zu "
+                   "moves (%.2f s)\n",
+                   label, c.vertices, c.triangles, c.splits, c.collapses, c.swaps, c.moves, t);
+    };
   SurfaceAdaptReport r;
   const Mesh out = naming_file(args.input, [&] { return adapt_surface(mesh, options, &r); });
   // Transferred before anything is written: a failure leaves no file.

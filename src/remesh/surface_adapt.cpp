@@ -206,42 +206,50 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
   SurfaceAdaptReport r;
   r.input_corners = geo.features().num_corners;
   r.input_feature_edges = geo.features().num_feature_edges;
+  auto report_cycle = [&](SurfaceCycle& c) {
+    r.splits += c.splits, r.collapses += c.collapses, r.swaps += c.swaps, r.moves += c.moves;
+    if (!options.on_cycle) return;
+    c.triangles = s.num_triangles();
+    c.vertices = s.num_vertices();
+    options.on_cycle(c);
+  };
   for (int cycle = 0; cycle < options.max_cycles; ++cycle) {
     const std::size_t nt = s.num_triangles();
-    std::size_t changes = 0;
+    SurfaceCycle c;
+    c.cycle = cycle + 1;
     if (options.insert) {
       // Splits, then collapses, each repeated while they change much (a pass only applies
       // independent operations): the cheap topological work before the swaps and moves.
       for (int k = 0; k < kInnerPasses; ++k) {
         const std::size_t sp = surface_detail::split_pass(s);
-        r.splits += sp;
-        changes += sp;
+        c.splits += sp;
         if (sp < std::max<std::size_t>(1, s.num_triangles() / 100)) break;
       }
       for (int k = 0; k < kInnerPasses; ++k) {
         const std::size_t co = surface_detail::collapse_pass(s);
-        r.collapses += co;
-        changes += co;
+        c.collapses += co;
         if (co < std::max<std::size_t>(1, s.num_triangles() / 100)) break;
       }
     }
-    if (options.swap) r.swaps += surface_detail::swap_pass(s);
-    if (options.move)
-      r.moves += surface_detail::smooth_pass(s);
+    if (options.swap) c.swaps = surface_detail::swap_pass(s);
+    if (options.move) c.moves = surface_detail::smooth_pass(s);
     ++r.cycles;
-    if (changes < std::max<std::size_t>(1, nt / 100) && cycle >= 2) break;
+    report_cycle(c);
+    if (c.splits + c.collapses < std::max<std::size_t>(1, nt / 100) && cycle >= 2) break;
   }
   // Last touch: split the long edge of triangles still below quality 0.3 (the obtuse ones that
   // swaps and moves could not fix under the Hausdorff checks), then swap and move around them.
+  SurfaceCycle last;
   for (int k = 0; k < 2 && options.insert; ++k) {
     const std::size_t sp = surface_detail::split_pass(s, kBadQuality);
-    r.splits += sp;
+    last.splits += sp;
     if (sp == 0) break;
-    if (options.swap) r.swaps += surface_detail::swap_pass(s);
-    if (options.move) r.moves += surface_detail::smooth_pass(s);
+    if (options.swap) last.swaps += surface_detail::swap_pass(s);
+    if (options.move) last.moves += surface_detail::smooth_pass(s);
   }
-  if (options.swap) r.swaps += surface_detail::swap_pass(s);
-  if (options.move) r.moves += surface_detail::smooth_pass(s);
+  if (options.swap) last.swaps += surface_detail::swap_pass(s);
+  if (options.move) last.moves += surface_detail::smooth_pass(s);
+  report_cycle(last);
   Mesh out = output_mesh(s);
   r.q_min = 1.0;
   double sum = 0.0;

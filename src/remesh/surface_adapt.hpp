@@ -26,6 +26,7 @@
 // denser sampling can find more: the bound holds at those points, not everywhere).
 // Refs of triangles and feature edges are carried (a patch keeps its ref), corners never move.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "core/symmat.hpp"
@@ -33,6 +34,13 @@
 #include "remesh/surface_features.hpp"
 
 namespace riemesh {
+
+/// What one cycle of the surface remesher did (its own counts, not running totals).
+struct SurfaceCycle {
+  int cycle = 0;  ///< 1-based; 0 for the final touch (splits of bad triangles, swaps, moves)
+  std::size_t triangles = 0, vertices = 0;  ///< after the cycle
+  std::size_t splits = 0, collapses = 0, swaps = 0, moves = 0;
+};
 
 struct SurfaceAdaptOptions {
   double hausd = 0.01;  ///< chordal tolerance (absolute), as mmgs's -hausd
@@ -50,6 +58,8 @@ struct SurfaceAdaptOptions {
   FeatureOptions features;
   int max_cycles = 12;  ///< split/collapse/swap/smooth cycles
   bool insert = true, swap = true, move = true;
+  /// Called after each cycle and after the final touch (progress lines); may be empty.
+  std::function<void(const SurfaceCycle&)> on_cycle;
   void validate() const;  ///< throws InputError for a bad value
 };
 

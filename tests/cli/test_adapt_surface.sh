@@ -9,6 +9,15 @@ IN="$SHARED/data/surf/rotor.mesh"
 "$R" adapt "$IN" -o "$TMP/out.mesh" --hausd 0.0028 2>"$TMP/err"; code=$?
 if [ $code -eq 0 ] && grep -q "riemesh: surface 1200 -> " "$TMP/err"; then ok adapt-surface-runs; else ko "adapt-surface-runs: $code $(cat "$TMP/err")"; fi
 "$R" check "$TMP/out.mesh" >/dev/null && ok adapt-surface-valid || ko adapt-surface-valid
+# A progress line per cycle, then the final touch's, before the summary; none with -q.
+if grep -q "^cycle  1: [0-9]* vertices [0-9]* triangles; [0-9]* splits [0-9]* collapses" "$TMP/err" &&
+  grep -q "^final   : " "$TMP/err"; then
+  ok adapt-surface-cycle-lines
+else
+  ko "adapt-surface-cycle-lines: $(cat "$TMP/err")"
+fi
+"$R" adapt "$IN" -o "$TMP/quiet.mesh" --hausd 0.0028 -q 2>"$TMP/err_q"
+[ ! -s "$TMP/err_q" ] && ok adapt-surface-quiet || ko "adapt-surface-quiet: $(cat "$TMP/err_q")"
 json=$("$R" distance "$IN" "$TMP/out.mesh" --json)
 if /usr/bin/python3 -c "import json,sys; j=json.loads(sys.argv[1]); sys.exit(0 if j['hausdorff'] <= 0.0028 else 1)" "$json"; then
   ok adapt-surface-hausdorff
