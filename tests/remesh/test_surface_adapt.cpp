@@ -362,4 +362,24 @@ TEST(SurfaceAdapt, RejectsContradictingSizes) {
   EXPECT_NO_THROW(o.validate());
 }
 
+TEST(SurfaceAdapt, ScaleInvariantWithinTheAcceptedScalesAndRefusedBeyond) {
+  // The unit icosphere at hausd 1% of its size, scaled by 1e±30: the same triangle count;
+  // scaled by 1e±50 refused (at 1e±80 the outputs were invalid and 6% of the size away).
+  const Mesh base = sphere_mesh(3, 1.0);
+  std::size_t count = 0;
+  for (const double scale : {1.0, 1e30, 1e-30, 1e50, 1e-50}) {
+    Mesh m = base;
+    for (double& x : m.coords) x *= scale;
+    SurfaceAdaptOptions o;
+    o.hausd = 0.01 * scale;
+    if (scale > 1e40 || scale < 1e-40) {
+      EXPECT_THROW(adapt_surface(m, o), InputError) << scale;
+      continue;
+    }
+    const Mesh out = adapt_surface(m, o);
+    if (count == 0) count = out.num_triangles();
+    EXPECT_EQ(out.num_triangles(), count) << scale;
+  }
+}
+
 }  // namespace
