@@ -58,7 +58,7 @@ class SurfaceProjection {
   /// Distance from p to the input polyhedron.
   double distance(const Vec3& p, Id hint = kNoId) const { return tri_tree_.nearest(p, hint).distance; }
 
-  /// The input's check points (the order-4 lattice of every input triangle) inside the box
+  /// The input's check points (the lattice of every input triangle, lattice_orders) inside the box
   /// [lo, hi], appended to `out` in a fixed order: the points an operator must keep within
   /// hausd of the output when they were within hausd before (surface_ops.cpp).
   void check_points(const Vec3& lo, const Vec3& hi, std::vector<Vec3>& out) const;
@@ -66,6 +66,10 @@ class SurfaceProjection {
   /// lies on: the surface remesher starts from the input and follows which of its triangles
   /// answers for each point (surface_ops.cpp).
   void check_points_by_triangle(std::vector<Vec3>& pts, std::vector<Id>* owner) const;
+  /// The lattice order of each input triangle's check points: 4, or a multiple of 4 up to 32
+  /// where the triangle is long for its metric's in-plane sizes (spacing <= half the size).
+  std::vector<int> lattice_orders() const;
+  static constexpr int kCheckOrder = 4;  ///< the order of `riemesh distance`'s default lattice
 
   const Mesh& input() const { return mesh_; }
   const Adjacency& adjacency() const { return adj_; }

@@ -204,6 +204,22 @@ TEST(SurfaceAdapt, AnisotropicOnAnUnalignedInputCoarsens) {
   EXPECT_LT(2 * aniso.out.num_triangles(), iso.out.num_triangles());
 }
 
+TEST(SurfaceAdapt, CoarseInputStaysWithinHausdBetweenCheckPoints) {
+  // The rotor (long input triangles) at 0.05% of its diagonal: the input's points were checked
+  // at the order-4 lattice of each input triangle only, and a dense sampling (order 16) found
+  // input points 1.24 hausd from the output. The lattice is now as fine as the output's sizes
+  // ask (SurfaceProjection::lattice_orders): 0.997 hausd.
+  const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/surf/rotor.mesh");
+  SurfaceAdaptOptions o;
+  o.hausd = 0.0005 * bounding_box_diagonal(in);
+  const Mesh out = adapt_surface(in, o);
+  DistanceOptions dense;
+  dense.samples = 16;
+  const double a_to_b = hausdorff_distance(in, out, dense).a_to_b.max;
+  std::printf("rotor 0.05%%: input to output %.4f hausd at order 16\n", a_to_b / o.hausd);
+  EXPECT_LE(a_to_b, o.hausd);
+}
+
 TEST(SurfaceAdapt, TorusKeepsGenusOne) {
   const Mesh in = param_grid(torus_param(1.0, 0.4), 96, 48, 0, 2 * kPi, 0, 2 * kPi, true, true);
   SurfaceAdaptOptions o;
