@@ -30,10 +30,6 @@ constexpr double kCentroidFactor = 0.75;
 /// --hausd) are refused before any point is added (a torus at --hausd 1e-9 reached 7 GB).
 constexpr double kMostSurfaceVertices = 5e7;
 
-/// Throws InputError when the unit mesh of the vertex metrics would need more than
-/// kMostSurfaceVertices vertices: (2/√3) Σ area × the mean of the vertices' sqrt(λ1 λ2), their
-/// two largest eigenvalues (an upper bound of the density in the tangent plane), naming the
-/// finest size and its place.
 /// The diagonal of the surface's bounding box.
 double surface_diagonal(const Mesh& in) {
   Vec3 lo = {{kInfinity, kInfinity, kInfinity}}, hi = -lo;
@@ -59,6 +55,10 @@ void require_computable_scale(const Mesh& in) {
   throw InputError(msg);
 }
 
+/// Throws InputError when the unit mesh of the vertex metrics would need more than
+/// kMostSurfaceVertices vertices: (2/√3) Σ area × the mean of the vertices' sqrt(λ1 λ2), their
+/// two largest eigenvalues (an upper bound of the density in the tangent plane), naming the
+/// finest size and its place.
 void require_reachable_surface(const Mesh& in, const std::vector<SymMat3>& metrics) {
   // In units of the bounding box's diagonal (areas / L², densities · L²), so that no product
   // overflows within the accepted scales.

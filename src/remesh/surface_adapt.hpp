@@ -18,12 +18,14 @@
 //   smooth   vertices to the mean of their neighbours (ridge vertices: of their two line
 //            neighbours), placed back on the reconstruction, kept when the smallest quality of
 //            the ball grows and the triangles turn by less than 30°.
-// Every operation is checked both ways against the input, on the same points that
+// Every operation is checked both ways against the input, on (at least) the points that
 // `riemesh distance` samples by default (mesh/distance.hpp, lattice of order 4 on every
-// triangle): the input's lattice points within 0.95 hausd of the old triangles stay within
-// 0.95 hausd of the new ones, and the new triangles' lattice points are within 0.95 hausd of the
-// input. By induction the sampled two-sided distance of the output stays below 0.95 hausd (a
-// denser sampling can find more: the bound holds at those points, not everywhere).
+// triangle; on input triangles long for the sizes, a finer lattice that contains it:
+// SurfaceProjection::lattice_orders): the input's lattice points within 0.95 hausd of the old
+// triangles stay within 0.95 hausd of the new ones, and the new triangles' lattice points are
+// within 0.95 hausd of the input. By induction the sampled two-sided distance of the output
+// stays below 0.95 hausd (a denser sampling can find more: the bound holds at those points, not
+// everywhere).
 // Refs of triangles and feature edges are carried (a patch keeps its ref), corners never move.
 #include <cstddef>
 #include <functional>
