@@ -115,6 +115,8 @@ void Remesh3dContext::find_planes() {
     if (fresh) pl.n = n, pl.d = dot(n, a);
     if (m.tadj[s] != kNoId || dot(n, pl.n) < 1.0 - 1e-9) pl.planar = false;
     if (m.tadj[s] == kNoId) pl.outer = true;
+    else
+      has_interfaces_ = true;
     for (const Vec3* p : {&a, &b, &c})
       if (std::abs(dot(pl.n, *p) - pl.d) > tol) pl.planar = false;
   }

@@ -55,6 +55,10 @@ class Remesh3dContext {
   /// The background field (one metric per input vertex).
   std::span<const SymMat3> field() const { return background_.metrics(); }
 
+  /// True when some listed face lies between two tets (an interface between subdomains, kept
+  /// as given, its vertices fixed).
+  bool has_interfaces() const { return has_interfaces_; }
+
   /// Records, for vertex v just created or moved, the background tet of the last metric_for.
   void inherit_hint(Id v);
 
@@ -84,6 +88,7 @@ class Remesh3dContext {
   std::vector<std::int32_t> edge_refs_;
   std::vector<Id> hint_;  // per vertex: a background tet near it
   std::size_t num_input_vertices_ = 0;
+  bool has_interfaces_ = false;
   mutable Id last_found_ = kNoId;
   std::unique_ptr<Boundary3d> boundary_;  // the curved patches (null: none, or kept)
 };

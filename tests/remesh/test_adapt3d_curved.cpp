@@ -1,4 +1,3 @@
-#include <cstdio>
 // adapt3d on volumes with curved boundaries (issue #7): new boundary vertices on the smooth
 // reconstruction of the input surface, within hausd of it, the rest of the behaviour unchanged.
 #include <gtest/gtest.h>
