@@ -133,6 +133,7 @@ void Remesh3dContext::classify_vertices() {
   std::vector<std::int32_t> refs(3 * nv, 0);
   std::vector<int> count(nv, 0);
   std::vector<bool> fixed(nv, false), curved(nv, false);
+  std::map<std::pair<std::int32_t, std::int32_t>, std::vector<Id>> on_coplanar_line;
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4);
     if (!m.fbdy[s] || !m.tet_alive(t)) continue;
@@ -165,13 +166,53 @@ void Remesh3dContext::classify_vertices() {
     } else {
       const std::int32_t r1 = std::min(refs[3 * v], refs[3 * v + 1]);
       const std::int32_t r2 = std::max(refs[3 * v], refs[3 * v + 1]);
-      if (std::abs(dot(plane(r1)->n, plane(r2)->n)) < 1.0 - 1e-6) {
+      m.vplane[2 * v] = r1, m.vplane[2 * v + 1] = r2;
+      if (std::abs(dot(plane(r1)->n, plane(r2)->n)) < 1.0 - 1e-6)
         k = VertexKind::kRidge;
-        m.vplane[2 * v] = r1, m.vplane[2 * v + 1] = r2;
-      }
+      else
+        on_coplanar_line[{r1, r2}].push_back(static_cast<Id>(v));
     }
     m.vkind[v] = k;
   }
+  // Coplanar patches of different refs (the outer faces of a gmsh multi-volume box, split where
+  // the volumes meet): their common line had no direction from the planes, its vertices were
+  // fixed and its edges never split (4x the size asked). When its vertices are collinear, the
+  // line is a ridge of that direction.
+  Vec3 lo = m.xyz.empty() ? Vec3{} : m.xyz[0], hi = lo;
+  for (const Vec3& p : m.xyz)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double tol = 1e-10 * norm(hi - lo);
+  for (const auto& [pair, line] : on_coplanar_line) {
+    if (line.size() < 2) continue;
+    const Vec3& o = m.xyz[static_cast<std::size_t>(line[0])];
+    Vec3 far = o;
+    for (const Id v : line)
+      if (norm(m.xyz[static_cast<std::size_t>(v)] - o) > norm(far - o))
+        far = m.xyz[static_cast<std::size_t>(v)];
+    if (!(norm(far - o) > tol)) continue;
+    const Vec3 d = normalize(far - o);
+    bool straight = true;
+    for (const Id v : line) {
+      const Vec3 r = m.xyz[static_cast<std::size_t>(v)] - o;
+      straight = straight && norm(r - dot(r, d) * d) <= tol;
+    }
+    if (!straight) continue;
+    coplanar_lines_[pair] = d;
+    for (const Id v : line) m.vkind[static_cast<std::size_t>(v)] = VertexKind::kRidge;
+  }
+}
+
+bool Remesh3dContext::ridge_direction(std::int32_t r1, std::int32_t r2, Vec3& d) const {
+  const Plane *p1 = plane(r1), *p2 = plane(r2);
+  if (!p1 || !p2) return false;
+  if (std::abs(dot(p1->n, p2->n)) < 1.0 - 1e-6) {
+    d = normalize(cross(p1->n, p2->n));
+    return true;
+  }
+  const auto it = coplanar_lines_.find({std::min(r1, r2), std::max(r1, r2)});
+  if (it == coplanar_lines_.end()) return false;
+  d = it->second;
+  return true;
 }
 
 bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
@@ -194,7 +235,8 @@ bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
       out.kind = VertexKind::kPlanar;
       out.plane[0] = out.plane[1] = refs[0];
     } else {
-      if (std::abs(dot(plane(refs[0])->n, plane(refs[1])->n)) >= 1.0 - 1e-6) return false;
+      Vec3 d;
+      if (!ridge_direction(refs[0], refs[1], d)) return false;
       out.kind = VertexKind::kRidge;
       out.plane[0] = std::min(refs[0], refs[1]), out.plane[1] = std::max(refs[0], refs[1]);
     }
@@ -278,9 +320,10 @@ bool Remesh3dContext::constrain(Id v, Vec3& p) const {
   if (k == VertexKind::kPlanar) {
     const Plane* pl = plane(mesh_.vplane[2 * v]);
     p = p - (dot(pl->n, p) - pl->d) * pl->n;
-  } else if (k == VertexKind::kRidge) {  // onto the line through v where the two planes meet
+  } else if (k == VertexKind::kRidge) {  // onto the line through v where the two patches meet
     const Vec3& o = mesh_.xyz[v];
-    const Vec3 d = normalize(cross(plane(mesh_.vplane[2 * v])->n, plane(mesh_.vplane[2 * v + 1])->n));
+    Vec3 d;
+    if (!ridge_direction(mesh_.vplane[2 * v], mesh_.vplane[2 * v + 1], d)) return false;
     p = o + dot(p - o, d) * d;
   } else if (on_curved_boundary(k)) {
     p = boundary_->place(k, p);

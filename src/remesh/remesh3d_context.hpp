@@ -77,6 +77,9 @@ class Remesh3dContext {
   void find_planes();
   void classify_vertices();
   const Plane* plane(std::int32_t ref) const;
+  /// The direction of the line where planar patches r1 < r2 meet: their normals' cross product,
+  /// or for coplanar patches the direction of their straight common boundary; false if none.
+  bool ridge_direction(std::int32_t r1, std::int32_t r2, Vec3& d) const;
 
   Adapt3dOptions options_;
   TetMesh mesh_;  // built first: the background then takes over the input's arrays
@@ -85,6 +88,8 @@ class Remesh3dContext {
   /// without locating the point; as 2D's Remesh2dContext).
   std::optional<SymMat3> constant_;
   std::map<std::int32_t, Plane> planes_;
+  /// Coplanar planar patches (r1 < r2) meeting along a straight line: its unit direction.
+  std::map<std::pair<std::int32_t, std::int32_t>, Vec3> coplanar_lines_;
   std::vector<std::int32_t> edge_refs_;
   std::vector<Id> hint_;  // per vertex: a background tet near it
   std::size_t num_input_vertices_ = 0;

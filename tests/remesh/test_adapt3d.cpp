@@ -445,3 +445,38 @@ TEST(Adapt3d, FineSizesAtAKeptInterface) {
     noted |= n.find("interfaces between subdomains") != std::string::npos;
   EXPECT_TRUE(noted);
 }
+
+// Coplanar planar patches of different refs (the outer faces of a gmsh multi-volume box): the
+// line between them had no direction from the planes, its vertices stayed fixed and its edges
+// at the input's length (4x --hsiz, the passes thrashing around it). It is a straight ridge.
+TEST(Adapt3d, LineBetweenCoplanarPatchesIsRefined) {
+  Mesh in = unit_cube(4);
+  for (std::size_t t = 0; t < in.num_triangles(); ++t) {
+    double x = 0.0, z = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      x += in.coords[3 * static_cast<std::size_t>(in.triangles[3 * t + k])] / 3.0;
+      z = std::max(z,
+                   std::abs(in.coords[3 * static_cast<std::size_t>(in.triangles[3 * t + k]) + 2]));
+    }
+    if (z == 0.0 && x < 0.5) in.tri_ref[t] = 77;  // the face z = 0 in two patches
+  }
+  in.edges.clear(), in.edge_ref.clear(), in.edge_tag.clear();
+  const double h = 0.06;
+  const std::vector<SymMat3> metrics(in.num_vertices(), isotropic_metric<3>(h));
+  const Adapt3dResult r = adapt3d(in, metrics, {});
+  EXPECT_TRUE(check_mesh(r.mesh).valid());
+  double longest = 0.0;
+  int on_line = 0;
+  for (std::size_t t = 0; t < r.mesh.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Id a = r.mesh.triangles[3 * t + k], b = r.mesh.triangles[3 * t + (k + 1) % 3];
+      const double* p = &r.mesh.coords[3 * static_cast<std::size_t>(a)];
+      const double* q = &r.mesh.coords[3 * static_cast<std::size_t>(b)];
+      if (p[0] != 0.5 || q[0] != 0.5 || p[2] != 0.0 || q[2] != 0.0) continue;
+      ++on_line;
+      longest = std::max(longest, std::abs(q[1] - p[1]));
+    }
+  std::printf("line between coplanar patches: longest edge %.3f for size %.3f\n", longest, h);
+  EXPECT_GT(on_line, 0);
+  EXPECT_LT(longest, 1.6 * h);
+}
