@@ -43,6 +43,7 @@ struct AdaptArgs {
   int verbosity = 0;
   Adapt2dOptions opt;
   const CLI::Option* hsiz_given = nullptr;
+  const CLI::Option* hausd_given = nullptr;
 };
 
 /// The implied metric of the mesh at the vertices of its triangles; vertices in no triangle
@@ -188,6 +189,8 @@ void run3d(const AdaptArgs& a, Mesh&& mesh) {
   Adapt3dOptions opt;
   static_cast<Adapt2dOptions&>(opt) = a.opt;
   opt.keep_surface = a.nosurf;
+  if (a.nosurf && a.hausd_given->count() > 0)  // (accepted and ignored before)
+    throw InputError("--hausd and --nosurf contradict: the surface is kept as given");
   if (!(a.approach == 0.0 || a.approach > 1.0) || !std::isfinite(a.approach))
     throw InputError("--approach must be 0 (the metric at once) or a size ratio > 1");
   opt.approach_growth = a.approach;
@@ -244,7 +247,10 @@ void run(AdaptArgs& a) {
                           : " (only Edges: mesh the domain with riemesh mesh)"));
   const bool surface = mesh.kind() == MeshKind::kSurface;
   if (a.aniso && !surface)
-    throw InputError("--aniso applies to surface meshes (the 2D metric is given)");
+    throw InputError(std::string("--aniso applies to surface meshes (the anisotropic geometric "
+                                 "metric); for a ") +
+                     (mesh.dim == 2 ? "planar" : "volume") +
+                     " mesh give an anisotropic metric with --metric or --field");
   // On a surface --hsiz caps the geometric sizes: it combines with the other sources.
   const int sources = (!surface && a.hsiz > 0.0) + !a.metric.empty() + !a.field.empty() + a.optim;
   if (sources > 1)
@@ -343,10 +349,11 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--hmax", a->opt.hmax, "Largest size");
   cmd->add_option("--hgrad", a->opt.hgrad, "Gradation: growth ratio between neighbours (0: off)")
       ->capture_default_str();
-  cmd->add_option("--hausd", a->opt.hausd,
-                  "Largest distance of boundary chords to the boundary curve (2D), of the new "
-                  "boundary to the input surface (surfaces, curved patches of volumes)")
-      ->capture_default_str();
+  a->hausd_given =
+      cmd->add_option("--hausd", a->opt.hausd,
+                      "Largest distance of boundary chords to the boundary curve (2D), of the new "
+                      "boundary to the input surface (surfaces, curved patches of volumes)")
+          ->capture_default_str();
   cmd->add_option("--angle,--ar", a->opt.angle_deg, "Corner angle threshold (degrees)")
       ->capture_default_str();
   cmd->add_flag("--nr", a->nr, "No corner detection by angle");

@@ -1,6 +1,7 @@
 #include "apps/field_args.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "apps/parse.hpp"
@@ -37,7 +38,17 @@ template <int D>
 std::vector<SymMat<D>> read_metric_file(const std::string& path, const Mesh& mesh) {
   constexpr int kSize = SymMat<D>::kSize;
   const std::size_t nv = mesh.num_vertices();
-  for (const Field& f : read_sol(path, mesh)) {
+  const std::vector<Field> fields = read_sol(path, mesh);
+  // A file of several fields: the first metric was taken without a word (a scalar before a
+  // tensor, or the other way round).
+  int metrics = 0;
+  for (const Field& f : fields)
+    metrics += f.kind == FieldKind::kSymTensor || f.kind == FieldKind::kScalar;
+  if (metrics > 1)
+    throw InputError(path + ": " + std::to_string(metrics) +
+                     " scalar or tensor fields in SolAtVertices; a metric file holds one (sizes "
+                     "or tensors)");
+  for (const Field& f : fields) {
     std::vector<SymMat<D>> out(nv);
     if (f.kind == FieldKind::kSymTensor) {
       for (std::size_t v = 0; v < nv; ++v) {
@@ -53,6 +64,12 @@ std::vector<SymMat<D>> read_metric_file(const std::string& path, const Mesh& mes
           throw InputError(path + ": size at vertex " + std::to_string(v + 1) +
                            " is not a positive number");
         out[v] = isotropic_metric<D>(h);
+        // 1e-300 made an infinite tensor, blamed on the mesh file as "NaN or infinite".
+        char what[96];
+        std::snprintf(what, sizeof what, ": size %g at vertex %zu", h, v + 1);
+        if (!std::isfinite(out[v](0, 0)))
+          throw InputError(path + what + " is too small to compute with (1/size² overflows)");
+        require_metric(out[v], path + what);
       }
       return out;
     }

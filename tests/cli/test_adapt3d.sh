@@ -88,6 +88,22 @@ open(sys.argv[2], 'w').write('MeshVersionFormatted 2\nDimension 3\nSolAtVertices
 PY
 expect_error non-spd-metric adapt "$C" --metric "$TMP/bad.sol" -o "$TMP/x.mesh"
 expect_no_file non-spd-no-output "$TMP/x.mesh"
+# A size too small to square (it was "NaN or infinite", blamed on the mesh), a metric file of two
+# fields (the first was taken), --hausd with --nosurf (ignored), --aniso on a volume (named a 2D
+# metric).
+/usr/bin/python3 - "$C" "$TMP" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+n = int(toks[toks.index('Vertices') + 1])
+head = 'MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n%d\n' % n
+open(sys.argv[2] + '/tiny.sol', 'w').write(head + '1 1\n' + '1e-300\n' + '0.2\n' * (n - 1) + 'End\n')
+open(sys.argv[2] + '/two.sol', 'w').write(head + '2 1 3\n' + '0.2 25 0 25 0 0 25\n' * n + 'End\n')
+PY
+expect_error_matching tiny-size "tiny.sol: size 1e-300 at vertex 1 is too small" adapt "$C" --metric "$TMP/tiny.sol" -o "$TMP/x.mesh"
+expect_error_matching two-fields "two.sol: 2 scalar or tensor fields" adapt "$C" --metric "$TMP/two.sol" -o "$TMP/x.mesh"
+expect_error_matching hausd-nosurf "\-\-hausd and \-\-nosurf contradict" adapt "$C" --hsiz 0.2 --nosurf --hausd 0.01 -o "$TMP/x.mesh"
+expect_error_matching aniso-volume "for a volume mesh give an anisotropic metric" adapt "$C" --hsiz 0.2 --aniso -o "$TMP/x.mesh"
+expect_no_file bad-options-no-output "$TMP/x.mesh"
 
 # --field: u = x² + 4y² + 16z² has the constant Hessian diag(2, 8, 32), so the Lp metric asks for
 # sizes in the ratio 1 : 1/2 : 1/4 along x, y, z: the mean |dx| of the output edges is about 4
