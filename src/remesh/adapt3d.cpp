@@ -45,7 +45,8 @@ constexpr double kCurvedSplitFloor = 1e-3;
 // Interfaces between subdomains are kept as given (their vertices fixed): splits near them get
 // the kept surface's floor (two gmsh cubes side by side, sizes 0.04 at their interface of 0.2
 // triangles: 29,322 of 70,426 tets below quality 0.1, q min 7e-6 -> 841 of 36,470, 0.05), and
-// edges of theirs longer than this in the metric are noted.
+// edges of theirs (or of the whole surface kept by --nosurf) longer than this in the metric are
+// noted.
 constexpr double kInterfaceNote = 2.0;
 constexpr double kSwapBelow = 0.6;                 // swaps are tried around tets worse than this
 constexpr double kSwapMaxLength = 1.5;            // swaps create no edge longer than this
@@ -469,12 +470,12 @@ bool keep_locality(Remesh3dContext& ctx, std::size_t renumber_after, SweepMemos&
 }
 
 /// The longest edge, in the metric, of the listed faces between two tets (interfaces between
-/// subdomains, kept as given); 0 when there is none.
-double longest_interface_edge(const TetMesh& m) {
+/// subdomains, kept as given) or, with `outer`, of all listed faces; 0 when there is none.
+double longest_kept_edge(const TetMesh& m, bool outer) {
   double longest = 0.0;
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4);
-    if (!m.fbdy[s] || !m.tet_alive(t) || m.tadj[s] == kNoId) continue;
+    if (!m.fbdy[s] || !m.tet_alive(t) || (m.tadj[s] == kNoId && !outer)) continue;
     const int i = static_cast<int>(s % 4);
     for (int k = 0; k < 3; ++k)
       longest = std::max(longest, edge_length(m, m.tv[4 * t + kTetFace[i][k]],
@@ -640,13 +641,19 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   result.report.converged = loop.run(options.max_passes, n, n);
   lists = EdgeLists{}, nbrs = NeighbourTable{};
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
-  if (const double l = longest_interface_edge(m); l > kInterfaceNote) {
+  if (const double l = longest_kept_edge(m, options.keep_surface); l > kInterfaceNote) {
     char note[320];
-    std::snprintf(note, sizeof note,
-                  "the interfaces between subdomains are kept as given (3D remeshing does not "
-                  "refine or move them yet): their edges are up to %.3g long in the metric, and "
-                  "the tets along them cannot follow the sizes",
-                  l);
+    if (options.keep_surface)
+      std::snprintf(note, sizeof note,
+                    "the surface is kept as given (--nosurf): its edges are up to %.3g long in "
+                    "the metric, and the tets along it cannot follow the sizes",
+                    l);
+    else
+      std::snprintf(note, sizeof note,
+                    "the interfaces between subdomains are kept as given (3D remeshing does not "
+                    "refine or move them yet): their edges are up to %.3g long in the metric, "
+                    "and the tets along them cannot follow the sizes",
+                    l);
     result.report.notes.push_back(note);
   }
   const TetMesh final_mesh = std::move(m);

@@ -480,3 +480,18 @@ TEST(Adapt3d, LineBetweenCoplanarPatchesIsRefined) {
   EXPECT_GT(on_line, 0);
   EXPECT_LT(longest, 1.6 * h);
 }
+
+// --nosurf with sizes far finer than the surface: the run cannot follow them along it, and
+// says why (it ran its passes without a word).
+TEST(Adapt3d, KeptSurfaceCoarserThanTheSizesIsNoted) {
+  const Mesh in = unit_cube(2);
+  Adapt3dOptions o;
+  o.keep_surface = true;
+  o.max_passes = 2;
+  const Adapt3dResult r =
+      adapt3d(in, std::vector<SymMat3>(in.num_vertices(), isotropic_metric<3>(0.1)), o);
+  bool noted = false;
+  for (const std::string& n : r.report.notes)
+    noted |= n.find("the surface is kept as given") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
