@@ -62,6 +62,37 @@ with open(sys.argv[1], "w") as f:
 PY
 }
 cube_surface "$TMP/cube.mesh" 2
+# Nested shells: a cube of side 0.4 inside the unit cube, oriented like it (a solid) or the other
+# way (a cavity). Either is meshed as the space between; the first is noted (it was silent).
+nested_cubes() {  # FILE SIGN (1: inner like the outer, -1: reversed)
+/usr/bin/python3 - "$TMP/cube.mesh" "$1" "$2" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+n = int(toks[toks.index('Vertices') + 1]); i = toks.index('Vertices') + 2
+pts = [tuple(map(float, toks[i + 4 * k: i + 4 * k + 3])) for k in range(n)]
+m = int(toks[toks.index('Triangles') + 1]); j = toks.index('Triangles') + 2
+tris = [tuple(map(int, toks[j + 4 * k: j + 4 * k + 3])) for k in range(m)]
+inner = [tuple(0.3 + 0.4 * c for c in p) for p in pts]
+flip = int(sys.argv[3]) < 0
+itris = [(a + n, c + n, b + n) if flip else (a + n, b + n, c + n) for a, b, c in tris]
+with open(sys.argv[2], "w") as f:
+    f.write("MeshVersionFormatted 2\nDimension 3\nVertices\n%d\n" % (2 * n))
+    f.write("".join("%.17g %.17g %.17g 0\n" % p for p in pts + inner))
+    f.write("Triangles\n%d\n" % (2 * m))
+    f.write("".join("%d %d %d 1\n" % t for t in tris) + "".join("%d %d %d 2\n" % t for t in itris))
+    f.write("End\n")
+PY
+}
+nested_cubes "$TMP/solid_in.mesh" 1
+nested_cubes "$TMP/cavity_in.mesh" -1
+"$R" mesh "$TMP/solid_in.mesh" -o "$TMP/solid_in_vol.mesh" --nofill >/dev/null 2>"$TMP/nested_err"; code=$?
+if [ $code -eq 0 ] && grep -q "^riemesh: note: .*solid_in.mesh: an inner shell is oriented like the shell around it" "$TMP/nested_err"; then
+  ok mesh3d-nested-solid-noted
+else
+  ko "mesh3d-nested-solid-noted: $code $(cat "$TMP/nested_err")"
+fi
+"$R" mesh "$TMP/cavity_in.mesh" -o "$TMP/cavity_in_vol.mesh" --nofill >/dev/null 2>"$TMP/nested_err"; code=$?
+[ $code -eq 0 ] && ! grep -q "note" "$TMP/nested_err" && ok mesh3d-nested-cavity-quiet || ko "mesh3d-nested-cavity-quiet: $code $(cat "$TMP/nested_err")"
 out=$("$R" mesh "$TMP/cube.mesh" -o "$TMP/cube_fill.mesh" --hsiz 0.25 2>"$TMP/fill_err"); code=$?
 if [ $code -eq 0 ] && [[ "$out" =~ ^[^:]*:\ ([0-9]+)\ vertices,\ ([0-9]+)\ tetrahedra\ \(q_min\ [0-9.]+\),\ ([0-9]+)\ boundary\ triangles\;\ ([0-9]+)\ Steiner ]] &&
    [ "${BASH_REMATCH[1]}" -gt $((26 + BASH_REMATCH[4])) ] && [ "${BASH_REMATCH[3]}" -ge 48 ] &&
