@@ -72,30 +72,46 @@ void gather_ring1(const Mesh& mesh, const Adjacency& adj, const SurfaceSectors& 
   }
 }
 
-/// The 2-ring: a walk across smooth edges from the sector, keeping triangles that touch the
-/// 1-ring.
-void gather_ring2(const Mesh& mesh, const Adjacency& adj, const SurfaceFeatures& f, Id v, Gather& g,
-                  std::vector<Vec3>& pts) {
-  auto add_vertex = [&](Id w) {
-    if (w == v || g.vstamp[static_cast<std::size_t>(w)] == g.mark) return;
-    g.vstamp[static_cast<std::size_t>(w)] = g.mark;
-    pts.push_back(vertex_at(mesh, w));
-  };
+/// What a walk does with a triangle it reaches (walk_smooth).
+enum class Step { kSkip, kTake, kDrop, kStop };
+
+/// Breadth-first from the triangles in g.queue across smooth edges: visit(nb) for each triangle
+/// not yet stamped, which answers kSkip (left unstamped: another path may take it), kTake
+/// (stamped and queued), kDrop (stamped, not queued) or kStop (end of the walk).
+template <class Visit>
+void walk_smooth(const Adjacency& adj, const SurfaceFeatures& f, Gather& g, Visit visit) {
   for (std::size_t head = 0; head < g.queue.size(); ++head) {
     const auto ut = static_cast<std::size_t>(g.queue[head]);
     for (int j = 0; j < 3; ++j) {
       if (f.edge_feature[static_cast<std::size_t>(adj.elem2edge[3 * ut + j])]) continue;
       const Id nb = adj.elem2elem[3 * ut + j];
       if (nb == kNoId || g.tstamp[static_cast<std::size_t>(nb)] == g.mark) continue;
-      const Id* tri = &mesh.triangles[3 * static_cast<std::size_t>(nb)];
-      bool touches = false;
-      for (int i = 0; i < 3; ++i) touches |= g.ring1stamp[static_cast<std::size_t>(tri[i])] == g.mark;
-      if (!touches) continue;
+      const Step step = visit(nb);
+      if (step == Step::kSkip) continue;
       g.tstamp[static_cast<std::size_t>(nb)] = g.mark;
-      g.queue.push_back(nb);
-      for (int i = 0; i < 3; ++i) add_vertex(tri[i]);
+      if (step == Step::kStop) return;
+      if (step == Step::kTake) g.queue.push_back(nb);
     }
   }
+}
+
+/// The 2-ring: a walk across smooth edges from the sector, keeping triangles that touch the
+/// 1-ring.
+void gather_ring2(const Mesh& mesh, const Adjacency& adj, const SurfaceFeatures& f, Id v, Gather& g,
+                  std::vector<Vec3>& pts) {
+  walk_smooth(adj, f, g, [&](Id nb) {
+    const Id* tri = &mesh.triangles[3 * static_cast<std::size_t>(nb)];
+    bool touches = false;
+    for (int i = 0; i < 3; ++i) touches |= g.ring1stamp[static_cast<std::size_t>(tri[i])] == g.mark;
+    if (!touches) return Step::kSkip;
+    for (int i = 0; i < 3; ++i) {
+      const Id w = tri[i];
+      if (w == v || g.vstamp[static_cast<std::size_t>(w)] == g.mark) continue;
+      g.vstamp[static_cast<std::size_t>(w)] = g.mark;
+      pts.push_back(vertex_at(mesh, w));
+    }
+    return Step::kTake;
+  });
 }
 
 /// Ratio of the smaller to the larger second moment of the points' offsets in the plane
@@ -135,33 +151,26 @@ void balance_points(const Mesh& mesh, const Adjacency& adj, const SurfaceFeature
   double reach2 = 0.0;
   for (const Vec3& q : pts) reach2 = std::max(reach2, dot(q - p, q - p));
   reach2 *= kReach * kReach;
-  for (std::size_t head = 0; head < g.queue.size(); ++head) {
-    const auto ut = static_cast<std::size_t>(g.queue[head]);
-    for (int j = 0; j < 3; ++j) {
-      if (f.edge_feature[static_cast<std::size_t>(adj.elem2edge[3 * ut + j])]) continue;
-      const Id nb = adj.elem2elem[3 * ut + j];
-      if (nb == kNoId || g.tstamp[static_cast<std::size_t>(nb)] == g.mark) continue;
-      g.tstamp[static_cast<std::size_t>(nb)] = g.mark;
-      const Id* tri = &mesh.triangles[3 * static_cast<std::size_t>(nb)];
-      const Vec3 a = vertex_at(mesh, tri[0]), b = vertex_at(mesh, tri[1]),
-                 c = vertex_at(mesh, tri[2]);
-      const Vec3 tn = cross(b - a, c - a);
-      if (!(std::abs(dot(tn, n)) >= kBalanceCosine * norm(tn))) continue;  // either orientation
-      bool near = false;
-      for (int i = 0; i < 3; ++i) {
-        const Id w = tri[i];
-        const Vec3 d = vertex_at(mesh, w) - p;
-        if (dot(d, d) > reach2) continue;
-        near = true;
-        if (w == v || g.vstamp[static_cast<std::size_t>(w)] == g.mark) continue;
-        g.vstamp[static_cast<std::size_t>(w)] = g.mark;
-        pts.push_back(p + d);
-        spread.add(d);
-        if (spread.ratio() >= kBalancedSpread || pts.size() >= kMaxFitPoints) return;
-      }
-      if (near) g.queue.push_back(nb);
+  walk_smooth(adj, f, g, [&](Id nb) {
+    const Id* tri = &mesh.triangles[3 * static_cast<std::size_t>(nb)];
+    const Vec3 a = vertex_at(mesh, tri[0]), b = vertex_at(mesh, tri[1]),
+               c = vertex_at(mesh, tri[2]);
+    const Vec3 tn = cross(b - a, c - a);
+    if (!(std::abs(dot(tn, n)) >= kBalanceCosine * norm(tn))) return Step::kDrop;  // either side
+    bool near = false;
+    for (int i = 0; i < 3; ++i) {
+      const Id w = tri[i];
+      const Vec3 d = vertex_at(mesh, w) - p;
+      if (dot(d, d) > reach2) continue;
+      near = true;
+      if (w == v || g.vstamp[static_cast<std::size_t>(w)] == g.mark) continue;
+      g.vstamp[static_cast<std::size_t>(w)] = g.mark;
+      pts.push_back(p + d);
+      spread.add(d);
+      if (spread.ratio() >= kBalancedSpread || pts.size() >= kMaxFitPoints) return Step::kStop;
     }
-  }
+    return near ? Step::kTake : Step::kDrop;
+  });
 }
 
 void gather_points(const Mesh& mesh, const Adjacency& adj, const SurfaceFeatures& f,
