@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 
 #include "core/error.hpp"
@@ -204,6 +205,31 @@ void Mesh2dOptions::validate() const {
 
 namespace {
 
+/// The boundary kept as given is required for adapt2d, which makes every vertex of it a corner:
+/// written so, they kept a later `adapt` from placing new boundary points on the curve (the NACA
+/// far field: chords 59 times --hausd off the circle). Corners are those of the boundary's own
+/// curves (turns above --angle, ref changes, junctions) and the input's Corners.
+void keep_real_corners(const Mesh& boundary, const Adapt2dOptions& options, Mesh& out) {
+  std::set<std::pair<double, double>> given;
+  for (std::size_t v = 0; v < boundary.num_vertices(); ++v)
+    if (v < boundary.vert_tag.size() && (boundary.vert_tag[v] & kTagCorner))
+      given.insert({boundary.coords[2 * v], boundary.coords[2 * v + 1]});
+  Mesh edges_only;
+  edges_only.dim = 2;
+  edges_only.coords = out.coords;
+  edges_only.vert_ref = out.vert_ref;
+  edges_only.vert_tag.assign(out.num_vertices(), kTagNone);
+  edges_only.edges = out.edges, edges_only.edge_ref = out.edge_ref,
+  edges_only.edge_tag = out.edge_tag;
+  const BoundaryCurves curves =
+      build_boundary_curves(edges_only, {options.angle_deg, options.detect_angles});
+  for (std::size_t v = 0; v < out.num_vertices(); ++v) {
+    if (!(out.vert_tag[v] & kTagCorner)) continue;
+    if (!curves.corner[v] && !given.count({out.coords[2 * v], out.coords[2 * v + 1]}))
+      out.vert_tag[v] &= static_cast<std::uint8_t>(~kTagCorner);
+  }
+}
+
 /// The boundary cut to the sizes crosses itself (mesh_domain2d_impl): the caller retries with
 /// straight edges.
 struct CutBoundaryCrosses : InputError {
@@ -285,6 +311,7 @@ Mesh2dResult mesh_domain2d_impl(const Mesh& boundary, const Mesh2dOptions& optio
   if (!given_required) {  // the tags added above were for adapt2d only
     for (auto& tag : out.mesh.edge_tag) tag &= static_cast<std::uint8_t>(~kTagRequired);
     for (auto& tag : out.mesh.vert_tag) tag &= static_cast<std::uint8_t>(~kTagRequired);
+    if (options.keep_boundary) keep_real_corners(boundary, options.adapt, out.mesh);
   }
   out.metrics = std::move(adapted.metrics);
   out.report = std::move(adapted.report);

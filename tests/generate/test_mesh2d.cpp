@@ -61,6 +61,35 @@ TEST(Mesh2d, SquareKeepsItsBoundary) {
   EXPECT_GT(q_min(r), 0.5);
 }
 
+TEST(Mesh2d, KeptBoundaryWritesOnlyItsRealCorners) {
+  // A square (4 corners by angle) with a 40-gon circle hole (one ref, no corner), one of whose
+  // vertices is a given Corner: the kept boundary was made of corners only (every vertex
+  // required for the remesher), and a later adapt kept every new boundary point on the chords.
+  Mesh b;
+  b.dim = 2;
+  add_square(b, 0, 1, 4, true, 1);
+  const auto first = static_cast<Id>(b.num_vertices());
+  b.vert_ref.assign(b.num_vertices(), 0), b.vert_tag.assign(b.num_vertices(), kTagNone);
+  b.edge_tag.assign(b.num_edges(), kTagNone);
+  for (int k = 0; k < 40; ++k) {
+    const double t = -2.0 * std::numbers::pi * k / 40;  // clockwise: a hole
+    b.coords.insert(b.coords.end(), {0.5 + 0.25 * std::cos(t), 0.5 + 0.25 * std::sin(t)});
+    b.vert_ref.push_back(0);
+    b.vert_tag.push_back(k == 7 ? kTagCorner : kTagNone);
+    b.edges.insert(b.edges.end(), {first + k, first + (k + 1) % 40});
+    b.edge_ref.push_back(2);
+    b.edge_tag.push_back(kTagNone);
+  }
+  const Mesh2dResult r = mesh_domain2d(b, {});
+  std::set<std::pair<double, double>> corners;
+  for (std::size_t v = 0; v < r.mesh.num_vertices(); ++v)
+    if (r.mesh.vert_tag[v] & kTagCorner)
+      corners.insert({r.mesh.coords[2 * v], r.mesh.coords[2 * v + 1]});
+  std::set<std::pair<double, double>> expected = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  expected.insert({b.coords[2 * (first + 7)], b.coords[2 * (first + 7) + 1]});
+  EXPECT_EQ(corners, expected);
+}
+
 TEST(Mesh2d, UniformSizeRemeshesTheBoundaryAndHolesStayEmpty) {
   Mesh b;
   b.dim = 2;
