@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,13 @@ int main(int argc, char** argv) {
     return e.code;
   } catch (const riemesh::InputError& e) {
     std::fprintf(stderr, "riemesh: error: %s\n", e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    // Not an internal error: the sizes asked for more than the machine gives (it was reported
+    // as "internal error: std::bad_alloc", exit 3).
+    std::fprintf(stderr,
+                 "riemesh: error: out of memory: the run needs more memory than is available "
+                 "(coarser sizes, or fewer of them, need less)\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "riemesh: internal error: %s\n", e.what());

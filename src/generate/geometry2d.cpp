@@ -11,7 +11,8 @@
 
 #include "core/error.hpp"
 #include "generate/curve2d.hpp"
-#include "generate/mesh2d.hpp"  // kMostVertices2d
+#include "generate/mesh2d.hpp"
+#include "remesh/prepare_metrics.hpp"  // kMostVertices2d
 
 namespace riemesh {
 

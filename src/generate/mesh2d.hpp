@@ -18,10 +18,6 @@
 
 namespace riemesh {
 
-/// The most vertices mesh_domain2d makes (about 2e8 triangles): sizes asking for more are refused
-/// before any point is added.
-inline constexpr double kMostVertices2d = 1e8;
-
 struct Mesh2dOptions {
   double hsiz = 0.0;             ///< uniform size (0: none)
   std::vector<SymMat2> metric;   ///< one metric per vertex of the boundary mesh (empty: none)

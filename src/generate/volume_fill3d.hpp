@@ -20,10 +20,6 @@
 
 namespace riemesh {
 
-/// The most vertices mesh_volume makes (about 2e8 tets): sizes asking for more are refused before
-/// any point is added.
-inline constexpr double kMostVertices3d = 3.5e7;
-
 /// The size at each vertex from the boundary: the mean length of the boundary-triangle edges at
 /// it (vertices on no boundary triangle: the mean over all boundary edges).
 std::vector<double> boundary_sizes(const Mesh& volume);

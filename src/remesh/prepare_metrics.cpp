@@ -111,7 +111,7 @@ std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
   if (above_hmax > 0)
     report.notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
                            std::to_string(above_hmax) + " vertices");
-  require_reachable_complexity<D>(in, out);
+  require_reachable_complexity<D>(in, out, D == 2 ? kMostVertices2d : kMostVertices3d);
   if (o.hgrad > 0.0) {
     GradationOptions g;
     g.mode = GradationMode::kGrowthPhysical;

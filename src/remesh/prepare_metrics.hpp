@@ -34,6 +34,13 @@ void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics);
 /// 1e5-fold). Without it such a field ran for hours (complexity 1e12) or crashed on
 /// non-finite lengths (a tensor of 1e308).
 enum class ComplexityBound { kLogEuclidean, kLinearSizes };
+
+/// The most vertices a 2D run makes (mesh_domain2d, adapt2d: about 2e8 triangles) and a 3D one
+/// (mesh_volume, adapt3d: about 2e8 tets): sizes asking for more are refused before any point
+/// is added. (adapt allowed 2^31 - 1: --hsiz 1e-4 on the unit square, 1.15e8 vertices, went on
+/// until the memory was gone.)
+inline constexpr double kMostVertices2d = 1e8;
+inline constexpr double kMostVertices3d = 3.5e7;
 template <int D>
 void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m,
                                   double max_vertices = 2147483647.0,

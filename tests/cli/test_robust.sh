@@ -65,6 +65,18 @@ expect_no_file disk-full-no-second-output "$TMP/full.sol"
 [ "$(stat -c %s "$TMP/full.meshb")" -lt 153600 ] && [ "$(stat -c %s "$TMP/full.sol")" -gt 153600 ] &&
   ok "disk-full-sizes-straddle-the-limit" || ko "disk-full-sizes: $(stat -c %s "$TMP/full.meshb" "$TMP/full.sol")"
 
+# Out of memory (an address-space limit; not under the sanitizers, whose shadow memory needs
+# more than the limit): a one-line error and exit 2, no output (it was "internal error:
+# std::bad_alloc", exit 3).
+if ldd "$R" 2>/dev/null | grep -q -e libasan -e libubsan; then
+  ok "out-of-memory (skipped: sanitizer build)"
+else
+  err=$( (ulimit -v 600000; "$R" adapt "$LSHAPE" --hsiz 0.0005 -o "$TMP/oom.mesh" -q) 2>&1); code=$?
+  [ "$code" -eq 2 ] && [[ "$err" == "riemesh: error: out of memory: "* ]] &&
+    ok "out-of-memory ($err)" || ko "out-of-memory: $code $err"
+  expect_no_file out-of-memory-no-output "$TMP/oom.mesh"
+fi
+
 # What the library finds inside a mesh names the file: a clockwise triangle (adapt), no elements
 # (render, adapt), a degenerate tetrahedron (adapt --optim).
 write_two_triangles "$TMP/cw.mesh"

@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <set>
 #include <string>
 
 #include "core/error.hpp"
+#include "io/medit.hpp"
 #include "mesh/check.hpp"
 #include "mesh/fixtures.hpp"
 #include "mesh/hilbert.hpp"
@@ -384,4 +386,37 @@ TEST(Adapt2d, BadInput) {
   Mesh flipped = in;
   std::swap(flipped.triangles[0], flipped.triangles[1]);
   EXPECT_THROW(adapt2d(flipped, met, {}), InputError);
+}
+
+// The stop rules "no new low of splits + collapses for 3 passes" and "no change in band or
+// quality" now need a pass of fewer than 5% of the vertices inserted or removed: the first
+// pass's few operations were the low, and a 1:300 field stopped after its fourth pass with
+// 4,921 collapses left (15% of the vertices, 98.7% in band); --hsiz 1e-4 on a square stopped
+// after its second pass with every edge still 4-12 long (the band at 0% both times).
+TEST(Adapt2d, PassesGoOnWhileMuchChanges) {
+  // gmsh's unit square at lc 0.05 (tests/data/square_gmsh.geo): unstructured.
+  const Mesh in = read_medit(std::string(RIEMESH_TEST_DATA) + "/square_gmsh.mesh");
+  std::vector<SymMat2> metrics;
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (std::size_t v = 0; v < in.num_vertices(); ++v) {
+    const double hn = 3e-4 * (1.0 + in.coords[2 * v]), ht = 0.1;
+    const double l1 = 1.0 / (ht * ht), l2 = 1.0 / (hn * hn);
+    metrics.push_back(
+        SymMat2{{l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c}});
+  }
+  Adapt2dOptions o;
+  o.hgrad = 0.0;
+  const Adapt2dResult r = adapt2d(in, metrics, o);
+  const PassStats& last = r.report.passes.back();
+  std::printf("1:300 field: %zu passes, %.4f in band, last pass %ld splits %ld collapses\n",
+              r.report.passes.size(), last.len_in, last.splits, last.collapses);
+  EXPECT_LE(last.splits + last.collapses, static_cast<long>(last.vertices / 20));
+  EXPECT_GT(last.len_in, 0.98);
+}
+
+TEST(Adapt2d, SizesBeyondTheVertexLimitAreRefused) {
+  const Mesh in = unit_square(4, 4);
+  // 1.15e8 vertices for h = 1e-4 (more than kMostVertices2d): it ran until the memory was gone.
+  EXPECT_THROW(adapt2d(in, std::vector<SymMat2>(in.num_vertices(), isotropic_metric<2>(1e-4)), {}),
+               InputError);
 }
