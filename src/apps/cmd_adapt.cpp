@@ -44,6 +44,7 @@ struct AdaptArgs {
   Adapt2dOptions opt;
   const CLI::Option* hsiz_given = nullptr;
   const CLI::Option* hausd_given = nullptr;
+  const CLI::Option* approach_given = nullptr;
 };
 
 /// The implied metric of the mesh at the vertices of its triangles; vertices in no triangle
@@ -298,10 +299,16 @@ void run(AdaptArgs& a) {
   a.opt.move = !a.nomove;
   a.opt.detect_angles = !a.nr;
   if (a.optim && a.opt.hgrad > 0.0) a.opt.hgrad = 0.0;  // the implied sizes are kept as they are
+  if (a.quiet && a.verbosity > 0)
+    throw InputError("-v " + std::to_string(a.verbosity) + " and -q contradict");
   if (a.verbosity < 0) a.quiet = true;  // MMG's -v -1: silent
   if (mesh.kind() == MeshKind::kVolume) return run3d(a, std::move(mesh));
   if (mesh.dim != 2)
     throw InputError(a.input + ": only planar, surface and tetrahedral meshes can be adapted");
+  // (Accepted and ignored on planar meshes.)
+  if (a.nosurf)
+    throw InputError("--nosurf applies to tetrahedral volumes (it keeps their boundary surface)");
+  if (a.approach_given->count() > 0) throw InputError("--approach applies to tetrahedral volumes");
   const std::vector<SymMat2> metrics = load_metric(a, mesh);
   const std::vector<Field> fields = a.fields.empty() ? std::vector<Field>{} : read_sol(a.fields, mesh);
   const bool progress = !a.quiet;
@@ -354,19 +361,22 @@ void register_adapt(CLI::App& app) {
                       "Largest distance of boundary chords to the boundary curve (2D), of the new "
                       "boundary to the input surface (surfaces, curved patches of volumes)")
           ->capture_default_str();
-  cmd->add_option("--angle,--ar", a->opt.angle_deg, "Corner angle threshold (degrees)")
-      ->capture_default_str();
-  cmd->add_flag("--nr", a->nr, "No corner detection by angle");
+  auto* angle =
+      cmd->add_option("--angle,--ar", a->opt.angle_deg, "Corner angle threshold (degrees)")
+          ->capture_default_str();
+  cmd->add_flag("--nr", a->nr, "No corner detection by angle")->excludes(angle);
   cmd->add_flag("--aniso", a->aniso, "Surfaces: anisotropic geometric metric (BOOK.md §1)");
   cmd->add_flag("--nosurf", a->nosurf, "3D: keep the boundary surface untouched");
   cmd->add_option("--geometry", a->geometry,
                   "3D: the original geometry (volume or surface mesh): curved patches are placed on "
                   "and kept within --hausd of its triangles of the same refs, not of the input's "
                   "boundary (adaptation loops: no drift from run to run)");
-  cmd->add_option("--approach", a->approach,
-                  "3D: largest size ratio asked from one stage to the next when the mesh is far "
-                  "from the metric (stages toward it from the mesh's own sizes; 0: at once)")
-      ->capture_default_str();
+  a->approach_given =
+      cmd->add_option(
+             "--approach", a->approach,
+             "3D: largest size ratio asked from one stage to the next when the mesh is far "
+             "from the metric (stages toward it from the mesh's own sizes; 0: at once)")
+          ->capture_default_str();
   cmd->add_flag("--optim", a->optim, "Improve quality at the current sizes (implied metric)");
   cmd->add_flag("--noinsert", a->noinsert, "No vertex insertion or removal");
   cmd->add_flag("--noswap", a->noswap, "No edge swaps");

@@ -181,6 +181,8 @@ void run(MeshArgs& a) {
     throw InputError(a.input +
                      ": --keep-triangles applies to surfaces (a planar domain's "
                      "boundary is kept with --keep-boundary)");
+  if (a.keep_boundary && a.hausd->count() > 0)  // (accepted and ignored)
+    throw InputError("--keep-boundary and --hausd contradict: the boundary is kept as given");
   if (!a.metric.empty()) a.opt.metric = read_metric_file<2>(a.metric, domain);
   // The boundary is kept as given unless a size field or hausd says how to remesh it.
   a.opt.keep_boundary =

@@ -77,6 +77,28 @@ nv_out=$("$R" stats "$TMP/lake.mesh" --json | /usr/bin/python3 -c 'import json,s
 
 # Bad inputs.
 expect_error no-size adapt "$D/2d/aile.mesh" -o "$TMP/x.mesh"
+# Options that were accepted and ignored on planar meshes, or contradict.
+L="$D/formats/lshape.mesh"
+expect_error_matching angle-nr "excludes" adapt "$L" --hsiz 0.1 --angle 30 --nr -o "$TMP/x.mesh"
+expect_error_matching nosurf-2d "\-\-nosurf applies to tetrahedral volumes" adapt "$L" --hsiz 0.1 --nosurf -o "$TMP/x.mesh"
+expect_error_matching approach-2d "\-\-approach applies to tetrahedral volumes" adapt "$L" --hsiz 0.1 --approach 2 -o "$TMP/x.mesh"
+expect_error_matching verbose-quiet "\-v 1 and \-q contradict" adapt "$L" --hsiz 0.1 -v 1 -q -o "$TMP/x.mesh"
+# An edge listed twice with different refs: one was kept without a word.
+/usr/bin/python3 - "$L" "$TMP/dup_edge.mesh" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split('\n')
+out, i = [], 0
+while i < len(toks):
+    out.append(toks[i])
+    if toks[i].strip() == 'Edges':
+        n = int(toks[i + 1]); first = toks[i + 2].split()
+        out.append(str(n + 1)); out += toks[i + 2:i + 2 + n]
+        out.append('%s %s %d' % (first[0], first[1], int(first[2]) + 100)); i += 2 + n; continue
+    i += 1
+open(sys.argv[2], 'w').write('\n'.join(out))
+PY
+expect_error_matching dup-edge-refs "join the same vertices with different refs" adapt "$TMP/dup_edge.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
+expect_no_file bad-2d-options-no-output "$TMP/x.mesh"
 expect_no_file no-size-file "$TMP/x.mesh"
 expect_error contradiction adapt "$D/2d/aile.mesh" --hsiz 0.1 --metric "$D/formats/lshape_metric.sol" -o "$TMP/x.mesh"
 expect_error hmin-hmax adapt "$D/2d/aile.mesh" --hsiz 0.1 --hmin 1 --hmax 0.5 -o "$TMP/x.mesh"

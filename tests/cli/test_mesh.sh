@@ -106,6 +106,7 @@ expect_error_matching mesh-edge-two-refs \
   mesh "$TMP/dupref.mesh" -o "$TMP/dupref_out.mesh"
 # The square kept with --hsiz far smaller than its edges: a note on the slivers along them.
 square_edges "$TMP/sq.mesh"
+expect_error_matching mesh-keep-boundary-hausd "\-\-keep-boundary and \-\-hausd contradict" mesh "$TMP/sq.mesh" -o "$TMP/x.mesh" --keep-boundary --hausd 0.001
 "$R" mesh "$TMP/sq.mesh" -o "$TMP/sq_out.mesh" --hsiz 0.05 --keep-boundary 2>&1 >/dev/null |
   grep -q "note: .*sq.mesh: the boundary edges are 1 long on average, 20 times --hsiz; kept as given" &&
   ok mesh-keep-boundary-coarse-noted || ko mesh-keep-boundary-coarse-noted
