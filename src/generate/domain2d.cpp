@@ -149,19 +149,35 @@ std::vector<Id> flood_regions(const Triangulation2d& t, const std::vector<Id>& o
 }
 
 /// The region holding each hole point (closed triangles, exact orientation tests).
+/// A hole point on a boundary edge or vertex belongs to no region: the first triangle found
+/// decided (a point on an airfoil's leading edge made the far field the hole), now refused.
 std::vector<std::uint8_t> holes_from_points(const Triangulation2d& t, const std::vector<Id>& region,
                                             int nregions, const std::vector<std::uint8_t>& outside,
+                                            const std::vector<Id>& on_constraint,
                                             std::span<const double> points) {
   std::vector<std::uint8_t> hole(nregions, 0);
   for (std::size_t k = 0; 2 * k + 1 < points.size(); ++k) {
     const double* p = &points[2 * k];
     Id found = kNoId;
+    bool on_boundary = false;
     for (std::size_t tri = 0; tri < t.num_triangles() && found == kNoId; ++tri) {
       const Id* v = &t.tri[3 * tri];
       const double* x[3] = {&t.xy[2 * v[0]], &t.xy[2 * v[1]], &t.xy[2 * v[2]]};
-      if (orient2d(x[0], x[1], p) >= 0 && orient2d(x[1], x[2], p) >= 0 &&
-          orient2d(x[2], x[0], p) >= 0)
-        found = static_cast<Id>(tri);
+      const double o[3] = {orient2d(x[1], x[2], p), orient2d(x[2], x[0], p),
+                           orient2d(x[0], x[1], p)};
+      if (o[0] < 0 || o[1] < 0 || o[2] < 0) continue;
+      found = static_cast<Id>(tri);
+      // o[i] == 0: on the side opposite vertex i; two of them: on a vertex.
+      const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+      for (int i = 0; i < 3; ++i)
+        on_boundary |= o[i] == 0 && on_constraint[3 * tri + static_cast<std::size_t>(i)] != kNoId;
+      on_boundary |= zeros >= 2;
+    }
+    if (found != kNoId && on_boundary) {
+      std::string msg = "hole point ";
+      msg += place(p);
+      msg += " lies on the boundary: give a point inside the hole";
+      throw InputError(msg);
     }
     if (found == kNoId || outside[region[found]]) {
       std::string msg = "hole point ";
@@ -208,7 +224,7 @@ Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_point
   }
   std::vector<std::uint8_t> hole(nregions, 0);
   if (!hole_points.empty())
-    hole = holes_from_points(t, region, nregions, outside, hole_points);
+    hole = holes_from_points(t, region, nregions, outside, on_constraint, hole_points);
   else
     for (int r = 0; r < nregions; ++r) hole[r] = !left[r];
 

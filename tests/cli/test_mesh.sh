@@ -38,6 +38,9 @@ domain "$TMP/sub.mesh" ccw
   [ "$(refs_of "$TMP/sub-out.mesh")" = 2 ] && ok "ccw-inner-loop-is-a-subdomain" || ko "ccw-inner-loop-is-a-subdomain"
 "$R" mesh "$TMP/sub.mesh" -o "$TMP/sub-hole.mesh" --hsiz 0.3 --hole 1.5,1.5 -q | grep -q "1 region, 1 hole" &&
   ok "hole-point" || ko "hole-point"
+# A hole point on a boundary vertex or edge belongs to no region (the first triangle found chose).
+expect_error_matching hole-point-on-vertex "hole point (1, 1) lies on the boundary" mesh "$TMP/sub.mesh" -o "$TMP/x.mesh" --hsiz 0.3 --hole 1,1
+expect_error_matching hole-point-on-edge "hole point (1.5, 1) lies on the boundary" mesh "$TMP/sub.mesh" -o "$TMP/x.mesh" --hsiz 0.3 --hole 1.5,1
 
 # --metric: sizes per domain vertex (0.1 on the outer square, 0.02 on the inner one); the mesh is
 # finer than with a uniform 0.1 and coarser than with 0.02.
