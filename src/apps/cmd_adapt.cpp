@@ -358,7 +358,8 @@ void register_adapt(CLI::App& app) {
       ->capture_default_str();
   a->hausd_given =
       cmd->add_option("--hausd", a->opt.hausd,
-                      "Largest distance of boundary chords to the boundary curve (2D), of the new "
+                      "Largest distance of boundary chords to the boundary curve (2D; 0: no "
+                      "bound), of the new "
                       "boundary to the input surface (surfaces, curved patches of volumes)")
           ->capture_default_str();
   auto* angle =

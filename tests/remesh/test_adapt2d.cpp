@@ -420,3 +420,15 @@ TEST(Adapt2d, SizesBeyondTheVertexLimitAreRefused) {
   EXPECT_THROW(adapt2d(in, std::vector<SymMat2>(in.num_vertices(), isotropic_metric<2>(1e-4)), {}),
                InputError);
 }
+
+TEST(Adapt2d, HausdBelowRoundoffIsRefused) {
+  // 1e-12 on a domain of size ~1 ran away (hundreds of thousands of boundary vertices, growing);
+  // 0 means no bound.
+  const Mesh in = unit_square(4, 4);
+  const std::vector<SymMat2> metrics(in.num_vertices(), isotropic_metric<2>(0.3));
+  Adapt2dOptions o;
+  o.hausd = 1e-12;
+  EXPECT_THROW(adapt2d(in, metrics, o), InputError);
+  o.hausd = 0.0;
+  EXPECT_NO_THROW(adapt2d(in, metrics, o));
+}
