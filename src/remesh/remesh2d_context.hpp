@@ -30,6 +30,8 @@ class Remesh2dContext {
   /// The metric for a vertex at p (on curve `curve` at parameter s, or kNoCurve), from the
   /// background field near the hint vertex's location, tightened along the curve for hausd.
   SymMat2 metric_for(const Vec2& p, std::int32_t curve, double s, Id hint_vertex) const;
+  /// m tightened along curve `curve` at parameter s so that chords stay within hausd.
+  SymMat2 tightened(SymMat2 m, std::int32_t curve, double s) const;
 
   /// Where smoothing would put v (inside: metric-weighted average of the unit-length points
   /// seen from its neighbours; on a curve: the curve point balancing the metric lengths to its

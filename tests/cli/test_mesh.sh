@@ -42,6 +42,30 @@ domain "$TMP/sub.mesh" ccw
 expect_error_matching hole-point-on-vertex "hole point (1, 1) lies on the boundary" mesh "$TMP/sub.mesh" -o "$TMP/x.mesh" --hsiz 0.3 --hole 1,1
 expect_error_matching hole-point-on-edge "hole point (1.5, 1) lies on the boundary" mesh "$TMP/sub.mesh" -o "$TMP/x.mesh" --hsiz 0.3 --hole 1.5,1
 
+# A circle in 10 edges of 5 refs (each ref change a 36-degree corner): the chords next to the
+# corners were 3 times too long, 9.4 --hausd off the circle (the corners' metrics were not
+# tightened along their curves).
+/usr/bin/python3 - "$TMP/circle5.mesh" <<'PY'
+import math, sys
+n = 10
+with open(sys.argv[1], "w") as f:
+    f.write("MeshVersionFormatted 2\nDimension 2\nVertices\n%d\n" % n)
+    for k in range(n):
+        f.write("%.17g %.17g 0\n" % (math.cos(2 * math.pi * k / n), math.sin(2 * math.pi * k / n)))
+    f.write("Edges\n%d\n" % n + "".join("%d %d %d\n" % (k + 1, (k + 1) % n + 1, k // 2 + 1) for k in range(n)))
+    f.write("End\n")
+PY
+"$R" mesh "$TMP/circle5.mesh" -o "$TMP/circle5_out.mesh" --hausd 1e-4 -q >/dev/null
+/usr/bin/python3 - "$TMP/circle5_out.mesh" <<'PY' && ok "mesh-hausd-at-ref-corners" || ko "mesh-hausd-at-ref-corners"
+import math, sys
+t = open(sys.argv[1]).read().split()
+i = t.index("Vertices"); n = int(t[i + 1]); p = [tuple(map(float, t[i + 2 + 3 * k: i + 4 + 3 * k])) for k in range(n)]
+j = t.index("Edges"); m = int(t[j + 1]); e = [tuple(map(int, t[j + 2 + 3 * k: j + 4 + 3 * k])) for k in range(m)]
+sag = max(1 - math.hypot((p[a - 1][0] + p[b - 1][0]) / 2, (p[a - 1][1] + p[b - 1][1]) / 2) for a, b in e)
+print("largest chord sag", sag)
+sys.exit(0 if sag <= 1.0001e-4 else 1)
+PY
+
 # --metric: sizes per domain vertex (0.1 on the outer square, 0.02 on the inner one); the mesh is
 # finer than with a uniform 0.1 and coarser than with 0.02.
 printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n8\n1 1\n0.1\n0.1\n0.1\n0.1\n0.02\n0.02\n0.02\n0.02\nEnd\n' >"$TMP/sizes.sol"
