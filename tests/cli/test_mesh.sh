@@ -55,7 +55,11 @@ with open(sys.argv[1], "w") as f:
     f.write("Edges\n%d\n" % n + "".join("%d %d %d\n" % (k + 1, (k + 1) % n + 1, k // 2 + 1) for k in range(n)))
     f.write("End\n")
 PY
-"$R" mesh "$TMP/circle5.mesh" -o "$TMP/circle5_out.mesh" --hausd 1e-4 -q >/dev/null
+# With --hausd alone the inside had the coarse input edges' sizes: fans of needles along the cut
+# circle (q_min 0.058); it now follows the boundary as cut.
+out=$("$R" mesh "$TMP/circle5.mesh" -o "$TMP/circle5_out.mesh" --hausd 1e-4 -q)
+[[ "$out" =~ q_min\ ([0-9.]+) ]] && /usr/bin/python3 -c "import sys; sys.exit(0 if ${BASH_REMATCH[1]} > 0.5 else 1)" &&
+  ok "mesh-hausd-alone-quality ($out)" || ko "mesh-hausd-alone-quality: $out"
 /usr/bin/python3 - "$TMP/circle5_out.mesh" <<'PY' && ok "mesh-hausd-at-ref-corners" || ko "mesh-hausd-at-ref-corners"
 import math, sys
 t = open(sys.argv[1]).read().split()
