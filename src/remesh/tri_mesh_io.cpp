@@ -1,6 +1,10 @@
 #include "remesh/tri_mesh_io.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cstdio>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
@@ -50,8 +54,34 @@ void add_vertices(TriMesh& m, const Mesh& mesh, std::span<const SymMat2> metrics
 /// The triangles in one go (as add_triangle one by one would set them), then the neighbours:
 /// the slot of edge (a, b) in neighbour n is the one opposite n's vertex that is neither.
 void add_triangles(TriMesh& m, const Mesh& mesh, const Adjacency& adj) {
-  if (!adj.nonmanifold_faces.empty())
-    throw InputError("non-manifold edge at " + tri_name(adj.nonmanifold_faces[0] / 3));
+  if (!adj.nonmanifold_faces.empty()) {
+    // Named by place: the remesher works on a renumbered copy, whose triangle ids the user never
+    // saw. A triangle listed twice is the usual cause, named as such (it was "non-manifold edge
+    // at" a triangle elsewhere).
+    auto centroid = [&mesh](std::size_t t) {
+      double c[2] = {0.0, 0.0};
+      for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 2; ++i)
+          c[i] += mesh.coords[2 * static_cast<std::size_t>(mesh.triangles[3 * t + k]) + i] / 3.0;
+      char where[64];
+      std::snprintf(where, sizeof where, "(%g, %g)", c[0], c[1]);
+      return std::string(where);
+    };
+    std::vector<std::pair<std::array<Id, 3>, std::size_t>> keys;
+    keys.reserve(mesh.num_triangles());
+    for (std::size_t t = 0; t < mesh.num_triangles(); ++t) {
+      std::array<Id, 3> k{mesh.triangles[3 * t], mesh.triangles[3 * t + 1],
+                          mesh.triangles[3 * t + 2]};
+      std::sort(k.begin(), k.end());
+      keys.push_back({k, t});
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 1; i < keys.size(); ++i)
+      if (keys[i].first == keys[i - 1].first)
+        throw InputError("a triangle is listed twice, at " + centroid(keys[i].second));
+    throw InputError("an edge is shared by more than two triangles, at the triangle " +
+                     centroid(static_cast<std::size_t>(adj.nonmanifold_faces[0] / 3)));
+  }
   const std::size_t nt = mesh.num_triangles(), room = 6 * nt;  // room for as many again
   reserve_huge(m.tv, room);
   reserve_huge(m.tadj, room);

@@ -98,6 +98,16 @@ while i < len(toks):
 open(sys.argv[2], 'w').write('\n'.join(out))
 PY
 expect_error_matching dup-edge-refs "join the same vertices with different refs" adapt "$TMP/dup_edge.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
+# A triangle listed twice: named as such and by place (it was "non-manifold edge at triangle N",
+# N a triangle of the remesher's renumbered copy).
+/usr/bin/python3 - "$L" "$TMP/dup_tri.mesh" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().split('\n')
+i = next(k for k, l in enumerate(lines) if l.strip() == 'Triangles')
+n = int(lines[i + 1]); lines[i + 1] = str(n + 1); lines.insert(i + 2 + n, lines[i + 2])
+open(sys.argv[2], 'w').write('\n'.join(lines))
+PY
+expect_error_matching dup-triangle "a triangle is listed twice, at (" adapt "$TMP/dup_tri.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
 expect_no_file bad-2d-options-no-output "$TMP/x.mesh"
 expect_no_file no-size-file "$TMP/x.mesh"
 expect_error contradiction adapt "$D/2d/aile.mesh" --hsiz 0.1 --metric "$D/formats/lshape_metric.sol" -o "$TMP/x.mesh"
