@@ -291,6 +291,8 @@ void run(AdaptArgs& a) {
   // surfaces too (--hmax -1, --hgrad nan, --interp bogus were taken there).
   a.opt.interp = parse_interp_scheme(a.interp);
   a.opt.validate();
+  if (a.quiet && a.verbosity > 0)
+    throw InputError("-v " + std::to_string(a.verbosity) + " and -q contradict");
   if (surface) return run_surface(a, mesh);
   if (sources == 0)
     throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");
@@ -299,8 +301,6 @@ void run(AdaptArgs& a) {
   a.opt.move = !a.nomove;
   a.opt.detect_angles = !a.nr;
   if (a.optim && a.opt.hgrad > 0.0) a.opt.hgrad = 0.0;  // the implied sizes are kept as they are
-  if (a.quiet && a.verbosity > 0)
-    throw InputError("-v " + std::to_string(a.verbosity) + " and -q contradict");
   if (a.verbosity < 0) a.quiet = true;  // MMG's -v -1: silent
   if (mesh.kind() == MeshKind::kVolume) return run3d(a, std::move(mesh));
   if (mesh.dim != 2)
