@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <span>
 #include <string>
 
 #include "core/error.hpp"
+#include "core/predicates.hpp"
 #include "mesh/adjacency.hpp"
 
 namespace riemesh {
@@ -147,6 +150,36 @@ void vertex_features(std::size_t nv, const std::vector<FeatureEdge>& fes, std::v
   }
 }
 
+/// Refuses two feature edges at v along the same ray whose far ends differ: the nearer end lies
+/// inside the other edge, a vertex in the middle of a triangle's side (a hanging vertex), and
+/// the remesher made a slit of it, with two vertices at one place (exit 0; `check` then called
+/// the output valid). A crack's tip (both far ends at one place) is kept.
+void require_no_overlap(const Mesh& mesh, const std::vector<FeatureEdge>& fes, Id v,
+                        std::span<const Id> edges) {
+  const Vec2 p = xy(mesh, v);
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const FeatureEdge &e = fes[static_cast<std::size_t>(edges[i])],
+                        &f = fes[static_cast<std::size_t>(edges[j])];
+      const Vec2 a = xy(mesh, e.v0 == v ? e.v1 : e.v0), b = xy(mesh, f.v0 == v ? f.v1 : f.v0);
+      // Along the same ray to rounding (a midpoint written with 17 digits is off the side by
+      // ~1e-17 of its length): the turn between them below 1e-10 rad.
+      const Vec2 da = a - p, db = b - p;
+      if (!(dot(da, db) > 0.0) || std::abs(orient2d(p.x, a.x, b.x)) > 1e-10 * norm(da) * norm(db))
+        continue;
+      if (a[0] == b[0] && a[1] == b[1]) continue;  // a crack's tip
+      // Named by place: the 2D remesher works on a renumbered copy.
+      const bool a_nearer = norm(a - p) < norm(b - p);
+      const Vec2 inner = a_nearer ? a : b, outer = a_nearer ? b : a;
+      char msg[280];
+      std::snprintf(msg, sizeof msg,
+                    "the mesh is not conforming at (%g, %g): a vertex there lies in the middle of "
+                    "a triangle's side, from (%g, %g) to (%g, %g)",
+                    inner[0], inner[1], p[0], p[1], outer[0], outer[1]);
+      throw InputError(msg);
+    }
+}
+
 /// Corner flags: tags, junctions, ref or side changes, sharp turns.
 std::vector<std::uint8_t> find_corners(const Mesh& mesh, const CurveOptions& opt,
                                        const std::vector<FeatureEdge>& fes, const Sides& sides,
@@ -158,6 +191,9 @@ std::vector<std::uint8_t> find_corners(const Mesh& mesh, const CurveOptions& opt
     const auto v = static_cast<Id>(vi);
     const Id deg = off[vi + 1] - off[vi];
     if (deg == 0) continue;
+    require_no_overlap(mesh, fes, v,
+                       std::span<const Id>(list).subspan(static_cast<std::size_t>(off[vi]),
+                                                         static_cast<std::size_t>(deg)));
     const std::uint8_t tag = vi < mesh.vert_tag.size() ? mesh.vert_tag[vi] : 0;
     if (deg != 2 || (tag & (kTagCorner | kTagRequired))) {
       corner[vi] = 1;

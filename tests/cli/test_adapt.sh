@@ -108,6 +108,10 @@ n = int(lines[i + 1]); lines[i + 1] = str(n + 1); lines.insert(i + 2 + n, lines[
 open(sys.argv[2], 'w').write('\n'.join(lines))
 PY
 expect_error_matching dup-triangle "a triangle is listed twice, at (" adapt "$TMP/dup_tri.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
+# A hanging vertex (the unit square in two triangles on one side of its diagonal's midpoint,
+# one triangle on the other): the remesher made a slit of it, two vertices at one place, exit 0.
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n5\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\nTriangles\n3\n1 2 3 1\n1 5 4 1\n5 3 4 1\nEnd\n' >"$TMP/hanging.mesh"
+expect_error_matching hanging-vertex "not conforming at (0.5, 0.5)" adapt "$TMP/hanging.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
 expect_no_file bad-2d-options-no-output "$TMP/x.mesh"
 expect_no_file no-size-file "$TMP/x.mesh"
 expect_error contradiction adapt "$D/2d/aile.mesh" --hsiz 0.1 --metric "$D/formats/lshape_metric.sol" -o "$TMP/x.mesh"
