@@ -12,6 +12,7 @@
 #include "core/predicates.hpp"
 #include "generate/cdt2d.hpp"
 #include "generate/delaunay2d.hpp"
+#include "remesh/prepare_metrics.hpp"
 
 namespace riemesh {
 
@@ -55,14 +56,8 @@ Constraints gather_constraints(const Mesh& in, const Triangulation2d& t) {
       if (c.ends[2 * it->second] != a) c.both_ways[it->second] = 1;
       // One edge keeps one ref: a second ref was dropped silently.
       const auto first = static_cast<std::size_t>(c.input_edge[it->second]);
-      if (!in.edge_ref.empty() && in.edge_ref[first] != in.edge_ref[e]) {
-        char msg[200];
-        std::snprintf(msg, sizeof msg,
-                      "boundary edges %zu and %zu join the same vertices with different refs (%d "
-                      "and %d): an edge has one ref",
-                      first + 1, e + 1, in.edge_ref[first], in.edge_ref[e]);
-        throw InputError(msg);
-      }
+      if (!in.edge_ref.empty() && in.edge_ref[first] != in.edge_ref[e])
+        refuse_edge_refs("boundary edge", first, e, in.edge_ref[first], in.edge_ref[e]);
       continue;
     }
     c.ends.insert(c.ends.end(), {a, b});

@@ -164,18 +164,23 @@ void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics) {
     for (std::size_t k = 1; k < keys.size(); ++k) {
       const std::size_t e0 = keys[k - 1].second, e1 = keys[k].second;
       if (keys[k].first != keys[k - 1].first || in.edge_ref[e0] == in.edge_ref[e1]) continue;
-      char msg[200];
-      std::snprintf(msg, sizeof msg,
-                    "edges %zu and %zu join the same vertices with different refs (%d and %d): "
-                    "an edge has one ref",
-                    e0 + 1, e1 + 1, in.edge_ref[e0], in.edge_ref[e1]);
-      throw InputError(msg);
+      refuse_edge_refs("edge", e0, e1, in.edge_ref[e0], in.edge_ref[e1]);
     }
   }
   // The name only for the error: building it for every vertex cost more than the test.
   for (std::size_t v = 0; v < metrics.size(); ++v)
     if (!is_spd(metrics[v]) || !std::isfinite(det(metrics[v])))
       require_metric(metrics[v], "vertex " + std::to_string(v + 1));
+}
+
+void refuse_edge_refs(const char* what, std::size_t e0, std::size_t e1, std::int32_t r0,
+                      std::int32_t r1) {
+  char msg[240];
+  std::snprintf(msg, sizeof msg,
+                "%ss %zu and %zu join the same vertices with different refs (%d and %d): an edge "
+                "has one ref",
+                what, e0 + 1, e1 + 1, r0, r1);
+  throw InputError(msg);
 }
 
 template void require_valid_input<2>(const Mesh&, std::span<const SymMat2>);

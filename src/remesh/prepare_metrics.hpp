@@ -1,5 +1,7 @@
 #pragma once
 // The metric field a remeshing run starts from (2D and 3D drivers alike).
+#include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -21,6 +23,11 @@ namespace riemesh {
 /// each metric SPD with a finite determinant. InputError naming the 1-based element or vertex.
 template <int D>
 void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics);
+
+/// Throws InputError("<what>s E0 and E1 join the same vertices with different refs (R0 and R1):
+/// an edge has one ref"), E0, E1 1-based: an edge listed twice whose second ref was dropped.
+[[noreturn]] void refuse_edge_refs(const char* what, std::size_t e0, std::size_t e1,
+                                   std::int32_t r0, std::int32_t r1);
 
 /// Throws InputError if the unit mesh of the metrics m (one per vertex of `in`, whose triangles
 /// (D = 2) or tets (D = 3) cover the domain) would need more than max_vertices vertices, or more
