@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -88,6 +89,21 @@ double chord_distance(const Curve2d& curve, double t0, double t1) {
   return worst;
 }
 
+namespace {
+
+/// "the size along a curve is 0 ...": printed with %g (std::to_string printed 1e-300 as
+/// 0.000000).
+std::string size_error(double h) {
+  char msg[160];
+  std::snprintf(msg, sizeof msg,
+                "the size along a curve is %g: sizes must be positive and finite (see the Points' "
+                "lc and --hsiz)",
+                h);
+  return msg;
+}
+
+}  // namespace
+
 std::vector<double> mesh_curve(const Curve2d& curve, const CurveSizing& sizing) {
   // The metric length density |γ'| / h on a fine uniform grid of t, then its running integral
   // (trapezoids).
@@ -99,8 +115,7 @@ std::vector<double> mesh_curve(const Curve2d& curve, const CurveSizing& sizing) 
     const CurveSample c = curve.at(t);
     const double speed = norm(c.d1);
     double h = sizing.size(t);
-    if (!(h > 0.0) || !std::isfinite(h))
-      throw InputError("the size along a curve is not positive (" + std::to_string(h) + ")");
+    if (!(h > 0.0) || !std::isfinite(h)) throw InputError(size_error(h));
     const double bend = std::abs(cross(c.d1, c.d2));  // |γ'|³ / ρ
     if (sizing.hausd > 0.0 && bend > 0.0)
       h = std::min(h, std::sqrt(8.0 * sizing.hausd * speed * speed * speed / bend));
