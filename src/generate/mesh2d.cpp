@@ -17,6 +17,20 @@ namespace riemesh {
 
 namespace {
 
+/// The mesh without its triangles: the curves of its Edges alone (build_boundary_curves reads
+/// the triangles' sides too).
+Mesh edges_only(const Mesh& m) {
+  Mesh out;
+  out.dim = m.dim;
+  out.coords = m.coords, out.vert_ref = m.vert_ref, out.vert_tag = m.vert_tag;
+  out.edges = m.edges, out.edge_ref = m.edge_ref, out.edge_tag = m.edge_tag;
+  return out;
+}
+
+BoundaryCurves edge_curves(const Mesh& edges, const Adapt2dOptions& options) {
+  return build_boundary_curves(edges, {options.angle_deg, options.detect_angles});
+}
+
 /// The mean length of the boundary edges at each vertex, as an isotropic metric.
 std::vector<SymMat2> boundary_sizes(const Mesh& m) {
   const std::size_t nv = m.num_vertices();
@@ -50,11 +64,8 @@ std::vector<SymMat2> boundary_sizes(const Mesh& m) {
 /// the square given by 4 edges a side: 72.8% of the edges in band, 99.2% with the cut).
 Mesh split_boundary(const Mesh& boundary, std::vector<SymMat2>& metrics,
                     const Adapt2dOptions& options) {
-  Mesh edges_only = boundary;  // the curves of the Edges alone (triangles are ignored here)
-  edges_only.triangles.clear(), edges_only.tri_ref.clear(), edges_only.tri_tag.clear();
-  const BoundaryCurves curves =
-      build_boundary_curves(edges_only, {options.angle_deg, options.detect_angles});
-  Mesh out = std::move(edges_only);
+  Mesh out = edges_only(boundary);
+  const BoundaryCurves curves = edge_curves(out, options);
   out.edges.clear(), out.edge_ref.clear(), out.edge_tag.clear();
   out.vert_ref.resize(out.num_vertices(), 0);
   out.vert_tag.resize(out.num_vertices(), kTagNone);
@@ -214,15 +225,9 @@ void keep_real_corners(const Mesh& boundary, const Adapt2dOptions& options, Mesh
   for (std::size_t v = 0; v < boundary.num_vertices(); ++v)
     if (v < boundary.vert_tag.size() && (boundary.vert_tag[v] & kTagCorner))
       given.insert({boundary.coords[2 * v], boundary.coords[2 * v + 1]});
-  Mesh edges_only;
-  edges_only.dim = 2;
-  edges_only.coords = out.coords;
-  edges_only.vert_ref = out.vert_ref;
-  edges_only.vert_tag.assign(out.num_vertices(), kTagNone);
-  edges_only.edges = out.edges, edges_only.edge_ref = out.edge_ref,
-  edges_only.edge_tag = out.edge_tag;
-  const BoundaryCurves curves =
-      build_boundary_curves(edges_only, {options.angle_deg, options.detect_angles});
+  Mesh edges = edges_only(out);
+  edges.vert_tag.assign(out.num_vertices(), kTagNone);  // (every kept vertex is a corner there)
+  const BoundaryCurves curves = edge_curves(edges, options);
   for (std::size_t v = 0; v < out.num_vertices(); ++v) {
     if (!(out.vert_tag[v] & kTagCorner)) continue;
     if (!curves.corner[v] && !given.count({out.coords[2 * v], out.coords[2 * v + 1]}))
@@ -235,11 +240,9 @@ void keep_real_corners(const Mesh& boundary, const Adapt2dOptions& options, Mesh
 /// that the inside follows the boundary as cut (the sizes of the coarse input edges inside left
 /// fans of needles along a finely cut circle: quality mean 0.31, min 0.06).
 std::vector<SymMat2> hausd_sizes(const Mesh& boundary, const Adapt2dOptions& options) {
-  Mesh edges_only = boundary;
-  edges_only.triangles.clear(), edges_only.tri_ref.clear(), edges_only.tri_tag.clear();
-  const BoundaryCurves curves =
-      build_boundary_curves(edges_only, {options.angle_deg, options.detect_angles});
-  std::vector<SymMat2> out = boundary_sizes(edges_only);
+  const Mesh edges = edges_only(boundary);
+  const BoundaryCurves curves = edge_curves(edges, options);
+  std::vector<SymMat2> out = boundary_sizes(edges);
   for (std::size_t v = 0; v < out.size(); ++v) {
     double h = 1.0 / std::sqrt(out[v](0, 0));
     for (const CurveVertex& cv : curves.curves_at(static_cast<Id>(v)))

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
 #include "mesh/adjacency.hpp"
+#include "mesh/distance.hpp"
 #include "mesh/hilbert.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
@@ -41,7 +42,6 @@ constexpr int kRelocationRounds = 2;
 // The smallest --hausd, relative to the domain's bounding-box diagonal
 // (require_hausd_above_roundoff).
 constexpr double kSmallestHausd = 1e-9;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string num(double v) {
   char buf[32];
@@ -477,13 +477,7 @@ namespace {
 /// the NACA domain ran away, 671 k vertices after 4 passes and growing; 1e-300 was ignored).
 void require_hausd_above_roundoff(const Mesh& input, double hausd) {
   if (!(hausd > 0.0)) return;  // 0: no bound
-  double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf};
-  for (std::size_t v = 0; v < input.num_vertices(); ++v)
-    for (int k = 0; k < 2; ++k) {
-      lo[k] = std::min(lo[k], input.coords[2 * v + static_cast<std::size_t>(k)]);
-      hi[k] = std::max(hi[k], input.coords[2 * v + static_cast<std::size_t>(k)]);
-    }
-  const double diag = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  const double diag = bounding_box_diagonal(input);
   if (hausd >= kSmallestHausd * diag) return;
   throw InputError("--hausd " + num(hausd) + " is below " + num(kSmallestHausd) +
                    " of the domain's size (bounding-box diagonal " + num(diag) +

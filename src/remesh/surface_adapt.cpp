@@ -5,10 +5,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
+#include "mesh/distance.hpp"
 #include "remesh/surface_adapt_detail.hpp"
 #include "remesh/surface_curvature.hpp"
 #include "remesh/surface_metric.hpp"
@@ -16,7 +16,6 @@
 namespace riemesh {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kSmallestScale = 1e-40, kLargestScale = 1e40;
 
 using surface_detail::State;
@@ -30,22 +29,11 @@ constexpr double kCentroidFactor = 0.75;
 /// --hausd) are refused before any point is added (a torus at --hausd 1e-9 reached 7 GB).
 constexpr double kMostSurfaceVertices = 5e7;
 
-/// The diagonal of the surface's bounding box.
-double surface_diagonal(const Mesh& in) {
-  Vec3 lo = {{kInfinity, kInfinity, kInfinity}}, hi = -lo;
-  for (std::size_t v = 0; v < in.num_vertices(); ++v)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], in.coords[3 * v + static_cast<std::size_t>(k)]);
-      hi[k] = std::max(hi[k], in.coords[3 * v + static_cast<std::size_t>(k)]);
-    }
-  return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-}
-
 /// Surfaces beyond 1e±40 are refused: the rotor scaled by 1e±60 gave 2,250 triangles instead of
 /// 3,766 (the same at 1e±20 and 1e±40), by 1e±80 invalid outputs 6% of the diagonal away from
 /// the input (products of lengths and metric values overflow or underflow).
 void require_computable_scale(const Mesh& in) {
-  const double diag = surface_diagonal(in);
+  const double diag = bounding_box_diagonal(in);
   if (diag >= kSmallestScale && diag <= kLargestScale) return;
   char msg[240];
   std::snprintf(msg, sizeof msg,
@@ -62,7 +50,7 @@ void require_computable_scale(const Mesh& in) {
 void require_reachable_surface(const Mesh& in, const std::vector<SymMat3>& metrics) {
   // In units of the bounding box's diagonal (areas / L², densities · L²), so that no product
   // overflows within the accepted scales.
-  const double unit = surface_diagonal(in);
+  const double unit = bounding_box_diagonal(in);
   std::vector<double> density(metrics.size());
   std::size_t finest = 0;
   for (std::size_t v = 0; v < metrics.size(); ++v) {

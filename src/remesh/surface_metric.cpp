@@ -7,6 +7,7 @@
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
+#include "mesh/distance.hpp"
 #include "metric/geometric.hpp"
 #include "metric/intersection.hpp"
 
@@ -18,16 +19,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 Vec3 vertex_at(const Mesh& mesh, Id v) {
   const double* p = &mesh.coords[3 * static_cast<std::size_t>(v)];
   return {{p[0], p[1], p[2]}};
-}
-
-double bbox_diagonal(const Mesh& mesh) {
-  Vec3 lo{{kInf, kInf, kInf}}, hi{{-kInf, -kInf, -kInf}};
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v)
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], mesh.coords[3 * v + c]);
-      hi[c] = std::max(hi[c], mesh.coords[3 * v + c]);
-    }
-  return norm(hi - lo);
 }
 
 /// Chord length on a circle of radius ρ whose gap to the arc is hausd: 2 sqrt(hausd(2ρ − hausd)),
@@ -84,7 +75,7 @@ std::vector<SymMat3> geometric_surface_metric(const Mesh& mesh, const Adjacency&
   const std::size_t nv = mesh.num_vertices();
   if (curvature.size() != nv || features.vert_tag.size() != nv)
     throw InputError("geometric_surface_metric: curvature or features not built from this mesh");
-  const double hmax = options.hmax > 0.0 ? options.hmax : bbox_diagonal(mesh);
+  const double hmax = options.hmax > 0.0 ? options.hmax : bounding_box_diagonal(mesh);
   const double hmin = options.hmin > 0.0 ? options.hmin : std::min(options.hausd, hmax);
   if (!(hmax > 0.0)) throw InputError("geometric_surface_metric: the surface has no extent");
   const std::vector<Id> line = feature_neighbours(adj, features);
