@@ -18,7 +18,7 @@ done
 # a hole point overrides the orientation.
 square() {  # square X0 SIZE ORDER(ccw|cw) FIRST_VERTEX(1-based)
   local x=$1 s=$2 o=$3 f=$4
-  local y=$(echo "$x + $s" | bc -l)
+  local y=$(awk -v x="$x" -v s="$s" 'BEGIN { print x + s }')  # (bc is not installed by setup.sh)
   if [ "$o" = ccw ]; then printf '%s %s 0\n%s %s 0\n%s %s 0\n%s %s 0\n' $x $x $y $x $y $y $x $y >>"$TMP/v"
   else printf '%s %s 0\n%s %s 0\n%s %s 0\n%s %s 0\n' $x $x $x $y $y $y $y $x >>"$TMP/v"; fi
   printf '%d %d 1\n%d %d 1\n%d %d 1\n%d %d 1\n' $f $((f+1)) $((f+1)) $((f+2)) $((f+2)) $((f+3)) $((f+3)) $f >>"$TMP/e"
