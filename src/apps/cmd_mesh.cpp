@@ -138,9 +138,15 @@ void run(MeshArgs& a) {
   if (a.hsiz_given->count() > 0) require_size_option("--hsiz", a.opt.hsiz);
   if (a.opt.hsiz > 0.0 && !a.metric.empty())
     throw InputError("--hsiz and --metric contradict: give one of them");
+  std::vector<double> holes3;  // X,Y,Z points, for surfaces
   for (const std::string& h : a.holes) {
     const std::vector<double> xy = parse_numbers(h, "--hole");
-    if (xy.size() != 2) throw InputError("--hole takes X,Y (two numbers), got '" + h + "'");
+    if (xy.size() == 3) {
+      holes3.insert(holes3.end(), xy.begin(), xy.end());
+      continue;
+    }
+    if (xy.size() != 2)
+      throw InputError("--hole takes X,Y (a planar domain) or X,Y,Z (a surface), got '" + h + "'");
     a.opt.holes.insert(a.opt.holes.end(), xy.begin(), xy.end());
   }
   // Isotropic sizes (from the boundary or --hsiz) vary linearly between the boundary vertices,
@@ -153,10 +159,12 @@ void run(MeshArgs& a) {
   if (ends_with(a.input, ".geo")) return mesh_geometry(a);
   const Mesh domain = read_mesh(a.input);
   if (domain.dim == 3) {  // a closed surface: the volume inside it
-    if (!a.metric.empty() || a.hausd->count() > 0 || !a.holes.empty() || a.interp_given->count())
+    if (!a.metric.empty() || a.hausd->count() > 0 || a.interp_given->count())
       throw InputError(a.input +
                        ": a surface is meshed with --hsiz or sizes from its edges so "
-                       "far; --metric, --hausd, --hole and --interp apply to planar domains");
+                       "far; --metric, --hausd and --interp apply to planar domains");
+    if (!a.opt.holes.empty())
+      throw InputError(a.input + ": --hole takes X,Y,Z points for a surface");
     const bool sizing = a.opt.hsiz > 0.0 || a.hmin->count() > 0 || a.hmax->count() > 0 ||
                         a.hgrad->count() > 0 || a.passes->count() > 0;
     if (a.nofill && sizing)
@@ -171,12 +179,14 @@ void run(MeshArgs& a) {
     f.hmax = a.opt.adapt.hmax;
     f.passes = a.opt.adapt.max_passes;
     f.keep_triangles = a.keep_triangles;
+    f.holes = holes3;
     if (a.hgrad->count() > 0) f.hgrad = a.opt.adapt.hgrad;
     f.quiet = a.quiet;
     f.verbosity = a.verbosity;
     mesh_volume_from_surface(a.input, domain, a.output, f);
     return;
   }
+  if (!holes3.empty()) throw InputError(a.input + ": --hole takes X,Y points for a planar domain");
   if (a.keep_triangles)
     throw InputError(a.input +
                      ": --keep-triangles applies to surfaces (a planar domain's "
@@ -242,8 +252,8 @@ void register_mesh(CLI::App& app) {
                              "Largest distance of boundary chords to the boundary curve "
                              "(remeshes the boundary)");
   cmd->add_option("--hole", a->holes,
-                  "A point X,Y inside a hole (repeatable); when given, hole points alone "
-                  "decide which regions are holes");
+                  "A point X,Y (planar domain) or X,Y,Z (surface) inside a hole (repeatable); "
+                  "when given, hole points alone decide which regions are holes");
   cmd->add_flag("--nofill", a->nofill,
                 "Surfaces: keep the tetrahedra of the boundary points only (no interior points)");
   cmd->add_flag("--keep-triangles", a->keep_triangles,
@@ -271,7 +281,11 @@ void register_mesh(CLI::App& app) {
                   "Verbosity (1: per-pass operator counts, lengths and mean quality)");
   cmd->footer(
       "Regions between edges get triangle refs 1, 2, ... (in the order of their first edge); a "
-      "region whose edges all leave it on their right is a hole unless --hole points are given.");
+      "region whose edges all leave it on their right is a hole unless --hole points are given. "
+      "Surfaces: regions between the triangles (an interface listed once separates two) get "
+      "tet refs 1, 2, ... (in the order of their first triangle); an enclosed shell oriented "
+      "against the one around it is a hole (a cavity), oriented alike a solid of its own, unless "
+      "--hole points are given.");
   cmd->callback([a] { run(*a); });
 }
 

@@ -3,6 +3,7 @@
 // generate/boundary_recovery3d.hpp).
 #include "apps/cmd_mesh3d.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -47,13 +48,14 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
             if (!args.quiet) print_pass(p, args.verbosity, "tetrahedra", "fill ");
             q_min = p.q_min;
           },
-          args.keep_triangles);
+          args.keep_triangles, args.holes);
       s = filled.stats;
       field_points = filled.field_points;
       out = std::move(filled.adapted.mesh);
     } else {
       BoundaryRecoveryOptions ro;
       ro.keep_triangles = args.keep_triangles;
+      ro.hole_points = args.holes;
       RecoveredVolume r = recover_volume(surface, ro);
       s = r.stats;
       out = std::move(r.volume);
@@ -73,33 +75,6 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
                    "--hsiz; it is kept as given, so the tets along it will be poor: remesh it to "
                    "the size first (riemesh adapt %s --hsiz %g -o SURFACE.mesh)\n",
                    input.c_str(), mean, mean / args.hsiz, input.c_str(), args.hsiz);
-  }
-  // Nested shells give the space between them whatever their orientation: an inner shell
-  // oriented like the one around it (a solid, as gmsh writes a sphere inside a box) was made a
-  // cavity without a word. Then the surface's signed volume is not the volume meshed.
-  if (!args.quiet) {
-    double enclosed = 0.0, meshed = 0.0;
-    auto point = [](const Mesh& m, Id v) {
-      const double* p = &m.coords[3 * static_cast<std::size_t>(v)];
-      return Vec3{{p[0], p[1], p[2]}};
-    };
-    for (std::size_t t = 0; t < surface.num_triangles(); ++t) {
-      const Id* v = &surface.triangles[3 * t];
-      enclosed +=
-          dot(point(surface, v[0]), cross(point(surface, v[1]), point(surface, v[2]))) / 6.0;
-    }
-    for (std::size_t t = 0; t < out.num_tets(); ++t) {
-      const Id* v = &out.tets[4 * t];
-      const Vec3 a = point(out, v[0]);
-      meshed += dot(point(out, v[1]) - a, cross(point(out, v[2]) - a, point(out, v[3]) - a)) / 6.0;
-    }
-    if (std::abs(std::abs(enclosed) - meshed) > 1e-6 * meshed)
-      std::fprintf(stderr,
-                   "riemesh: note: %s: an inner shell is oriented like the shell around it (a "
-                   "solid, enclosing %.6g with it, where %.6g was meshed): riemesh meshes the "
-                   "space between nested shells, so it was left empty; orient it the other way "
-                   "to say so, or mesh the two regions apart\n",
-                   input.c_str(), std::abs(enclosed), meshed);
   }
   write_mesh(out, output);
   // The tets of the boundary points alone may keep flat slivers between nearly cocircular
@@ -135,7 +110,11 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
           "; %zu planar patch%s of %zu triangles re-triangulated with Delaunay faces "
           "(--keep-triangles keeps them)",
           s.planar_patches, s.planar_patches == 1 ? "" : "es", s.patch_triangles);
-    std::printf("\n");
+    int regions = 0;
+    for (const int r : out.tet_ref) regions = std::max(regions, r);
+    std::printf("; %d region%s (tet refs 1", regions, regions == 1 ? "" : "s");
+    if (regions > 1) std::printf("-%d", regions);
+    std::printf(")\n");
   }
 }
 

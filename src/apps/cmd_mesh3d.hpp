@@ -3,6 +3,7 @@
 // (`riemesh mesh` calls this when its input is a surface in 3D).
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -17,6 +18,7 @@ struct VolumeFillArgs {
   double hmax = std::numeric_limits<double>::infinity();
   int passes = 15;  ///< largest number of the fill's optimisation passes (--passes)
   bool keep_triangles = false;  ///< --keep-triangles: planar patches not re-triangulated
+  std::vector<double> holes;    ///< --hole points (x, y, z each): these regions left empty
   bool quiet = false;
   int verbosity = 0;  ///< 1: per-pass statistics of the fill
 };
@@ -24,7 +26,7 @@ struct VolumeFillArgs {
 /// Tetrahedralises the closed surface `surface` read from `input` (boundary recovered with
 /// Steiner points on the surface), fills it with interior points (unless fill is off) and writes
 /// the volume to `output`; prints one summary line unless quiet. Throws InputError naming `input`
-/// for a surface with a defect (hole, non-manifold edge, inconsistent orientation, coincident
+/// for a surface with a defect (hole, triangle listed twice, inconsistent orientation, coincident
 /// vertices, self-intersection); nothing is written then.
 void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
                               const std::string& output, const VolumeFillArgs& args);

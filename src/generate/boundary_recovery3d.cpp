@@ -63,11 +63,12 @@ struct EdgePoint {
   Id id;
 };
 
-/// An input edge a < b, its points in order of t (a at 0, b at 1), and its two triangles.
+/// An input edge a < b, its points in order of t (a at 0, b at 1), and its triangles (two, or
+/// more where regions meet).
 struct InputEdge {
   Id a, b;
   std::vector<EdgePoint> points;
-  Id tri[2] = {kNoId, kNoId};
+  std::vector<Id> tri;
 };
 
 /// An input triangle: corners, the edge opposite each corner, a frame of its plane (corner 0 at
@@ -112,6 +113,7 @@ class Recovery {
   const Mesh& surface_;
   std::vector<Id> vertices_;    // surface vertex of each input point
   std::size_t interior_ = 0;    // interior points, after the surface's (coords_, info_)
+  std::vector<double> hole_points_;
   std::vector<double> coords_;  // all points, input then Steiner
   std::vector<PointInfo> info_;
   std::vector<InputEdge> edges_;
@@ -163,6 +165,9 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
     if (!std::isfinite(c)) throw InputError("interior points: a coordinate is not finite");
   coords_.insert(coords_.end(), options.interior_points.begin(), options.interior_points.end());
   interior_ = options.interior_points.size() / 3;
+  if (options.hole_points.size() % 3 != 0)
+    throw InputError("hole points: 3 coordinates per point expected");
+  hole_points_ = options.hole_points;
   info_.assign(nv + interior_, PointInfo{Kind::kInterior});
   stats_.surface_vertices = nv;
   max_steiner_per_vertex_ = options.max_steiner_per_vertex;
@@ -246,7 +251,7 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
         edges_.push_back(std::move(e));
       }
       InputEdge& e = edges_[static_cast<std::size_t>(it->second)];
-      e.tri[e.tri[0] == kNoId ? 0 : 1] = static_cast<Id>(f);
+      e.tri.push_back(static_cast<Id>(f));
       t.edge[j] = it->second;
     }
     const double* p0 = xyz(t.c[0]);
@@ -571,7 +576,7 @@ Mesh Recovery::volume(const Tetrahedralization& tz) const {
   d.coords = coords_;
   d.tz = tz;
   d.num_faces = refined.num_triangles();
-  return volume_inside(refined, d);
+  return volume_inside(refined, d, hole_points_);
 }
 
 /// Every interior point must be a vertex of an inside tet (else it was outside or on the surface).
@@ -663,7 +668,7 @@ std::size_t Recovery::flip_cocircular_edges(
   };
   for (const auto& [e, k] : missing_segments) {
     const InputEdge& edge = edges_[e];
-    if (edge.points.size() != 2 || edge.tri[0] == kNoId || edge.tri[1] == kNoId) continue;
+    if (edge.points.size() != 2 || edge.tri.size() != 2) continue;
     if (facets_[static_cast<std::size_t>(edge.tri[0])].sub.size() != 1 ||
         facets_[static_cast<std::size_t>(edge.tri[1])].sub.size() != 1)
       continue;

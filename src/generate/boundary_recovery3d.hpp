@@ -19,8 +19,10 @@
 //   rounding; the subface triangulations are built on the exact barycentric coordinates (points
 //   of an edge are exactly collinear there), so neighbouring triangles always agree on the
 //   subsegments of their common edge;
-// - the tetrahedra inside are those reached from outside the hull by crossing the subfaces an odd
-//   number of times; the subfaces are written as boundary triangles with their input refs.
+// - the tetrahedra kept are those of the regions between the subfaces that are neither outside nor
+//   holes, each region with its own tet ref (volume_regions3d.hpp: an interface listed once
+//   separates two regions; an enclosed shell oriented like the one around it is a solid); the
+//   subfaces are written as boundary triangles with their input refs.
 // No Steiner point is placed inside the volume. Self-intersecting surfaces are refused up front
 // (they would never converge); a surface that needs more than max_steiner_per_vertex Steiner
 // points per surface vertex gives an InputError instead of a hang.
@@ -50,6 +52,9 @@ struct BoundaryRecoveryOptions {
   /// the Steiner points. InputError when one is not a vertex of an inside tetrahedron (outside,
   /// or on the surface) or coincides with another point.
   std::vector<double> interior_points;
+  /// Points (x, y, z each) inside regions to leave empty; when given they alone decide which
+  /// regions are holes, otherwise the orientation of enclosed shells does (volume_regions3d.hpp).
+  std::vector<double> hole_points;
 };
 
 struct BoundaryRecoveryStats {
@@ -69,8 +74,9 @@ struct BoundaryRecoveryStats {
 
 struct RecoveredVolume {
   /// Vertices: the surface's vertices of triangles (in increasing id order, refs and tags kept),
-  /// then the interior points of the options, then the Steiner points (ref 0). Boundary triangles: the subfaces of each input triangle,
-  /// oriented like it, with its ref and tag. Tet refs are 0.
+  /// then the interior points of the options, then the Steiner points (ref 0). Boundary triangles:
+  /// the subfaces of each input triangle, oriented like it, with its ref and tag. Tet refs: the
+  /// regions', 1, 2, ...
   Mesh volume;
   BoundaryRecoveryStats stats;
 };

@@ -258,14 +258,17 @@ PatchTriangulation retriangulate_planar_patches(std::span<const Id> triangles,
     copy_input();
     return out;
   }
-  // The triangle across each edge (a closed manifold surface: two per edge).
+  // The triangle across each edge on two triangles; none across an edge where regions meet
+  // (three or more triangles: the patch's outline, never re-triangulated).
   std::vector<Id> neighbour(3 * nt, kNoId);
   for (std::size_t t = 0; t < nt; ++t)
     for (int j = 0; j < 3; ++j) {
       const std::uint64_t key = edge_key(triangles[3 * t + j], triangles[3 * t + (j + 1) % 3]);
       auto it = std::lower_bound(edges.begin(), edges.end(), std::pair<std::uint64_t, Id>{key, -1});
-      for (; it != edges.end() && it->first == key; ++it)
-        if (it->second != static_cast<Id>(t)) neighbour[3 * t + j] = it->second;
+      if (it + 1 == edges.end() || (it + 1)->first != key ||
+          (it + 2 != edges.end() && (it + 2)->first == key))
+        continue;
+      neighbour[3 * t + j] = it->second != static_cast<Id>(t) ? it->second : (it + 1)->second;
     }
   const auto point = [&](Id v) { return coords.data() + 3 * static_cast<std::size_t>(v); };
   // Patches by flooding across edges: same ref and tag, every vertex on the seed's plane.

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <deque>
 #include <string>
 #include <utility>
 
 #include "core/error.hpp"
 #include "core/predicates.hpp"
+#include "generate/volume_regions3d.hpp"
 
 namespace riemesh {
 
@@ -110,31 +110,44 @@ void require_closed_surface(const Mesh& s) {
   if (flat)
     throw_defect("triangles of zero area (collinear vertices)", flat,
                  "triangle " + std::to_string(first_flat + 1));
+  // The same three vertices twice: a zero-volume region between the copies.
+  std::vector<std::pair<Face, Id>> faces(s.num_triangles());
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    const Id* v = &s.triangles[3 * t];
+    faces[t] = {sorted(v[0], v[1], v[2]), static_cast<Id>(t)};
+  }
+  std::sort(faces.begin(), faces.end());
+  std::size_t twice = 0;
+  std::string first_twice;
+  for (std::size_t k = 0; k + 1 < faces.size(); ++k)
+    if (faces[k].first == faces[k + 1].first && twice++ == 0)
+      first_twice = "triangles " + std::to_string(faces[k].second + 1) + " and " +
+                    std::to_string(faces[k + 1].second + 1);
+  if (twice) throw_defect("triangles listed twice (same three vertices)", twice, first_twice);
+  // Edges on more than two triangles are where regions meet (a wall inside a box, the interface
+  // of two solids listed once): allowed; their orientation says nothing (an interface faces away
+  // from one of its regions, into the other). Edges on two triangles must be traversed both ways.
   const std::vector<DirectedEdge> e = directed_edges(s);
-  std::size_t open = 0, non_manifold = 0, flipped = 0;
-  std::string first_open, first_non_manifold, first_flipped;
+  std::size_t open = 0, flipped = 0;
+  std::string first_open, first_flipped;
   for (std::size_t i = 0; i < e.size();) {
     std::size_t j = i;
     while (j < e.size() && e[j].lo == e[i].lo && e[j].hi == e[i].hi) ++j;
     const std::string name = edge_name(e[i].lo, e[i].hi);
     if (j - i == 1 && open++ == 0) first_open = name;
-    if (j - i > 2 && non_manifold++ == 0) first_non_manifold = name;
     if (j - i == 2 && e[i].forward == e[i + 1].forward && flipped++ == 0) first_flipped = name;
     i = j;
   }
-  if (non_manifold)
-    throw_defect("non-manifold edges (on more than two triangles)", non_manifold,
-                 "edge of " + first_non_manifold);
   if (open) throw_defect("edges on one triangle only (holes)", open, "edge of " + first_open);
   if (flipped)
     throw_defect("edges traversed the same way by both their triangles (inconsistent orientation)",
                  flipped, "edge of " + first_flipped);
-  // Every edge on two triangles: the triangles at a vertex, joined across their edges through
-  // it, form cycles; more than one cycle is a vertex where separate sheets touch (two cubes
-  // sharing a corner), whose volume is no manifold: its tets around that vertex are not
-  // connected through faces, which the optimiser's walks need. Union-find on the corners
-  // (3 t + i: triangle t at its vertex i), the two corners of each edge's triangles at each end
-  // joined.
+  // The triangles at a vertex, joined across their edges through it, form cycles (around
+  // edges where regions meet, every triangle on the edge is joined); more than one set is a
+  // vertex where separate sheets touch (two cubes sharing a corner), whose volume is no
+  // manifold: its tets around that vertex are not connected through faces, which the
+  // optimiser's walks need. Union-find on the corners (3 t + i: triangle t at its vertex i), the
+  // corners of each edge's triangles at each end joined.
   std::vector<Id> parent(3 * s.num_triangles());
   for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<Id>(k);
   const auto root = [&](Id k) {
@@ -145,11 +158,15 @@ void require_closed_surface(const Mesh& s) {
     const Id* tv = &s.triangles[3 * static_cast<std::size_t>(t)];
     return 3 * t + (tv[0] == v ? 0 : tv[1] == v ? 1 : 2);
   };
-  for (std::size_t i = 0; i + 1 < e.size(); i += 2)
-    for (const Id v : {e[i].lo, e[i].hi}) {
-      const Id x = root(corner(e[i].tri, v)), y = root(corner(e[i + 1].tri, v));
-      parent[std::max(x, y)] = std::min(x, y);
-    }
+  for (std::size_t i = 0; i < e.size();) {
+    std::size_t j = i + 1;
+    for (; j < e.size() && e[j].lo == e[i].lo && e[j].hi == e[i].hi; ++j)
+      for (const Id v : {e[i].lo, e[i].hi}) {
+        const Id x = root(corner(e[i].tri, v)), y = root(corner(e[j].tri, v));
+        parent[std::max(x, y)] = std::min(x, y);
+      }
+    i = j;
+  }
   // Per vertex, the first root seen; another root at the same vertex is a second sheet.
   std::vector<Id> sheet(nv, kNoId);
   std::size_t pinched = 0;
@@ -221,52 +238,15 @@ SurfaceDelaunay delaunay_of_surface(const Mesh& s) {
   return d;
 }
 
-Mesh volume_inside(const Mesh& s, const SurfaceDelaunay& d) {
+Mesh volume_inside(const Mesh& s, const SurfaceDelaunay& d, std::span<const double> hole_points) {
   if (!d.conforming()) throw Error("volume_inside: the surface is not in the tetrahedralisation");
   std::vector<Id> old2new(s.num_vertices(), kNoId);
   for (std::size_t k = 0; k < d.vertices.size(); ++k)
     old2new[static_cast<std::size_t>(d.vertices[k])] = static_cast<Id>(k);
-  std::vector<Face> surface_faces;
-  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
-    const Id* v = &s.triangles[3 * t];
-    surface_faces.push_back(sorted(old2new[static_cast<std::size_t>(v[0])],
-                                   old2new[static_cast<std::size_t>(v[1])],
-                                   old2new[static_cast<std::size_t>(v[2])]));
-  }
-  std::sort(surface_faces.begin(), surface_faces.end());
-  const auto on_surface = [&](const Id* tet, int i) {
-    return std::binary_search(surface_faces.begin(), surface_faces.end(),
-                              sorted(tet[(i + 1) % 4], tet[(i + 2) % 4], tet[(i + 3) % 4]));
-  };
-  // 0-1 breadth-first search from outside the hull: crossing a surface face costs 1; a tet is
-  // inside when its distance is odd.
-  const std::size_t nt = d.tz.num_tets();
-  std::vector<int> depth(nt, -1);
-  std::deque<std::pair<Id, int>> queue;
-  for (std::size_t t = 0; t < nt; ++t)
-    for (int i = 0; i < 4; ++i)
-      if (d.tz.tet2tet[4 * t + i] == kNoId) {
-        const int cost = on_surface(&d.tz.tets[4 * t], i) ? 1 : 0;
-        if (cost == 0)
-          queue.push_front({static_cast<Id>(t), 0});
-        else
-          queue.push_back({static_cast<Id>(t), 1});
-      }
-  while (!queue.empty()) {
-    const auto [t, dist] = queue.front();
-    queue.pop_front();
-    const auto tu = static_cast<std::size_t>(t);
-    if (depth[tu] >= 0) continue;
-    depth[tu] = dist;
-    for (int i = 0; i < 4; ++i) {
-      const Id n = d.tz.tet2tet[4 * tu + i];
-      if (n == kNoId || depth[static_cast<std::size_t>(n)] >= 0) continue;
-      if (on_surface(&d.tz.tets[4 * tu], i))
-        queue.push_back({n, dist + 1});
-      else
-        queue.push_front({n, dist});
-    }
-  }
+  std::vector<Id> local(s.triangles.size());
+  for (std::size_t k = 0; k < local.size(); ++k)
+    local[k] = old2new[static_cast<std::size_t>(s.triangles[k])];
+  const std::vector<int> ref = tet_regions(d.tz, local, d.coords, hole_points).ref;
   Mesh out;
   out.dim = 3;
   out.coords = d.coords;
@@ -275,15 +255,15 @@ Mesh volume_inside(const Mesh& s, const SurfaceDelaunay& d) {
     out.vert_ref.push_back(vu < s.vert_ref.size() ? s.vert_ref[vu] : 0);
     out.vert_tag.push_back(vu < s.vert_tag.size() ? s.vert_tag[vu] : 0);
   }
-  for (std::size_t t = 0; t < nt; ++t)
-    if (depth[t] % 2 == 1) {
+  for (std::size_t t = 0; t < d.tz.num_tets(); ++t)
+    if (ref[t] > 0) {
       out.tets.insert(out.tets.end(), d.tz.tets.begin() + static_cast<std::ptrdiff_t>(4 * t),
                       d.tz.tets.begin() + static_cast<std::ptrdiff_t>(4 * t + 4));
-      out.tet_ref.push_back(0);
+      out.tet_ref.push_back(ref[t]);
     }
+  require_no_pinch(out);
+  out.triangles = std::move(local);
   for (std::size_t t = 0; t < s.num_triangles(); ++t) {
-    for (int i = 0; i < 3; ++i)
-      out.triangles.push_back(old2new[static_cast<std::size_t>(s.triangles[3 * t + i])]);
     out.tri_ref.push_back(t < s.tri_ref.size() ? s.tri_ref[t] : 0);
     out.tri_tag.push_back(t < s.tri_tag.size() ? s.tri_tag[t] : 0);
   }

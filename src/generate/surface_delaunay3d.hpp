@@ -6,6 +6,7 @@
 // Boundary recovery (restoring missing edges and faces with Steiner points) is in
 // generate/boundary_recovery3d.hpp, which reuses require_closed_surface and volume_inside.
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "generate/delaunay3d.hpp"
@@ -14,13 +15,13 @@
 namespace riemesh {
 
 /// Throws InputError naming the first defect that keeps the triangles of `surface` from bounding
-/// a volume: no triangles, a triangle with a repeated vertex, an edge on more than two triangles
-/// (non-manifold), an edge on one triangle only (a hole), two triangles traversing their
-/// common edge the same way (inconsistent orientation), a vertex where separate sheets of the
-/// surface touch (non-manifold vertex), a triangle of zero area, two vertices at the same
-/// place, a
-/// coordinate over 1e150 in magnitude or not finite (squared lengths would overflow). Vertex
-/// numbers in messages are 1-based, as in the files. Self-intersections are not detected.
+/// a volume: no triangles, a triangle with a repeated vertex, a triangle listed twice, an edge on
+/// one triangle only (a hole), two triangles traversing their common edge the same way when it
+/// has only them (inconsistent orientation), a vertex where separate sheets of the surface touch
+/// (non-manifold vertex), a triangle of zero area, two vertices at the same place, a coordinate
+/// over 1e150 in magnitude or not finite (squared lengths would overflow). Edges on more than two
+/// triangles are where regions meet (an interface listed once) and are accepted. Vertex numbers
+/// in messages are 1-based, as in the files. Self-intersections are not detected.
 void require_closed_surface(const Mesh& surface);
 
 /// The Delaunay tetrahedralisation of a surface's vertices and how much of the surface it holds.
@@ -39,10 +40,13 @@ struct SurfaceDelaunay {
 /// triangles (vertices of no triangle are ignored).
 SurfaceDelaunay delaunay_of_surface(const Mesh& surface);
 
-/// The volume mesh bounded by a conforming surface: the tetrahedra reached from outside the hull
-/// by crossing the surface an odd number of times (nested shells alternate), the surface's
-/// triangles (refs kept) as boundary faces, and its vertices (refs kept), renumbered as in
-/// d.vertices. Tet refs are 0. Error if d is not conforming.
-Mesh volume_inside(const Mesh& surface, const SurfaceDelaunay& d);
+/// The volume mesh bounded by a conforming surface: the tetrahedra of its regions that are
+/// neither outside nor holes (tet_regions in volume_regions3d.hpp: hole points, 3 doubles each,
+/// or the orientation of enclosed shells decide), each region's tets with its ref 1, 2, ...; the
+/// surface's triangles (refs kept) as boundary faces, and its vertices (refs kept), renumbered as
+/// in d.vertices. Error if d is not conforming; InputError for a bad hole point or solids that
+/// touch along an edge or at a point (require_no_pinch).
+Mesh volume_inside(const Mesh& surface, const SurfaceDelaunay& d,
+                   std::span<const double> hole_points = {});
 
 }  // namespace riemesh

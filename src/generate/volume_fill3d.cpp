@@ -242,7 +242,8 @@ Adapt3dResult fill_volume(Mesh&& volume, double hsiz, Adapt3dOptions options,
 }
 
 FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions options,
-                         const PassCallback& on_pass, bool keep_triangles) {
+                         const PassCallback& on_pass, bool keep_triangles,
+                         std::span<const double> hole_points) {
   if (!(hsiz >= 0.0) || !std::isfinite(hsiz))
     throw InputError("the size must be finite and >= 0 (0: from the boundary edges)");
   options.validate();
@@ -250,6 +251,7 @@ FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions option
   BoundaryRecoveryOptions ro;
   ro.refine_flat = false;
   ro.keep_triangles = keep_triangles;
+  ro.hole_points.assign(hole_points.begin(), hole_points.end());
   RecoveredVolume first = recover_volume(surface, ro);
   // Sizes clipped to [hmin, hmax] (the field points follow them too).
   const auto sizes_of = [&](const Mesh& v) {

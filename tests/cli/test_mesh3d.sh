@@ -62,8 +62,10 @@ with open(sys.argv[1], "w") as f:
 PY
 }
 cube_surface "$TMP/cube.mesh" 2
-# Nested shells: a cube of side 0.4 inside the unit cube, oriented like it (a solid) or the other
-# way (a cavity). Either is meshed as the space between; the first is noted (it was silent).
+# Nested shells: a cube of side 0.4 inside the unit cube, oriented like it (a solid, as gmsh writes
+# a sphere in a box) or the other way (a cavity). The solid is meshed as a second region with its
+# own tet ref (it was left empty, with a note); the cavity stays empty; a hole point empties the
+# solid too.
 nested_cubes() {  # FILE SIGN (1: inner like the outer, -1: reversed)
 /usr/bin/python3 - "$TMP/cube.mesh" "$1" "$2" <<'PY'
 import sys
@@ -85,14 +87,79 @@ PY
 }
 nested_cubes "$TMP/solid_in.mesh" 1
 nested_cubes "$TMP/cavity_in.mesh" -1
-"$R" mesh "$TMP/solid_in.mesh" -o "$TMP/solid_in_vol.mesh" --nofill >/dev/null 2>"$TMP/nested_err"; code=$?
-if [ $code -eq 0 ] && grep -q "^riemesh: note: .*solid_in.mesh: an inner shell is oriented like the shell around it" "$TMP/nested_err"; then
-  ok mesh3d-nested-solid-noted
+ref_volumes() {  # MESH: "ref:volume" per tet ref, sorted by ref
+/usr/bin/python3 - "$1" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+n = int(toks[toks.index('Vertices') + 1]); i = toks.index('Vertices') + 2
+p = [tuple(map(float, toks[i + 4 * k: i + 4 * k + 3])) for k in range(n)]
+m = int(toks[toks.index('Tetrahedra') + 1]); j = toks.index('Tetrahedra') + 2
+vol = {}
+for k in range(m):
+    a, b, c, d, r = map(int, toks[j + 5 * k: j + 5 * k + 5])
+    u, v, w = [[p[x - 1][q] - p[a - 1][q] for q in range(3)] for x in (b, c, d)]
+    det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])
+    vol[r] = vol.get(r, 0.0) + det / 6
+print(" ".join("%d:%.6f" % (r, vol[r]) for r in sorted(vol)))
+PY
+}
+out=$("$R" mesh "$TMP/solid_in.mesh" -o "$TMP/solid_in_vol.mesh" --nofill 2>"$TMP/nested_err"); code=$?
+vols=$(ref_volumes "$TMP/solid_in_vol.mesh")
+if [ $code -eq 0 ] && [ "$vols" = "1:0.936000 2:0.064000" ] && [[ "$out" == *"; 2 regions (tet refs 1-2)" ]] &&
+   [ ! -s "$TMP/nested_err" ] && "$R" check "$TMP/solid_in_vol.mesh" >/dev/null; then
+  ok mesh3d-nested-solid-is-a-region
 else
-  ko "mesh3d-nested-solid-noted: $code $(cat "$TMP/nested_err")"
+  ko "mesh3d-nested-solid-is-a-region: $code $vols $out $(cat "$TMP/nested_err")"
 fi
-"$R" mesh "$TMP/cavity_in.mesh" -o "$TMP/cavity_in_vol.mesh" --nofill >/dev/null 2>"$TMP/nested_err"; code=$?
-[ $code -eq 0 ] && ! grep -q "note" "$TMP/nested_err" && ok mesh3d-nested-cavity-quiet || ko "mesh3d-nested-cavity-quiet: $code $(cat "$TMP/nested_err")"
+out=$("$R" mesh "$TMP/cavity_in.mesh" -o "$TMP/cavity_in_vol.mesh" --nofill 2>"$TMP/nested_err"); code=$?
+vols=$(ref_volumes "$TMP/cavity_in_vol.mesh")
+[ $code -eq 0 ] && [ "$vols" = "1:0.936000" ] && [[ "$out" == *"; 1 region (tet refs 1)" ]] && [ ! -s "$TMP/nested_err" ] &&
+  ok mesh3d-nested-cavity || ko "mesh3d-nested-cavity: $code $vols $out $(cat "$TMP/nested_err")"
+# Filled, with a hole point in the solid: the space between alone; the fill keeps the refs.
+"$R" mesh "$TMP/solid_in.mesh" -o "$TMP/solid_fill.mesh" -q --hsiz 0.2 --passes 3 &&
+  [ "$(ref_volumes "$TMP/solid_fill.mesh")" = "1:0.936000 2:0.064000" ] && ok mesh3d-nested-fill ||
+  ko "mesh3d-nested-fill: $(ref_volumes "$TMP/solid_fill.mesh")"
+"$R" mesh "$TMP/solid_in.mesh" -o "$TMP/solid_hole.mesh" -q --hole 0.5,0.5,0.5 &&
+  [ "$(ref_volumes "$TMP/solid_hole.mesh")" = "1:0.936000" ] && ok mesh3d-hole-point ||
+  ko "mesh3d-hole-point: $(ref_volumes "$TMP/solid_hole.mesh")"
+expect_error_matching mesh3d-hole-outside "hole point (2, 0.5, 0.5) is outside the volume" \
+  mesh "$TMP/solid_in.mesh" -o "$TMP/y.mesh" --hole 2,0.5,0.5
+expect_error_matching mesh3d-hole-2d-point "--hole takes X,Y,Z points for a surface" \
+  mesh "$TMP/solid_in.mesh" -o "$TMP/y.mesh" --hole 0.5,0.5
+expect_no_file mesh3d-hole-no-output "$TMP/y.mesh"
+# Two unit cubes sharing the face x = 1, listed once (as gmsh writes two volumes): the edges of
+# that face are on three triangles; it was refused as "non-manifold edges". Two regions, each of
+# volume 1, the shared face an interface with tets on both sides; the coplanar faces of the two
+# cubes (same ref) are not merged across it.
+/usr/bin/python3 - "$TMP/cube.mesh" "$TMP/two_cubes.mesh" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+n = int(toks[toks.index('Vertices') + 1]); i = toks.index('Vertices') + 2
+pts = [tuple(map(float, toks[i + 4 * k: i + 4 * k + 3])) for k in range(n)]
+m = int(toks[toks.index('Triangles') + 1]); j = toks.index('Triangles') + 2
+tris = [tuple(map(int, toks[j + 4 * k: j + 4 * k + 3])) for k in range(m)]
+all_pts = pts + [p for p in [(x + 1, y, z) for x, y, z in pts] if p not in pts]
+idx = {p: k + 1 for k, p in enumerate(all_pts)}
+second = [tuple(idx[(pts[v - 1][0] + 1,) + pts[v - 1][1:]] for v in t) for t in tris
+          if not all(pts[v - 1][0] == 0 for v in t)]
+with open(sys.argv[2], "w") as f:
+    f.write("MeshVersionFormatted 2\nDimension 3\nVertices\n%d\n" % len(all_pts))
+    f.write("".join("%.17g %.17g %.17g 0\n" % p for p in all_pts))
+    f.write("Triangles\n%d\n" % (len(tris) + len(second)))
+    f.write("".join("%d %d %d 1\n" % t for t in tris + second) + "End\n")
+PY
+out=$("$R" mesh "$TMP/two_cubes.mesh" -o "$TMP/two_cubes_vol.mesh" --nofill 2>&1); code=$?
+vols=$(ref_volumes "$TMP/two_cubes_vol.mesh")
+if [ $code -eq 0 ] && [ "$vols" = "1:1.000000 2:1.000000" ] && [[ "$out" == *"; 2 regions (tet refs 1-2)" ]] &&
+   "$R" check "$TMP/two_cubes_vol.mesh" >/dev/null; then
+  ok mesh3d-two-cubes
+else
+  ko "mesh3d-two-cubes: $code $vols $out"
+fi
+"$R" mesh "$TMP/two_cubes.mesh" -o "$TMP/two_cubes_fill.mesh" -q --hsiz 0.2 --passes 3 &&
+  [ "$(ref_volumes "$TMP/two_cubes_fill.mesh")" = "1:1.000000 2:1.000000" ] &&
+  "$R" check "$TMP/two_cubes_fill.mesh" >/dev/null && ok mesh3d-two-cubes-fill ||
+  ko "mesh3d-two-cubes-fill: $(ref_volumes "$TMP/two_cubes_fill.mesh")"
 out=$("$R" mesh "$TMP/cube.mesh" -o "$TMP/cube_fill.mesh" --hsiz 0.25 2>"$TMP/fill_err"); code=$?
 if [ $code -eq 0 ] && [[ "$out" =~ ^[^:]*:\ ([0-9]+)\ vertices,\ ([0-9]+)\ tetrahedra\ \(q_min\ [0-9.]+\),\ ([0-9]+)\ boundary\ triangles\;\ ([0-9]+)\ Steiner ]] &&
    [ "${BASH_REMATCH[1]}" -gt $((26 + BASH_REMATCH[4])) ] && [ "${BASH_REMATCH[3]}" -ge 48 ] &&

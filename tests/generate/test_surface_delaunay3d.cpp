@@ -87,6 +87,100 @@ TEST(SurfaceDelaunay3d, NestedShellsKeepTheSpaceBetweenThem) {
   const Mesh v = volume_inside(s, d);
   EXPECT_NEAR(volume(v), (1000.0 - 1.0) / 6, 1e-9);
   EXPECT_TRUE(check_mesh(v).valid());
+  EXPECT_EQ(v.tet_ref, std::vector<int>(v.num_tets(), 1));
+  // The whole surface turned inside out: the inner shell still against the outer one.
+  Mesh r = s;
+  for (std::size_t k = 0; k < r.triangles.size(); k += 3)
+    std::swap(r.triangles[k + 1], r.triangles[k + 2]);
+  EXPECT_NEAR(volume(volume_inside(r, delaunay_of_surface(r))), (1000.0 - 1.0) / 6, 1e-9);
+}
+
+/// Volume of the tets with ref `ref`.
+double region_volume(const Mesh& v, int ref) {
+  Mesh part = v;
+  part.tets.clear();
+  part.tet_ref.clear();
+  for (std::size_t t = 0; t < v.num_tets(); ++t)
+    if (v.tet_ref[t] == ref) {
+      part.tets.insert(part.tets.end(), v.tets.begin() + static_cast<std::ptrdiff_t>(4 * t),
+                       v.tets.begin() + static_cast<std::ptrdiff_t>(4 * t + 4));
+      part.tet_ref.push_back(ref);
+    }
+  return volume(part);
+}
+
+TEST(SurfaceDelaunay3d, InnerShellOrientedLikeTheOuterIsASolidOfItsOwn) {
+  // As gmsh writes a solid inside another: both shells outward. Two regions, refs in the order
+  // of their first triangle (the outer shell's first).
+  Mesh s;
+  s.dim = 3;
+  add_tet_surface(s, 10.0, 0.0, true);
+  add_tet_surface(s, 1.0, 1.0, true);
+  const SurfaceDelaunay d = delaunay_of_surface(s);
+  ASSERT_TRUE(d.conforming());
+  const Mesh v = volume_inside(s, d);
+  EXPECT_NEAR(volume(v), 1000.0 / 6, 1e-9);
+  EXPECT_NEAR(region_volume(v, 1), (1000.0 - 1.0) / 6, 1e-9);
+  EXPECT_NEAR(region_volume(v, 2), 1.0 / 6, 1e-12);
+  EXPECT_TRUE(check_mesh(v).valid());
+  // A hole point in the inner one makes it a hole again; outside or on the surface: refused.
+  const std::vector<double> in = {1.1, 1.1, 1.1}, out = {20, 1, 1}, on = {1.2, 1.2, 1.0};
+  EXPECT_NEAR(volume(volume_inside(s, d, in)), (1000.0 - 1.0) / 6, 1e-9);
+  EXPECT_THROW(volume_inside(s, d, out), InputError);
+  EXPECT_THROW(volume_inside(s, d, on), InputError);
+  // A hole point in the outer region leaves the inner solid alone.
+  const std::vector<double> between = {5, 1, 1};
+  const Mesh inner = volume_inside(s, d, between);
+  EXPECT_NEAR(volume(inner), 1.0 / 6, 1e-12);
+  EXPECT_EQ(inner.tet_ref, std::vector<int>(inner.num_tets(), 1));
+}
+
+TEST(SurfaceDelaunay3d, SolidsSharingAFaceAreTwoRegions) {
+  // Tets (0, a, b, c) and (d, a, b, c) on either side of the shared face abc, listed once: its
+  // edges are on three triangles each. Either orientation of the shared face gives two regions.
+  for (const bool flip : {false, true}) {
+    Mesh s;
+    s.dim = 3;
+    s.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1.5, 1.5, 1.5};
+    s.triangles = {0, 2, 1, 0, 1, 3, 0, 3, 2, 4, 1, 2, 4, 3, 1, 4, 2, 3, 1, 2, 3};
+    if (flip) std::swap(s.triangles[19], s.triangles[20]);
+    s.vert_ref.assign(5, 0);
+    s.vert_tag.assign(5, 0);
+    s.tri_ref = {1, 1, 1, 2, 2, 2, 3};
+    s.tri_tag.assign(7, 0);
+    ASSERT_NO_THROW(require_closed_surface(s));
+    const SurfaceDelaunay d = delaunay_of_surface(s);
+    ASSERT_TRUE(d.conforming());
+    const Mesh v = volume_inside(s, d);
+    EXPECT_NEAR(region_volume(v, 1), 1.0 / 6, 1e-12);
+    EXPECT_NEAR(region_volume(v, 2), 3.5 / 6, 1e-12);  // height 3.5 / sqrt(3) over abc
+    EXPECT_TRUE(check_mesh(v).valid());
+  }
+}
+
+TEST(SurfaceDelaunay3d, SolidsTouchingAlongAnEdgeAreRefused) {
+  // Two tetrahedra sharing the edge (0, 1) only: each edge's 4 triangles are accepted by the
+  // surface check, but the volume would not be a manifold there.
+  Mesh s;
+  s.dim = 3;
+  s.coords = {0, 0, 0, 1, 0, 0, 0.5, 1, 0.2, 0.5, 0.2, 1, 0.5, -1, -0.2, 0.5, -0.2, -1};
+  s.triangles = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 4, 1, 0, 1, 5, 0, 5, 4, 1, 4, 5};
+  for (std::size_t k = 12; k < 24; k += 3)  // the second one outward too
+    std::swap(s.triangles[k + 1], s.triangles[k + 2]);
+  s.vert_ref.assign(6, 0);
+  s.vert_tag.assign(6, 0);
+  s.tri_ref.assign(8, 1);
+  s.tri_tag.assign(8, 0);
+  try {
+    const SurfaceDelaunay d = delaunay_of_surface(s);
+    ASSERT_TRUE(d.conforming());
+    volume_inside(s, d);
+    ADD_FAILURE() << "two solids touching along an edge were accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("separate solids touch along an edge or at a point"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(SurfaceDelaunay3d, SchonhardtPrismIsReportedNotFaked) {
@@ -126,11 +220,21 @@ TEST(SurfaceDelaunay3d, DefectsAreNamed) {
   Mesh flipped = good;
   std::swap(flipped.triangles[1], flipped.triangles[2]);
   EXPECT_NE(message(flipped).find("inconsistent orientation"), std::string::npos);
-  Mesh fin = good;  // a fin on the edge of the first triangle: that edge has 3 triangles
+  // A fin on the edge of the first triangle: that edge has 3 triangles (accepted where regions
+  // meet), but the fin's two other edges bound it alone.
+  Mesh fin = good;
   fin.coords.insert(fin.coords.end(), {5.0, 5.0, 5.0});
   fin.triangles.insert(fin.triangles.end(),
                        {fin.triangles[0], fin.triangles[1], static_cast<Id>(fin.num_vertices() - 1)});
-  EXPECT_NE(message(fin).find("non-manifold edges"), std::string::npos);
+  EXPECT_NE(message(fin).find("2 edges on one triangle only (holes)"), std::string::npos)
+      << message(fin);
+  Mesh twice = good;  // the first triangle again (its edges then on 3 triangles each)
+  twice.triangles.insert(twice.triangles.end(),
+                         {good.triangles[0], good.triangles[2], good.triangles[1]});
+  EXPECT_NE(message(twice).find(
+                "1 triangles listed twice (same three vertices) (first: triangles 1 and "),
+            std::string::npos)
+      << message(twice);
   Mesh none;
   EXPECT_NE(message(none).find("no triangles"), std::string::npos);
   // A tetrahedron whose bottom face is split at the middle of an edge, that edge's other side
