@@ -469,13 +469,15 @@ bool keep_locality(Remesh3dContext& ctx, std::size_t renumber_after, SweepMemos&
   return true;
 }
 
-/// The longest edge, in the metric, of the listed faces between two tets (interfaces between
-/// subdomains, kept as given) or, with `outer`, of all listed faces; 0 when there is none.
-double longest_kept_edge(const TetMesh& m, bool outer) {
+/// The longest edge, in the metric, of the listed faces kept as given: those of curved
+/// interfaces between subdomains or, with `outer`, all listed faces; 0 when there is none.
+double longest_kept_edge(const Remesh3dContext& ctx, bool outer) {
+  const TetMesh& m = ctx.mesh();
   double longest = 0.0;
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4);
-    if (!m.fbdy[s] || !m.tet_alive(t) || (m.tadj[s] == kNoId && !outer)) continue;
+    if (!m.fbdy[s] || !m.tet_alive(t)) continue;
+    if (!outer && (m.tadj[s] == kNoId || !ctx.kept_interface(m.face_ref(s)))) continue;
     const int i = static_cast<int>(s % 4);
     for (int k = 0; k < 3; ++k)
       longest = std::max(longest, edge_length(m, m.tv[4 * t + kTetFace[i][k]],
@@ -641,7 +643,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   result.report.converged = loop.run(options.max_passes, n, n);
   lists = EdgeLists{}, nbrs = NeighbourTable{};
   if (!result.report.converged) result.report.stall_reason = stall_reason(m);
-  if (const double l = longest_kept_edge(m, options.keep_surface); l > kInterfaceNote) {
+  if (const double l = longest_kept_edge(*ctx, options.keep_surface); l > kInterfaceNote) {
     char note[320];
     if (options.keep_surface)
       std::snprintf(note, sizeof note,
@@ -650,9 +652,9 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
                     l);
     else
       std::snprintf(note, sizeof note,
-                    "the interfaces between subdomains are kept as given (3D remeshing does not "
-                    "refine or move them yet): their edges are up to %.3g long in the metric, "
-                    "and the tets along them cannot follow the sizes",
+                    "the curved interfaces between subdomains are kept as given (3D remeshing "
+                    "refines and moves planar ones only): their edges are up to %.3g long in the "
+                    "metric, and the tets along them cannot follow the sizes",
                     l);
     result.report.notes.push_back(note);
   }

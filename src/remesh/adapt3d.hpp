@@ -12,8 +12,10 @@
 // volume: its edges are split at points of the plane, its vertices collapse and move in the
 // plane, and vertices on the line where two planar patches meet collapse along that line. A
 // curved patch is remeshed on the smooth reconstruction of the input surface within hausd
-// (boundary3d.hpp). Corners, vertices tagged corner or required and interfaces are kept as
-// given, as is the whole surface with keep_surface.
+// (boundary3d.hpp). A planar interface between two subdomains (listed faces between two tets) is
+// remeshed as a planar patch, its faces listed on both sides; curved interfaces, corners and
+// vertices tagged corner or required are kept as given, as is the whole surface with
+// keep_surface.
 #include <span>
 #include <vector>
 

@@ -7,23 +7,33 @@
 namespace riemesh {
 namespace {
 
-/// The boundary rules: which listed faces hold edge (from, to), against from's kind.
+/// The boundary rules: which listed faces hold edge (from, to), against from's kind. A planar
+/// interface counts once (its face is listed on both sides): its planar and ridge vertices go
+/// along their plane or line as those of the outer boundary (remesh3d_context.hpp).
 bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to) {
   const VertexKind k = m.vkind[from];
   if (k == VertexKind::kFixed) return false;
-  std::int32_t refs[2];
+  std::int32_t refs[3];
   int n = 0;
+  bool interface = false;
   for (const Id t : shell)
     for (int i = 0; i < 4; ++i) {
-      const Id v = m.tv[4 * t + i], s = 4 * t + i;
-      if (v == from || v == to || !m.fbdy[s]) continue;
-      if (m.tadj[s] != kNoId || n == 2) return false;  // an interface, or not a surface edge
+      const Id v = m.tv[4 * t + i], s = 4 * t + i, r = m.tadj[s];
+      if (v == from || v == to || !m.fbdy[s] || (r != kNoId && r < s)) continue;
+      if (n == 3) return false;
       refs[n++] = m.face_ref(s);
+      interface = interface || r != kNoId;
     }
   if (k == VertexKind::kInterior) return n == 0;
-  if (n != 2) return false;
   const std::int32_t p0 = m.vplane[2 * from], p1 = m.vplane[2 * from + 1];
-  if (k == VertexKind::kPlanar || k == VertexKind::kSurface) return refs[0] == p0 && refs[1] == p0;
+  if (k == VertexKind::kRidge) {  // along its line: the edge in both planes
+    const auto has = [&](std::int32_t p) { return std::find(refs, refs + n, p) != refs + n; };
+    return n >= 2 && has(p0) && has(p1);
+  }
+  if (n != 2) return false;
+  if (k == VertexKind::kPlanar) return refs[0] == p0 && refs[1] == p0;
+  if (interface) return false;  // (curved patches meeting an interface are fixed)
+  if (k == VertexKind::kSurface) return refs[0] == p0 && refs[1] == p0;
   if (k == VertexKind::kCurve)  // along its feature line only
     return m.surface && ((refs[0] == p0 && refs[1] == p1) || (refs[0] == p1 && refs[1] == p0)) &&
            m.surface->feature_edge(m, from, to, refs[0], refs[1]);

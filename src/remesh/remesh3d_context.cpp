@@ -56,6 +56,22 @@ bool edge_face_refs(const TetMesh& m, const std::vector<Id>& shell, Id a, Id b,
   return true;
 }
 
+/// The listed faces holding edge (a, b) of the shell, an interface face once: their refs in
+/// refs[0..n) (at most 4; false beyond) and whether one is an interface.
+bool edge_faces(const TetMesh& m, const std::vector<Id>& shell, Id a, Id b, std::int32_t* refs,
+                int& n, bool& interface) {
+  n = 0, interface = false;
+  for (const Id t : shell)
+    for (int i = 0; i < 4; ++i) {
+      const Id v = m.tv[4 * t + i], s = 4 * t + i, r = m.tadj[s];
+      if (v == a || v == b || !m.fbdy[s] || (r != kNoId && r < s)) continue;
+      if (n == 4) return false;
+      refs[n++] = m.face_ref(s);
+      interface = interface || r != kNoId;
+    }
+  return true;
+}
+
 }  // namespace
 
 Remesh3dContext::Remesh3dContext(const Mesh& input, std::span<const SymMat3> metrics,
@@ -113,13 +129,17 @@ void Remesh3dContext::find_planes() {
     auto [it, fresh] = planes_.try_emplace(m.face_ref(s));
     Plane& pl = it->second;
     if (fresh) pl.n = n, pl.d = dot(n, a);
-    if (m.tadj[s] != kNoId || dot(n, pl.n) < 1.0 - 1e-9) pl.planar = false;
+    // (|n . n'|: an interface face is seen from both sides, with opposite normals.)
+    if (std::abs(dot(n, pl.n)) < 1.0 - 1e-9) pl.planar = false;
     if (m.tadj[s] == kNoId) pl.outer = true;
     else
-      has_interfaces_ = true;
+      pl.inner = true;
     for (const Vec3* p : {&a, &b, &c})
       if (std::abs(dot(pl.n, *p) - pl.d) > tol) pl.planar = false;
   }
+  // Planar interfaces are remeshed like planar patches; curved ones are kept as given.
+  for (const auto& [ref, pl] : planes_)
+    has_interfaces_ = has_interfaces_ || (pl.inner && !pl.planar);
 }
 
 const Remesh3dContext::Plane* Remesh3dContext::plane(std::int32_t ref) const {
@@ -130,42 +150,51 @@ const Remesh3dContext::Plane* Remesh3dContext::plane(std::int32_t ref) const {
 void Remesh3dContext::classify_vertices() {
   TetMesh& m = mesh_;
   const std::size_t nv = m.vertex_capacity();
-  std::vector<std::int32_t> refs(3 * nv, 0);
+  constexpr int kMostRefs = 4;  // refs recorded per vertex
+  std::vector<std::int32_t> refs(kMostRefs * nv, 0);
   std::vector<int> count(nv, 0);
-  std::vector<bool> fixed(nv, false), curved(nv, false);
+  std::vector<bool> fixed(nv, false), curved(nv, false), inner(nv, false);
   std::map<std::pair<std::int32_t, std::int32_t>, std::vector<Id>> on_coplanar_line;
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4);
     if (!m.fbdy[s] || !m.tet_alive(t)) continue;
     const int i = static_cast<int>(s % 4);
+    const std::int32_t ref = m.face_ref(s);
+    const bool flat = plane(ref) != nullptr, interface = m.tadj[s] != kNoId;
     for (int k = 0; k < 3; ++k) {
       const Id v = m.tv[4 * t + kTetFace[i][k]];
-      if (m.tadj[s] != kNoId || (!plane(m.face_ref(s)) && !boundary_) || options_.keep_surface)
-        fixed[v] = true;
-      if (!plane(m.face_ref(s))) curved[v] = true;
+      if ((interface && !flat) || (!flat && !boundary_) || options_.keep_surface) fixed[v] = true;
+      if (!flat) curved[v] = true;
+      if (interface) inner[v] = true;
       int& c = count[v];
-      if (std::find(&refs[3 * v], &refs[3 * v] + std::min(c, 3), m.face_ref(s)) != &refs[3 * v] + std::min(c, 3))
-        continue;
-      if (c < 3) refs[3 * v + c] = m.face_ref(s);
+      std::int32_t* r = &refs[kMostRefs * v];
+      if (std::find(r, r + std::min(c, kMostRefs), ref) != r + std::min(c, kMostRefs)) continue;
+      if (c < kMostRefs) r[c] = ref;
       ++c;
     }
   }
   for (std::size_t v = 0; v < nv; ++v) {
     VertexKind k = VertexKind::kFixed;
-    if ((m.vtag[v] & (kTagCorner | kTagRequired)) || fixed[v] || count[v] > 2) {
+    const std::int32_t* r = &refs[kMostRefs * v];
+    std::int32_t r1 = 0, r2 = 0;
+    // A curved patch meeting an interface: its reconstruction does not see the interface.
+    if ((m.vtag[v] & (kTagCorner | kTagRequired)) || fixed[v] || (inner[v] && curved[v]) ||
+        (count[v] > 2 && !(inner[v] && interface_line(r, count[v], r1, r2)))) {
       k = VertexKind::kFixed;
+    } else if (count[v] > 2) {  // where a planar interface meets coplanar outer patches
+      k = VertexKind::kRidge;
+      m.vplane[2 * v] = r1, m.vplane[2 * v + 1] = r2;
     } else if (count[v] == 0) {
       k = VertexKind::kInterior;
     } else if (curved[v]) {  // on the reconstruction of the curved patches (boundary3d.hpp)
       k = boundary_->kind(static_cast<Id>(v));
-      m.vplane[2 * v] = std::min(refs[3 * v], refs[3 * v + count[v] - 1]);
-      m.vplane[2 * v + 1] = std::max(refs[3 * v], refs[3 * v + count[v] - 1]);
+      m.vplane[2 * v] = std::min(r[0], r[count[v] - 1]);
+      m.vplane[2 * v + 1] = std::max(r[0], r[count[v] - 1]);
     } else if (count[v] == 1) {
       k = VertexKind::kPlanar;
-      m.vplane[2 * v] = m.vplane[2 * v + 1] = refs[3 * v];
+      m.vplane[2 * v] = m.vplane[2 * v + 1] = r[0];
     } else {
-      const std::int32_t r1 = std::min(refs[3 * v], refs[3 * v + 1]);
-      const std::int32_t r2 = std::max(refs[3 * v], refs[3 * v + 1]);
+      r1 = std::min(r[0], r[1]), r2 = std::max(r[0], r[1]);
       m.vplane[2 * v] = r1, m.vplane[2 * v + 1] = r2;
       if (std::abs(dot(plane(r1)->n, plane(r2)->n)) < 1.0 - 1e-6)
         k = VertexKind::kRidge;
@@ -202,6 +231,26 @@ void Remesh3dContext::classify_vertices() {
   }
 }
 
+bool Remesh3dContext::interface_line(const std::int32_t* r, int n, std::int32_t& r1,
+                                     std::int32_t& r2) const {
+  if (n != 3) return false;
+  const auto inner = [&](std::int32_t ref) {
+    const auto it = planes_.find(ref);
+    return it != planes_.end() && it->second.inner;
+  };
+  for (int k = 0; k < 3; ++k) {
+    const std::int32_t i = r[k], a = r[(k + 1) % 3], b = r[(k + 2) % 3];
+    const Plane *pi = plane(i), *pa = plane(a), *pb = plane(b);
+    if (!pi || !inner(i)) continue;
+    if (!pa || !pb || inner(a) || inner(b) || std::abs(dot(pa->n, pb->n)) < 1.0 - 1e-6 ||
+        std::abs(dot(pi->n, pa->n)) >= 1.0 - 1e-6)
+      return false;
+    r1 = std::min(std::min(a, b), i), r2 = std::max(std::min(a, b), i);
+    return true;
+  }
+  return false;
+}
+
 bool Remesh3dContext::ridge_direction(std::int32_t r1, std::int32_t r2, Vec3& d) const {
   const Plane *p1 = plane(r1), *p2 = plane(r2);
   if (!p1 || !p2) return false;
@@ -218,13 +267,37 @@ bool Remesh3dContext::ridge_direction(std::int32_t r1, std::int32_t r2, Vec3& d)
 bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
   thread_local std::vector<Id> shell;
   collect_shell(mesh_, a, b, shell, hint);
-  std::int32_t refs[2];
+  std::int32_t refs[4];
   int n = 0;
-  if (shell.empty() || !edge_face_refs(mesh_, shell, a, b, refs, n)) return false;
+  bool interface = false;
+  if (shell.empty() || !edge_faces(mesh_, shell, a, b, refs, n, interface)) return false;
   out.kind = VertexKind::kInterior;
   out.plane[0] = out.plane[1] = 0;
-  if (n == 1) return false;
-  if (n == 2) {
+  if (interface) {  // on a planar interface (its faces once in refs), or where it meets others
+    if (options_.keep_surface) return false;
+    std::int32_t d[4];
+    int nd = 0;
+    for (int k = 0; k < n; ++k) {
+      if (!plane(refs[k])) return false;
+      if (std::find(d, d + nd, refs[k]) == d + nd) d[nd++] = refs[k];
+    }
+    Vec3 dir;
+    std::int32_t r1 = 0, r2 = 0;
+    if (nd == 1 && n == 2) {
+      out.kind = VertexKind::kPlanar;
+      r1 = r2 = d[0];
+    } else if (nd == 2 && ridge_direction(d[0], d[1], dir)) {
+      out.kind = VertexKind::kRidge;
+      r1 = std::min(d[0], d[1]), r2 = std::max(d[0], d[1]);
+    } else if (interface_line(d, nd, r1, r2)) {
+      out.kind = VertexKind::kRidge;
+    } else {
+      return false;
+    }
+    out.plane[0] = r1, out.plane[1] = r2;
+  } else if (n == 1 || n > 2) {
+    return false;
+  } else if (n == 2) {
     if (options_.keep_surface) return false;
     if (!plane(refs[0]) || !plane(refs[1])) {  // a curved patch (boundary3d.hpp)
       if (!boundary_) return false;

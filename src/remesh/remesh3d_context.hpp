@@ -55,9 +55,16 @@ class Remesh3dContext {
   /// The background field (one metric per input vertex).
   std::span<const SymMat3> field() const { return background_.metrics(); }
 
-  /// True when some listed face lies between two tets (an interface between subdomains, kept
-  /// as given, its vertices fixed).
+  /// True when some listed face between two tets (an interface between subdomains) is on a
+  /// curved interface, kept as given with its vertices fixed (planar interfaces are remeshed
+  /// like planar patches: their vertices move in their plane, their edges are split and
+  /// collapsed, their faces on both sides kept listed by replace_cavity).
   bool has_interfaces() const { return has_interfaces_; }
+  /// True when the faces of `ref` are kept as given as an interface (a curved interface).
+  bool kept_interface(std::int32_t ref) const {
+    const auto it = planes_.find(ref);
+    return it != planes_.end() && it->second.inner && !it->second.planar;
+  }
 
   /// Records, for vertex v just created or moved, the background tet of the last metric_for.
   void inherit_hint(Id v);
@@ -73,6 +80,7 @@ class Remesh3dContext {
     double d = 0.0;
     bool planar = true;
     bool outer = false;  ///< some face of the ref is on the outer boundary (not an interface)
+    bool inner = false;  ///< some face of the ref is an interface (between two tets)
   };
   void find_planes();
   void classify_vertices();
@@ -80,6 +88,10 @@ class Remesh3dContext {
   /// The direction of the line where planar patches r1 < r2 meet: their normals' cross product,
   /// or for coplanar patches the direction of their straight common boundary; false if none.
   bool ridge_direction(std::int32_t r1, std::int32_t r2, Vec3& d) const;
+  /// The 3 refs r[0..n) at a vertex or edge are a planar interface and two coplanar outer
+  /// patches (the outer faces of two solids, split where they meet): true, with the ridge (r1 <
+  /// r2) of the interface and the lesser patch, along which the line runs. False otherwise.
+  bool interface_line(const std::int32_t* r, int n, std::int32_t& r1, std::int32_t& r2) const;
 
   Adapt3dOptions options_;
   TetMesh mesh_;  // built first: the background then takes over the input's arrays

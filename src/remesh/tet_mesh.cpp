@@ -231,20 +231,25 @@ void collect_shell(const TetMesh& m, Id a, Id b, std::vector<Id>& out, Id hint) 
 
 bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewTet> tets,
                     std::span<const Substitution> subst, std::vector<Id>* created) {
-  thread_local std::vector<CavityFace> cf;
+  thread_local std::vector<CavityFace> cf, inner;
   thread_local std::vector<NewFace> nf;
   thread_local std::vector<int> order;
   thread_local std::vector<Id> verts;
   const std::uint32_t s = next_stamp(m);
   for (const Id t : cavity) m.mark[t] = s;
   cf.clear();
+  inner.clear();  // listed faces between two cavity tets (an interface), once each
   for (const Id t : cavity)
     for (int i = 0; i < 4; ++i) {
       const Id r = m.tadj[4 * t + i];
-      if (r != kNoId && m.mark[r / 4] == s) continue;
       const std::uint8_t code = m.fbdy[4 * t + i];
-      cf.push_back({face_key(&m.tv[4 * t], i), r,
-                    code == TetMesh::kRefOverflow ? m.face_ref(4 * t + i) : 0, code});
+      const CavityFace face{face_key(&m.tv[4 * t], i), r,
+                            code == TetMesh::kRefOverflow ? m.face_ref(4 * t + i) : 0, code};
+      if (r != kNoId && m.mark[r / 4] == s) {
+        if (code && 4 * t + i < r) inner.push_back(face);
+        continue;
+      }
+      cf.push_back(face);
     }
   nf.clear();
   for (std::size_t k = 0; k < tets.size(); ++k)
@@ -268,6 +273,38 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
     if (!f.key.same(g.key)) continue;
     if (f.partner >= 0 || f.key.parity == g.key.parity) return false;  // three, or overlapping
     f.partner = order[k + 1], g.partner = order[k];
+  }
+  // An internal new face lying in a listed face inside the cavity (the same face, or its image
+  // by a substitution: the halves of a split interface face, an interface face dragged by a
+  // collapse) is listed with it (f.cavity: -2 - its index in `inner`). Every listed inner face
+  // must have an image or vanish (hold both vertices of a substitution): an operator that would
+  // remove an interface is refused.
+  if (!inner.empty()) {
+    for (NewFace& f : nf) {
+      if (f.partner < 0 || f.cavity != -1) continue;
+      const Id* tv = tets[f.slot / 4].v;
+      const int i = f.slot % 4;
+      for (std::size_t c = 0; c < inner.size() && f.cavity == -1; ++c)
+        if (inner[c].key.same(f.key)) f.cavity = -2 - static_cast<int>(c), ++inner[c].direct;
+      for (const Substitution& sub : subst) {
+        if (f.cavity != -1) break;
+        Id w[3] = {tv[kTetFace[i][0]], tv[kTetFace[i][1]], tv[kTetFace[i][2]]};
+        bool hit = false;
+        for (Id& x : w)
+          if (x == sub.x) x = sub.y, hit = true;
+        if (!hit) continue;
+        const FaceKey key = make_key(w[0], w[1], w[2]);
+        for (std::size_t c = 0; c < inner.size() && f.cavity == -1; ++c)
+          if (inner[c].key.same(key)) f.cavity = -2 - static_cast<int>(c), ++inner[c].direct;
+      }
+      if (f.cavity != -1) nf[f.partner].cavity = f.cavity;  // (counted once per pair)
+    }
+    for (const CavityFace& c : inner) {
+      if (c.direct > 0) continue;
+      bool vanishes = false;
+      for (const Substitution& sub : subst) vanishes |= holds(c.key, sub.x) && holds(c.key, sub.y);
+      if (!vanishes) return false;
+    }
   }
   // The others are faces of the cavity's boundary.
   for (NewFace& f : nf) {
@@ -332,7 +369,12 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
     const Id slot = 4 * ids[f.slot / 4] + f.slot % 4;
     if (f.partner >= 0) {
       m.tadj[slot] = 4 * ids[nf[f.partner].slot / 4] + nf[f.partner].slot % 4;
-      m.set_face(slot, 0);
+      if (f.cavity <= -2) {
+        const CavityFace& c = inner[static_cast<std::size_t>(-2 - f.cavity)];
+        m.set_face(slot, c.bdy, c.ref);
+      } else {
+        m.set_face(slot, 0);
+      }
       continue;
     }
     const CavityFace& c = cf[f.cavity];

@@ -130,7 +130,8 @@ expect_no_file mesh3d-hole-no-output "$TMP/y.mesh"
 # Two unit cubes sharing the face x = 1, listed once (as gmsh writes two volumes): the edges of
 # that face are on three triangles; it was refused as "non-manifold edges". Two regions, each of
 # volume 1, the shared face an interface with tets on both sides; the coplanar faces of the two
-# cubes (same ref) are not merged across it.
+# cubes are not merged across it. Refs as gmsh gives them: one per face (first cube 1-6, the
+# second 11-16), the shared face 20.
 /usr/bin/python3 - "$TMP/cube.mesh" "$TMP/two_cubes.mesh" <<'PY'
 import sys
 toks = open(sys.argv[1]).read().split()
@@ -146,7 +147,16 @@ with open(sys.argv[2], "w") as f:
     f.write("MeshVersionFormatted 2\nDimension 3\nVertices\n%d\n" % len(all_pts))
     f.write("".join("%.17g %.17g %.17g 0\n" % p for p in all_pts))
     f.write("Triangles\n%d\n" % (len(tris) + len(second)))
-    f.write("".join("%d %d %d 1\n" % t for t in tris + second) + "End\n")
+    def ref(t, first):
+        p = [all_pts[v - 1] for v in t]
+        for axis in range(3):
+            shift = 1 if axis == 0 and not first else 0
+            for side, value in ((0, shift), (1, 1 + shift)):
+                if all(q[axis] == value for q in p):
+                    if axis == 0 and value == 1: return 20
+                    return 2 * axis + side + (1 if first else 11)
+    f.write("".join("%d %d %d %d\n" % (t + (ref(t, True),)) for t in tris))
+    f.write("".join("%d %d %d %d\n" % (t + (ref(t, False),)) for t in second) + "End\n")
 PY
 out=$("$R" mesh "$TMP/two_cubes.mesh" -o "$TMP/two_cubes_vol.mesh" --nofill 2>&1); code=$?
 vols=$(ref_volumes "$TMP/two_cubes_vol.mesh")
@@ -160,6 +170,21 @@ fi
   [ "$(ref_volumes "$TMP/two_cubes_fill.mesh")" = "1:1.000000 2:1.000000" ] &&
   "$R" check "$TMP/two_cubes_fill.mesh" >/dev/null && ok mesh3d-two-cubes-fill ||
   ko "mesh3d-two-cubes-fill: $(ref_volumes "$TMP/two_cubes_fill.mesh")"
+# ... and adapted finer: the planar interface between them is remeshed with the rest (it was kept
+# as given, with a note), the regions' volumes kept.
+"$R" adapt "$TMP/two_cubes_fill.mesh" --hsiz 0.1 -o "$TMP/two_cubes_fine.mesh" -q 2>"$TMP/err"
+inner=$(/usr/bin/python3 - "$TMP/two_cubes_fine.mesh" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+n = int(toks[toks.index('Vertices') + 1]); i = toks.index('Vertices') + 2
+x = [float(toks[i + 4 * k]) for k in range(n)]
+m = int(toks[toks.index('Triangles') + 1]); j = toks.index('Triangles') + 2
+print(sum(all(x[int(toks[j + 4 * k + q]) - 1] == 1.0 for q in range(3)) for k in range(m)))
+PY
+)
+[ "$(ref_volumes "$TMP/two_cubes_fine.mesh")" = "1:1.000000 2:1.000000" ] && [ "$inner" -gt 150 ] &&
+  [ ! -s "$TMP/err" ] && "$R" check "$TMP/two_cubes_fine.mesh" >/dev/null && ok "mesh3d-two-cubes-adapt ($inner triangles at x = 1)" ||
+  ko "mesh3d-two-cubes-adapt: $inner $(ref_volumes "$TMP/two_cubes_fine.mesh") $(cat "$TMP/err")"
 out=$("$R" mesh "$TMP/cube.mesh" -o "$TMP/cube_fill.mesh" --hsiz 0.25 2>"$TMP/fill_err"); code=$?
 if [ $code -eq 0 ] && [[ "$out" =~ ^[^:]*:\ ([0-9]+)\ vertices,\ ([0-9]+)\ tetrahedra\ \(q_min\ [0-9.]+\),\ ([0-9]+)\ boundary\ triangles\;\ ([0-9]+)\ Steiner ]] &&
    [ "${BASH_REMATCH[1]}" -gt $((26 + BASH_REMATCH[4])) ] && [ "${BASH_REMATCH[3]}" -ge 48 ] &&

@@ -417,10 +417,11 @@ TEST(Adapt3d, SubdomainInterfacesAreKept) {
   }
 }
 
-// Sizes finer than the kept interface near it: splits there strung vertices along the
-// interface's flat facets (two gmsh cubes: 42% of the tets below quality 0.1, q min 7e-6, edges
-// of 1.7e-6); they now get the kept surface's quality floor. The coarse interface is noted.
-TEST(Adapt3d, FineSizesAtAKeptInterface) {
+// Sizes finer than the interface near it. Kept as given, splits strung vertices along its flat
+// facets (two gmsh cubes: 42% of the tets below quality 0.1, q min 7e-6, edges of 1.7e-6) and
+// then got the kept surface's quality floor, with a note. A planar interface is now remeshed like
+// a planar patch: its edges follow the sizes, its faces stay listed between the two regions.
+TEST(Adapt3d, FineSizesAtAPlanarInterface) {
   const Mesh in = two_subdomains(4, true);
   std::vector<SymMat3> metrics;
   for (std::size_t v = 0; v < in.num_vertices(); ++v)
@@ -438,12 +439,93 @@ TEST(Adapt3d, FineSizesAtAKeptInterface) {
     }
     q_min = std::min(q_min, quality<3>(SymMat3::identity(), p));
   }
-  std::printf("kept interface, sizes 0.06 at it: %zu tets, q min %.3g\n", r.mesh.num_tets(), q_min);
-  EXPECT_GT(q_min, 0.03);
-  bool noted = false;
+  // The interface (ref 10): still the plane x = 0.5 and of area 1, its edges near 0.06.
+  std::size_t faces = 0;
+  double longest = 0.0;
+  for (std::size_t t = 0; t < r.mesh.num_triangles(); ++t) {
+    if (r.mesh.tri_ref[t] != 10) continue;
+    ++faces;
+    for (int k = 0; k < 3; ++k) {
+      const Id a = r.mesh.triangles[3 * t + k], b = r.mesh.triangles[3 * t + (k + 1) % 3];
+      EXPECT_NEAR(r.mesh.coords[3 * a], 0.5, 1e-12);
+      double l2 = 0.0;
+      for (int i = 0; i < 3; ++i)
+        l2 += std::pow(r.mesh.coords[3 * a + i] - r.mesh.coords[3 * b + i], 2);
+      longest = std::max(longest, std::sqrt(l2));
+    }
+  }
+  std::printf(
+      "planar interface, sizes 0.06 at it: %zu tets, q min %.3g, %zu interface faces "
+      "(input %d), longest edge %.3g\n",
+      r.mesh.num_tets(), q_min, faces, 2 * 4 * 4, longest);
+  EXPECT_NEAR(area_by_ref(r.mesh).at(10), 1.0, 1e-12);
+  const std::map<int, double> v = volume_by_ref(r.mesh);
+  EXPECT_NEAR(v.at(1), 0.5, 1e-12);
+  EXPECT_NEAR(v.at(2), 0.5, 1e-12);
+  EXPECT_GT(faces, 10u * 32u);  // (1 / 0.06)^2 * 2 / sqrt(3) ~ 320 for unit triangles
+  EXPECT_LT(longest, 0.06 * 1.8);
+  EXPECT_GT(q_min, 0.3);
   for (const std::string& n : r.report.notes)
-    noted |= n.find("interfaces between subdomains") != std::string::npos;
-  EXPECT_TRUE(noted);
+    EXPECT_EQ(n.find("interfaces between subdomains"), std::string::npos) << n;
+}
+
+// Two solids as gmsh writes them: each with its own outer faces (refs 3..6 split at x = 0.5 into
+// r and r + 20) and the interface between them. The line where the interface meets the outer
+// faces lies on three refs; its vertices were fixed (and the interface kept as given). It is a
+// ridge of the interface and the outer plane: refined, the refs' areas kept, also in an
+// anisotropic field across the interface.
+TEST(Adapt3d, InterfaceMeetingSplitOuterFacesIsRemeshed) {
+  Mesh in = two_subdomains(4, true);
+  for (std::size_t f = 0; f < in.num_triangles(); ++f) {
+    if (in.tri_ref[f] < 3 || in.tri_ref[f] > 6) continue;
+    double x = 0.0;
+    for (int k = 0; k < 3; ++k)
+      x += in.coords[3 * static_cast<std::size_t>(in.triangles[3 * f + k])] / 3;
+    if (x > 0.5) in.tri_ref[f] += 20;
+  }
+  for (const bool aniso : {false, true}) {
+    std::vector<SymMat3> metrics;
+    for (std::size_t v = 0; v < in.num_vertices(); ++v) {
+      const double hx = aniso ? 0.01 + 0.2 * std::abs(in.coords[3 * v] - 0.5) : 0.1;
+      metrics.push_back(SymMat3::diagonal(Vec3{{1 / (hx * hx), 100.0, 100.0}}));
+    }
+    Adapt3dOptions o;
+    o.hgrad = 0.0;
+    const Adapt3dResult r = adapt3d(in, metrics, o);
+    const std::string name = aniso ? "anisotropic" : "isotropic";
+    EXPECT_TRUE(check_mesh(r.mesh).valid()) << name;
+    const std::map<int, double> a = area_by_ref(r.mesh);
+    EXPECT_NEAR(a.at(10), 1.0, 1e-12) << name;
+    for (const int ref : {3, 4, 5, 6}) {
+      EXPECT_NEAR(a.at(ref), 0.5, 1e-12) << name << " ref " << ref;
+      EXPECT_NEAR(a.at(ref + 20), 0.5, 1e-12) << name << " ref " << ref + 20;
+    }
+    const std::map<int, double> v = volume_by_ref(r.mesh);
+    EXPECT_NEAR(v.at(1), 0.5, 1e-12) << name;
+    EXPECT_NEAR(v.at(2), 0.5, 1e-12) << name;
+    // The interface's outline (its edges on one interface triangle): input 4 per side of 0.25.
+    std::map<std::pair<Id, Id>, int> on;
+    for (std::size_t f = 0; f < r.mesh.num_triangles(); ++f)
+      for (int k = 0; r.mesh.tri_ref[f] == 10 && k < 3; ++k) {
+        const Id p = r.mesh.triangles[3 * f + k], q = r.mesh.triangles[3 * f + (k + 1) % 3];
+        ++on[{std::min(p, q), std::max(p, q)}];
+      }
+    double longest = 0.0;
+    std::size_t outline = 0;
+    for (const auto& [e, count] : on) {
+      if (count != 1) continue;
+      ++outline;
+      double l2 = 0.0;
+      for (int i = 0; i < 3; ++i)
+        l2 += std::pow(r.mesh.coords[3 * e.first + i] - r.mesh.coords[3 * e.second + i], 2);
+      longest = std::max(longest, std::sqrt(l2));
+    }
+    std::printf("%s: %zu tets, interface outline %zu edges, longest %.3g, notes %zu\n",
+                name.c_str(), r.mesh.num_tets(), outline, longest, r.report.notes.size());
+    EXPECT_GE(outline, 32u) << name;  // 4 sides of 1 at 0.1
+    EXPECT_LT(longest, 0.1 * 1.6) << name;
+    EXPECT_TRUE(r.report.notes.empty()) << name;
+  }
 }
 
 // Coplanar planar patches of different refs (the outer faces of a gmsh multi-volume box): the
