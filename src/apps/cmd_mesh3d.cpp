@@ -76,6 +76,12 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
                    "the size first (riemesh adapt %s --hsiz %g -o SURFACE.mesh)\n",
                    input.c_str(), mean, mean / args.hsiz, input.c_str(), args.hsiz);
   }
+  if (s.interfaces_listed_twice > 0 && !args.quiet)
+    std::fprintf(stderr,
+                 "riemesh: note: %s: %zu triangles are listed twice, in opposite orientations (an "
+                 "interface given by both its volumes): each taken once, with the ref of its "
+                 "first listing\n",
+                 input.c_str(), s.interfaces_listed_twice);
   write_mesh(out, output);
   // The tets of the boundary points alone may keep flat slivers between nearly cocircular
   // surface points, which the recovery could not remove (the fill's optimiser does): said, not

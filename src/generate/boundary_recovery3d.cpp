@@ -130,6 +130,8 @@ class Recovery {
   BoundaryRecoveryStats stats_;
 };
 
+const double* xyz_of(const Mesh& s, Id v) { return &s.coords[3 * static_cast<std::size_t>(v)]; }
+
 std::string vertex_pair(Id a, Id b) {
   std::string s = "vertices ";
   s += std::to_string(a + 1);
@@ -140,13 +142,22 @@ std::string vertex_pair(Id a, Id b) {
 
 Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surface_(s) {
   require_closed_surface(s);
-  const SelfIntersections crossing = find_self_intersections(s, 1);
+  const SelfIntersections crossing = find_self_intersections(s, 1, true);
   if (crossing.pairs > 0) {
+    // Two triangulations of one face (a face of two volumes given by each, cut differently)
+    // overlap in one plane: said so.
+    bool flat = true;
+    const Id* a = &s.triangles[3 * static_cast<std::size_t>(crossing.first_a)];
+    const Id* b = &s.triangles[3 * static_cast<std::size_t>(crossing.first_b)];
+    for (int k = 0; k < 3; ++k)
+      flat = flat &&
+             orient3d(xyz_of(s, a[0]), xyz_of(s, a[1]), xyz_of(s, a[2]), xyz_of(s, b[k])) == 0.0;
     std::string msg = "the surface cannot bound a volume: it intersects itself (first: triangles ";
     msg += std::to_string(crossing.first_a + 1);
     msg += " and ";
     msg += std::to_string(crossing.first_b + 1);
-    msg += ")";
+    msg +=
+        flat ? ", which overlap in one plane: a face given twice, triangulated differently?)" : ")";
     throw InputError(msg);
   }
   std::vector<Id> old2new(s.num_vertices(), kNoId);
@@ -729,8 +740,12 @@ RecoveredVolume Recovery::run() {
 }  // namespace
 
 RecoveredVolume recover_volume(const Mesh& surface, const BoundaryRecoveryOptions& options) {
-  Recovery r(surface, options);
-  return r.run();
+  std::size_t merged = 0;
+  const std::optional<Mesh> single = merge_interfaces_listed_twice(surface, &merged);
+  Recovery r(single ? *single : surface, options);
+  RecoveredVolume out = r.run();
+  out.stats.interfaces_listed_twice = merged;
+  return out;
 }
 
 }  // namespace riemesh

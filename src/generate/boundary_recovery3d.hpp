@@ -69,6 +69,9 @@ struct BoundaryRecoveryStats {
   std::size_t flips = 0;  // missing edges recovered by a flip (cocircular quads: no Steiner point)
   std::size_t planar_patches = 0;   // planar patches re-triangulated (planar_patches3d.hpp)
   std::size_t patch_triangles = 0;  // input triangles they held
+  /// Pairs of triangles on the same vertices in opposite orientations (an interface given by
+  /// both its volumes) taken once (merge_interfaces_listed_twice).
+  std::size_t interfaces_listed_twice = 0;
   std::size_t steiner() const { return steiner_on_edges + steiner_in_faces + steiner_inside; }
 };
 
@@ -81,8 +84,9 @@ struct RecoveredVolume {
   BoundaryRecoveryStats stats;
 };
 
-/// The tetrahedralised volume bounded by `surface` (closed, manifold, consistently oriented, not
-/// self-intersecting: checked by require_closed_surface, then find_self_intersections), its
+/// The tetrahedralised volume bounded by `surface` (closed, consistently oriented, not
+/// self-intersecting: checked by require_closed_surface, then find_self_intersections, after
+/// merge_interfaces_listed_twice: an interface given by both its volumes is taken once), its
 /// boundary recovered by Steiner points on the surface. Deterministic. InputError for a defective
 /// surface (naming the defect) or when the Steiner cap is reached.
 RecoveredVolume recover_volume(const Mesh& surface, const BoundaryRecoveryOptions& options = {});

@@ -186,6 +186,45 @@ void require_closed_surface(const Mesh& s) {
                  "vertex " + std::to_string(first_pinched + 1));
 }
 
+std::optional<Mesh> merge_interfaces_listed_twice(const Mesh& s, std::size_t* merged) {
+  *merged = 0;
+  std::vector<std::pair<Face, Id>> faces(s.num_triangles());
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    const Id* v = &s.triangles[3 * t];
+    faces[t] = {sorted(v[0], v[1], v[2]), static_cast<Id>(t)};
+  }
+  std::sort(faces.begin(), faces.end());
+  // Same vertex set: opposite orientations when the second's vertex after the first's v[0] is
+  // the first's v[2].
+  const auto opposite = [&](Id a, Id b) {
+    const Id* p = &s.triangles[3 * static_cast<std::size_t>(a)];
+    const Id* q = &s.triangles[3 * static_cast<std::size_t>(b)];
+    const int k = q[0] == p[0] ? 0 : q[1] == p[0] ? 1 : 2;
+    return q[(k + 1) % 3] == p[2];
+  };
+  std::vector<char> drop(s.num_triangles(), 0);
+  for (std::size_t k = 0; k + 1 < faces.size(); ++k)
+    if (faces[k].first == faces[k + 1].first &&
+        (k + 2 == faces.size() || faces[k + 2].first != faces[k].first) &&
+        (k == 0 || faces[k - 1].first != faces[k].first) &&
+        opposite(faces[k].second, faces[k + 1].second)) {
+      drop[static_cast<std::size_t>(faces[k + 1].second)] = 1;
+      ++*merged;
+    }
+  if (*merged == 0) return std::nullopt;
+  Mesh out = s;
+  out.triangles.clear(), out.tri_ref.clear(), out.tri_tag.clear();
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    if (drop[t]) continue;
+    out.triangles.insert(out.triangles.end(),
+                         s.triangles.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                         s.triangles.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+    if (t < s.tri_ref.size()) out.tri_ref.push_back(s.tri_ref[t]);
+    if (t < s.tri_tag.size()) out.tri_tag.push_back(s.tri_tag[t]);
+  }
+  return out;
+}
+
 SurfaceDelaunay delaunay_of_surface(const Mesh& s) {
   require_closed_surface(s);
   SurfaceDelaunay d;

@@ -6,6 +6,7 @@
 // Boundary recovery (restoring missing edges and faces with Steiner points) is in
 // generate/boundary_recovery3d.hpp, which reuses require_closed_surface and volume_inside.
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -23,6 +24,12 @@ namespace riemesh {
 /// triangles are where regions meet (an interface listed once) and are accepted. Vertex numbers
 /// in messages are 1-based, as in the files. Self-intersections are not detected.
 void require_closed_surface(const Mesh& surface);
+
+/// The surface with each pair of triangles on the same three vertices in opposite orientations
+/// (an interface given by both its volumes, each shell closed on its own, as CAD tools export
+/// assemblies) taken once: the first of the pair kept, with its ref and tag, the second dropped
+/// (later triangles move up one place). *merged: the pairs found. std::nullopt when there is none.
+std::optional<Mesh> merge_interfaces_listed_twice(const Mesh& surface, std::size_t* merged);
 
 /// The Delaunay tetrahedralisation of a surface's vertices and how much of the surface it holds.
 struct SurfaceDelaunay {

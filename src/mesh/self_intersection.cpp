@@ -1,6 +1,7 @@
 #include "mesh/self_intersection.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -44,9 +45,45 @@ bool edges_hit(const Vec3 (&x)[3], const Vec3 (&y)[3], int shared) {
   return false;
 }
 
+/// Whether x and y, in one plane (exactly), overlap in their interiors: no edge line of either
+/// has the other triangle on its closed outer side (separating axes of two convex polygons),
+/// decided by exact orientations in the coordinate plane across x's largest normal component
+/// (a projection that keeps or turns all orientations alike).
+bool coplanar_overlap(const Vec3 (&x)[3], const Vec3 (&y)[3]) {
+  const Vec3 n = cross(x[1] - x[0], x[2] - x[0]);
+  const int k = std::abs(n[0]) >= std::abs(n[1]) && std::abs(n[0]) >= std::abs(n[2]) ? 0
+                : std::abs(n[1]) >= std::abs(n[2])                                   ? 1
+                                                                                     : 2;
+  const auto flat = [k](const Vec3& p) {
+    return std::array<double, 2>{p[(k + 1) % 3], p[(k + 2) % 3]};
+  };
+  std::array<double, 2> a[3], b[3];
+  for (int i = 0; i < 3; ++i) a[i] = flat(x[i]), b[i] = flat(y[i]);
+  const auto separates = [](const std::array<double, 2>(&s)[3],
+                            const std::array<double, 2>(&o)[3]) {
+    const double turn = orient2d(s[0].data(), s[1].data(), s[2].data());
+    for (int i = 0; i < 3; ++i) {
+      bool outside = true;
+      for (int j = 0; j < 3 && outside; ++j) {
+        const double side = orient2d(s[i].data(), s[(i + 1) % 3].data(), o[j].data());
+        outside = turn > 0.0 ? side <= 0.0 : side >= 0.0;
+      }
+      if (outside) return true;
+    }
+    return false;
+  };
+  return !separates(a, b) && !separates(b, a);
+}
+
+bool in_one_plane(const Vec3 (&x)[3], const Vec3 (&y)[3]) {
+  for (int i = 0; i < 3; ++i)
+    if (orient3d(x[0].x, x[1].x, x[2].x, y[i].x) != 0.0) return false;
+  return true;
+}
+
 }  // namespace
 
-SelfIntersections find_self_intersections(const Mesh& mesh, std::size_t max_pairs) {
+SelfIntersections find_self_intersections(const Mesh& mesh, std::size_t max_pairs, bool coplanar) {
   if (mesh.dim != 3) throw InputError("self-intersections: need a 3D mesh");
   SelfIntersections out;
   if (mesh.triangles.empty()) return out;
@@ -75,10 +112,14 @@ SelfIntersections find_self_intersections(const Mesh& mesh, std::size_t max_pair
             sa = i;
             sb = j;
           }
-      if (common >= 2) continue;
+      if (common >= 2 && !coplanar) continue;
       Vec3 y[3];
       for (int i = 0; i < 3; ++i) y[i] = vertex_at(mesh, tb[i]);
-      if (edges_hit(x, y, common ? sa : -1) || edges_hit(y, x, common ? sb : -1)) {
+      const bool hit = common >= 2 ? in_one_plane(x, y) && coplanar_overlap(x, y)
+                                   : edges_hit(x, y, common ? sa : -1) ||
+                                         edges_hit(y, x, common ? sb : -1) ||
+                                         (coplanar && in_one_plane(x, y) && coplanar_overlap(x, y));
+      if (hit) {
         if (out.pairs == 0) {
           out.first_a = static_cast<Id>(t);
           out.first_b = u;

@@ -18,8 +18,12 @@ struct SelfIntersections {
 /// neighbours, as remeshed surfaces have many, are neither missed nor reported by rounding).
 /// Triangles sharing an edge are not tested, nor are coplanar overlaps (an edge lying in the
 /// other triangle's plane never counts): the test finds crossings and folds through the
-/// surface, which is what remeshing can introduce. Candidate pairs come from an AABB tree;
-/// stops after `max_pairs`. Throws InputError for a mesh that is not 3D.
-SelfIntersections find_self_intersections(const Mesh& mesh, std::size_t max_pairs = 1000);
+/// surface, which is what remeshing can introduce. With `coplanar`, triangles in one plane whose
+/// interiors overlap count too (whatever they share: two triangulations of one face, a
+/// triangle folded onto its neighbour), as meshing a volume from the surface needs. Candidate
+/// pairs come from an AABB tree; stops after `max_pairs`. Throws InputError for a mesh that is
+/// not 3D.
+SelfIntersections find_self_intersections(const Mesh& mesh, std::size_t max_pairs = 1000,
+                                          bool coplanar = false);
 
 }  // namespace riemesh

@@ -337,5 +337,40 @@ TEST(BoundaryRecovery3d, Deterministic) {
   EXPECT_EQ(a.stats.steiner(), b.stats.steiner());
 }
 
+// Two tets (0, a, b, c) and (d, a, b, c), each given as its own closed outward shell, as CAD
+// tools export assemblies: their common face abc is listed twice in opposite orientations. It
+// is taken once (the first listing, its ref): two regions. Listed twice the same way: refused.
+TEST(BoundaryRecovery3d, InterfaceListedTwiceIsTakenOnce) {
+  Mesh s;
+  s.dim = 3;
+  s.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1.5, 1.5, 1.5};
+  s.triangles = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3,   // the first tet, outward
+                 4, 1, 2, 4, 3, 1, 4, 2, 3, 1, 3, 2};  // the second, outward
+  s.vert_ref.assign(5, 0);
+  s.vert_tag.assign(5, 0);
+  s.tri_ref = {1, 1, 1, 5, 2, 2, 2, 6};
+  s.tri_tag.assign(8, 0);
+  const RecoveredVolume r = recover_volume(s);
+  EXPECT_EQ(r.stats.interfaces_listed_twice, 1u);
+  EXPECT_EQ(r.volume.num_triangles(), 7u);
+  EXPECT_TRUE(check_mesh(r.volume).valid());
+  std::map<int, int> tets_by_ref;
+  for (const int ref : r.volume.tet_ref) ++tets_by_ref[ref];
+  EXPECT_EQ(tets_by_ref.size(), 2u);
+  EXPECT_EQ(std::count(r.volume.tri_ref.begin(), r.volume.tri_ref.end(), 5), 1);  // the first
+  EXPECT_EQ(std::count(r.volume.tri_ref.begin(), r.volume.tri_ref.end(), 6), 0);
+  Mesh same = s;  // the second listing turned: the same orientation twice
+  std::swap(same.triangles[22], same.triangles[23]);
+  try {
+    recover_volume(same);
+    ADD_FAILURE() << "a triangle listed twice the same way was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1 triangles listed twice (same three vertices) (first: "
+                                         "triangles 4 and 8)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace riemesh

@@ -43,6 +43,30 @@ TEST(SelfIntersection, Pairs) {
   EXPECT_EQ(find_self_intersections(two_triangles(c, {0, 1, 2, 1, 0, 3})).pairs, 0u);
 }
 
+// With `coplanar` (for meshing a volume from its surface), triangles in one plane whose
+// interiors overlap count, whatever they share; touching ones do not.
+TEST(SelfIntersection, CoplanarOverlaps) {
+  const auto pairs = [](const std::vector<double>& c, const std::vector<Id>& t, bool coplanar) {
+    return find_self_intersections(two_triangles(c, t), 1000, coplanar).pairs;
+  };
+  // The unit square cut along each diagonal: its two triangulations, listed together.
+  const std::vector<double> sq = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  const std::vector<Id> both = {0, 1, 2, 0, 2, 3, 0, 1, 3, 1, 2, 3};
+  EXPECT_EQ(pairs(sq, both, false), 0u);
+  EXPECT_EQ(pairs(sq, both, true), 4u);                // each of one cut overlaps both of the other
+  EXPECT_EQ(pairs(sq, {0, 1, 2, 0, 2, 3}, true), 0u);  // one cut: neighbours across the diagonal
+  // Sharing an edge, folded onto each other in the plane; sharing a vertex, one inside the
+  // other's angle; no common vertex, one inside the other; side by side, touching at a point.
+  std::vector<double> c = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.5, 0.4, 0};
+  EXPECT_EQ(pairs(c, {0, 1, 2, 1, 0, 3}, true), 1u);
+  c = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.3, 0.1, 0, 0.1, 0.3, 0};
+  EXPECT_EQ(pairs(c, {0, 1, 2, 0, 3, 4}, true), 1u);
+  c = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.1, 0.1, 0, 0.3, 0.1, 0, 0.1, 0.3, 0};
+  EXPECT_EQ(pairs(c, {0, 1, 2, 3, 4, 5}, true), 1u);
+  c = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 2, 0, 0, 1, 1, 0};
+  EXPECT_EQ(pairs(c, {0, 1, 2, 3, 4, 5}, true), 0u);
+}
+
 TEST(SelfIntersection, NearlyCoplanarNeighboursSharingAVertex) {
   // Two triangles of a remeshed rotor sharing vertex 0, nearly coplanar (the far corner of the
   // first lies 4e-12 from the second's plane), whose sectors at the shared vertex are 2.3
