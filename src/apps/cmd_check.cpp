@@ -70,16 +70,16 @@ std::string issue_line(const CheckIssue& i, int dim) {
   return s;
 }
 
-/// Crossing triangles of a surface (mesh/self_intersection.hpp), when its ids and coordinates
-/// can be read: "  self-intersection: 12 pairs (first: triangles 5 and 40 at (x, y, z))", or ""
-/// when there is none.
+/// Crossing triangles of a surface, or overlapping in one plane (mesh/self_intersection.hpp), when
+/// its ids and coordinates can be read: "  self-intersection: 12 pairs (first: triangles 5 and 40
+/// at (x, y, z))", or "" when there is none.
 std::string crossing_line(const Mesh& mesh, const CheckReport& report) {
   if (mesh.kind() != MeshKind::kSurface) return {};
   for (CheckCategory c : {CheckCategory::kArraySize, CheckCategory::kIdOutOfRange,
                           CheckCategory::kNonFiniteCoordinate})
     if (report.count(c) > 0) return {};
   constexpr std::size_t kMaxPairs = 1000;
-  const SelfIntersections x = find_self_intersections(mesh, kMaxPairs);
+  const SelfIntersections x = find_self_intersections(mesh, kMaxPairs, /*coplanar=*/true);
   if (x.pairs == 0) return {};
   double c[3] = {0.0, 0.0, 0.0};
   for (int k = 0; k < 3; ++k)

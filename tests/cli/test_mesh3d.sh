@@ -208,6 +208,8 @@ two_shells "$TMP/two_cuts.mesh" other
 # recovery ran forever with --keep-triangles (the crossing diagonals); refused by name.
 expect_error_matching mesh3d-face-cut-twice "which overlap in one plane: a face given twice, triangulated differently?" \
   mesh "$TMP/two_cuts.mesh" -o "$TMP/y.mesh" --nofill --keep-triangles
+"$R" check "$TMP/two_cuts.mesh" | grep -q "self-intersection: 16 pairs of triangles (first: triangles 9 and 49" &&
+  ok check-coplanar-overlaps || ko "check-coplanar-overlaps: $("$R" check "$TMP/two_cuts.mesh")"
 # ... and adapted finer: the planar interface between them is remeshed with the rest (it was kept
 # as given, with a note), the regions' volumes kept.
 "$R" adapt "$TMP/two_cubes_fill.mesh" --hsiz 0.1 -o "$TMP/two_cubes_fine.mesh" -q 2>"$TMP/err"
