@@ -31,6 +31,22 @@ constexpr double kLongEdge = 1.4142135623730951;   // √2
 // longer than 1.45. Collapsing up to 0.9 lifts the mean length from about 0.90 to 0.97, so the
 // element count comes within a few per cent of (4/√3) C(M) (measured on the PEERS.md cases).
 constexpr double kCollapseBelow = 0.9;
+// A swap must raise the smaller quality of its two triangles by more than this.
+constexpr double kSwapGain = 1e-3;
+// Lawson's flips around each new vertex of a split (swap_around), in the triangles of its ball
+// below kNeedle in quality, at most kSwapsAfterSplit link edges tried. Without them, an edge
+// split in a triangle that is a needle in the metric (a coarse isotropic mesh in a 1:1000 field)
+// joins the new vertex to the far apexes by edges about as long as the halves, the next sweep
+// splits those, and the three sweeps of a pass refine every direction: from sq.mesh (944
+// triangles) in the 30-degree 1:1000 field of an_var.py (target (4/√3) C = 160 k), pass 2 split
+// up to 1.43 M triangles (1.06 M after its collapses), 7 passes to 167 k triangles, 15 s; with
+// the flips 11.2 k, 156 k, 167 k, 161 k triangles in 4 passes, 98.8% in band. kNeedle: the
+// triangles of a uniform refinement never fall below it (Adapt2d.UniformRefinement* keep their
+// meshes); 0.05 gave 179 k at pass 2 and 6 passes, 0.2 137 k but q min 0.668 instead of 0.692
+// over linear2d's variants (s = 0.095..0.105; 0.683 with 0.1).
+// kSwapsAfterSplit: 8 and unbounded gave the same counts within 0.5%.
+constexpr double kNeedle = 0.1;
+constexpr int kSwapsAfterSplit = 16;
 // Balls whose worst quality stays below this after the passes get a quality-driven relocation.
 // polar2d, mean q min of passes 5-8 over 16 variants (s = 0.8..1.15, h0 = 0.0009, 0.0011), with
 // the band measured by edge_length_gauss3 and two rounds: 0.5 0.448, 0.55 0.462, 0.6 0.458
@@ -192,6 +208,7 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::si
   // others were there with the same length, and their split refused (the decision depends on
   // nothing else: the four vertices, their metrics and the hints of the ends).
   std::uint32_t previous = 0;
+  thread_local std::vector<Id> touched;
   for (int sweep = 0; sweep < 3; ++sweep) {
     const std::uint32_t stamp = changes.begin();
     const std::vector<Candidate> list = candidates(m, kLongEdge, true, changes, previous);
@@ -207,6 +224,11 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::si
         for (const Id v : {c.a, c.b, apex, created}) changes.mark(v);
         if (other_apex != kNoId) changes.mark(other_apex);
         ++done;
+        if (ctx.options().swap) {
+          touched.clear();
+          st.swaps += swap_around(m, created, kSwapGain, kNeedle, kSwapsAfterSplit, touched);
+          for (const Id v : touched) changes.mark(v);
+        }
       } else {
         ++st.rejected;
       }
@@ -283,7 +305,7 @@ long swap_sweep(TriMesh& m, PassStats& st, Changes& changes, std::uint32_t since
     if (since > 0 && !changes.since(quad[0], since) && !changes.since(quad[1], since) &&
         !changes.since(quad[2], since) && !changes.since(quad[3], since))
       return;
-    const Outcome o = swap_edge(m, s, 1e-3);
+    const Outcome o = swap_edge(m, s, kSwapGain);
     if (o == Outcome::kApplied) {
       ++done;
       for (const Id v : quad) changes.mark(v);

@@ -4,6 +4,7 @@
 // is a normal answer, counted by the driver, not an error. They never create an inverted or
 // degenerate triangle and never change the domain's boundary curves or refs.
 #include <cmath>
+#include <vector>
 
 #include "metric/edge_length.hpp"
 #include "remesh/tri_mesh.hpp"
@@ -107,6 +108,14 @@ bool collapse_too_long(const TriMesh& m, Id from, Id to, const CollapseLimits& l
 /// Flips the interior edge at `slot` when the smaller quality of the two triangles grows by more
 /// than `min_gain`. Feature edges are never flipped.
 Outcome swap_edge(TriMesh& m, Id slot, double min_gain);
+
+/// Lawson's flips around a vertex v just inserted: each edge opposite v in its ball (its link)
+/// whose triangle with v has a quality below `below` is flipped by swap_edge(min_gain), and the
+/// two link edges a flip gives v's ball are tried in turn, at most `max_tries` edges in all.
+/// Appends the vertices of each flipped quadrilateral other than v to `touched`; returns the
+/// flips.
+int swap_around(TriMesh& m, Id v, double min_gain, double below, int max_tries,
+                std::vector<Id>& touched);
 
 /// Moves vertex v to p (with its new metric and curve parameter) when every triangle of its ball
 /// stays valid and the smallest quality of the ball does not drop below min(old, floor).

@@ -66,4 +66,30 @@ Outcome swap_edge(TriMesh& m, Id slot, double min_gain) {
   return Outcome::kApplied;
 }
 
+int swap_around(TriMesh& m, Id v, double min_gain, double below, int max_tries,
+                std::vector<Id>& touched) {
+  thread_local Ball ball;             // scratch reused across calls; never shared between threads
+  thread_local std::vector<Id> todo;  // triangles of v's ball whose link edge is to be tried
+  collect_ball(m, v, ball);
+  todo.assign(ball.tris.begin(), ball.tris.end());
+  int flips = 0;
+  for (int tries = 0; !todo.empty() && tries < max_tries; ++tries) {
+    const Id t = todo.back();
+    todo.pop_back();
+    const int i = vertex_index(m, t, v);
+    const Id slot = 3 * t + i;  // the edge opposite v
+    if (i < 0 || m.tadj[slot] == kNoId) continue;
+    if (!(tri_quality(m, t) < below)) continue;
+    const Id r = m.tadj[slot];
+    const Id a = m.tv[3 * t + (i + 1) % 3], b = m.tv[3 * t + (i + 2) % 3], d = m.tv[r];
+    if (swap_edge(m, slot, min_gain) != Outcome::kApplied) continue;
+    ++flips;
+    touched.insert(touched.end(), {a, b, d});
+    // Both triangles of the quadrilateral now hold v, each with a new link edge (a-d, d-b).
+    todo.push_back(t);
+    todo.push_back(r / 3);
+  }
+  return flips;
+}
+
 }  // namespace riemesh

@@ -388,6 +388,22 @@ TEST(Adapt2d, BadInput) {
   EXPECT_THROW(adapt2d(flipped, met, {}), InputError);
 }
 
+// Sizes hn·(1 + x) across a direction 30 degrees from x, 0.1 along it (an_var.py of the QA
+// reports): (4/√3) C(M) = (4/√3) ln 2 / (hn · 0.1) triangles on the unit square.
+namespace {
+std::vector<SymMat2> tilted_field(const Mesh& in, double hn0) {
+  std::vector<SymMat2> metrics;
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (std::size_t v = 0; v < in.num_vertices(); ++v) {
+    const double hn = hn0 * (1.0 + in.coords[2 * v]), ht = 0.1;
+    const double l1 = 1.0 / (ht * ht), l2 = 1.0 / (hn * hn);
+    metrics.push_back(
+        SymMat2{{l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c}});
+  }
+  return metrics;
+}
+}  // namespace
+
 // The stop rules "no new low of splits + collapses for 3 passes" and "no change in band or
 // quality" now need a pass of fewer than 5% of the vertices inserted or removed: the first
 // pass's few operations were the low, and a 1:300 field stopped after its fourth pass with
@@ -396,17 +412,9 @@ TEST(Adapt2d, BadInput) {
 TEST(Adapt2d, PassesGoOnWhileMuchChanges) {
   // gmsh's unit square at lc 0.05 (tests/data/square_gmsh.geo): unstructured.
   const Mesh in = read_medit(std::string(RIEMESH_TEST_DATA) + "/square_gmsh.mesh");
-  std::vector<SymMat2> metrics;
-  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
-  for (std::size_t v = 0; v < in.num_vertices(); ++v) {
-    const double hn = 3e-4 * (1.0 + in.coords[2 * v]), ht = 0.1;
-    const double l1 = 1.0 / (ht * ht), l2 = 1.0 / (hn * hn);
-    metrics.push_back(
-        SymMat2{{l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c}});
-  }
   Adapt2dOptions o;
   o.hgrad = 0.0;
-  const Adapt2dResult r = adapt2d(in, metrics, o);
+  const Adapt2dResult r = adapt2d(in, tilted_field(in, 3e-4), o);
   const PassStats& last = r.report.passes.back();
   std::printf("1:300 field: %zu passes, %.4f in band, last pass %ld splits %ld collapses\n",
               r.report.passes.size(), last.len_in, last.splits, last.collapses);
@@ -431,4 +439,26 @@ TEST(Adapt2d, HausdBelowRoundoffIsRefused) {
   EXPECT_THROW(adapt2d(in, metrics, o), InputError);
   o.hausd = 0.0;
   EXPECT_NO_THROW(adapt2d(in, metrics, o));
+}
+
+// From a coarse isotropic mesh in a strongly anisotropic field, the splits refine toward the
+// target count without overshooting it: each split's new vertex is reconnected by flips where
+// its triangles are needles in the metric (swap_around), instead of joining far apexes by long
+// edges that the next sweep splits again in every direction. 1:300 field, target 53.4 k
+// triangles: before, passes at 0.89, 3.15, 1.22, 1.05 ... 1.04 of it (7 passes); now 0.23, 1.07,
+// 1.02, 1.01 ... 1.01 (6 passes).
+TEST(Adapt2d, CoarseStartInAnAnisotropicFieldDoesNotOvershoot) {
+  const Mesh in = read_medit(std::string(RIEMESH_TEST_DATA) + "/square_gmsh.mesh");
+  const double target = 4.0 / std::sqrt(3.0) * std::log(2.0) / (3e-4 * 0.1);
+  Adapt2dOptions o;
+  o.hgrad = 0.0;
+  std::vector<std::size_t> counts;
+  const Adapt2dResult r = adapt2d(in, tilted_field(in, 3e-4), o,
+                                  [&](const PassStats& st) { counts.push_back(st.triangles); });
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    std::printf("pass %zu: %.3f of the target\n", k + 1, static_cast<double>(counts[k]) / target);
+  for (const std::size_t n : counts) EXPECT_LT(static_cast<double>(n), 1.5 * target);
+  EXPECT_NEAR(static_cast<double>(r.mesh.num_triangles()) / target, 1.0, 0.1);
+  EXPECT_GT(r.report.passes.back().len_in, 0.98);
+  EXPECT_TRUE(check_mesh(r.mesh).valid());
 }
