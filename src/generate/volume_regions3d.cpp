@@ -136,6 +136,8 @@ TetRegions tet_regions(const Tetrahedralization& tz, std::span<const Id> triangl
   std::vector<char> hole(rc, 0);
   TetRegions result;
   if (!hole_points.empty()) {
+    // Per region, the first hole point in it + 1 (0: none).
+    std::vector<std::size_t> point_of(rc, 0);
     for (std::size_t h = 0; h + 2 < hole_points.size(); h += 3) {
       bool on_surface = false;
       const Id t = locate(tz, coords, on_face, &hole_points[h], &on_surface);
@@ -143,7 +145,28 @@ TetRegions tet_regions(const Tetrahedralization& tz, std::span<const Id> triangl
       if (t == kNoId || outside[static_cast<std::size_t>(region[static_cast<std::size_t>(t)])])
         throw InputError("hole point " + where + " is outside the volume");
       if (on_surface) throw InputError("hole point " + where + " is on the surface");
-      hole[static_cast<std::size_t>(region[static_cast<std::size_t>(t)])] = 1;
+      const auto r = static_cast<std::size_t>(region[static_cast<std::size_t>(t)]);
+      // A hole must be enclosed by meshed regions: the surface around it bounds them.
+      if (by_outside[r])
+        throw InputError("hole point " + where +
+                         " is in a region next to the outside: only regions enclosed by others "
+                         "can be holes");
+      hole[r] = 1;
+      if (!point_of[r]) point_of[r] = h / 3 + 1;
+    }
+    // Two holes side by side: the triangles between them would bound no tetrahedron.
+    for (std::size_t t = 0; t < nt; ++t) {
+      const auto r = static_cast<std::size_t>(region[t]);
+      for (std::size_t i = 0; hole[r] && i < 4; ++i) {
+        const Id n = tz.tet2tet[4 * t + i];
+        if (n == kNoId || on_face[4 * t + i] == kNoId) continue;
+        const auto q = static_cast<std::size_t>(region[static_cast<std::size_t>(n)]);
+        if (q == r || !hole[q]) continue;
+        throw InputError("hole points " + place(&hole_points[3 * (point_of[r] - 1)]) + " and " +
+                         place(&hole_points[3 * (point_of[q] - 1)]) +
+                         " are in regions next to each other: the triangles between them would "
+                         "bound no volume");
+      }
     }
   } else {
     for (std::size_t r = 0; r < rc; ++r)

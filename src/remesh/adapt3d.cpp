@@ -652,9 +652,10 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
                     l);
     else
       std::snprintf(note, sizeof note,
-                    "the curved interfaces between subdomains are kept as given (3D remeshing "
-                    "refines and moves planar ones only): their edges are up to %.3g long in the "
-                    "metric, and the tets along them cannot follow the sizes",
+                    "some interfaces between subdomains are kept as given (3D remeshing refines "
+                    "planar ones, with a ref of their own and a rim on planar patches): their "
+                    "edges are up to %.3g long in the metric, and the tets along them cannot "
+                    "follow the sizes",
                     l);
     result.report.notes.push_back(note);
   }

@@ -13,14 +13,14 @@ namespace {
 bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to) {
   const VertexKind k = m.vkind[from];
   if (k == VertexKind::kFixed) return false;
-  std::int32_t refs[3];
+  std::int32_t refs[4];
   int n = 0;
   bool interface = false;
   for (const Id t : shell)
     for (int i = 0; i < 4; ++i) {
       const Id v = m.tv[4 * t + i], s = 4 * t + i, r = m.tadj[s];
       if (v == from || v == to || !m.fbdy[s] || (r != kNoId && r < s)) continue;
-      if (n == 3) return false;
+      if (n == 4) return false;
       refs[n++] = m.face_ref(s);
       interface = interface || r != kNoId;
     }

@@ -95,7 +95,10 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
   if (!options.keep_surface && !curved.empty())
     boundary_ = std::make_unique<Boundary3d>(mesh_, std::move(curved), options),
     mesh_.surface = boundary_.get();
-  classify_vertices();
+  while (classify_vertices()) {
+  }
+  for (const auto& [ref, pl] : planes_)
+    has_interfaces_ = has_interfaces_ || (pl.inner && !pl.planar);
   num_input_vertices_ = mesh_.vertex_capacity();
   hint_.assign(mesh_.vertex_capacity(), kNoId);
   for (std::size_t v = 0; v < hint_.size(); ++v) hint_[v] = mesh_.vtet[v];
@@ -147,7 +150,7 @@ const Remesh3dContext::Plane* Remesh3dContext::plane(std::int32_t ref) const {
   return it != planes_.end() && it->second.planar ? &it->second : nullptr;
 }
 
-void Remesh3dContext::classify_vertices() {
+bool Remesh3dContext::classify_vertices() {
   TetMesh& m = mesh_;
   const std::size_t nv = m.vertex_capacity();
   constexpr int kMostRefs = 4;  // refs recorded per vertex
@@ -229,25 +232,46 @@ void Remesh3dContext::classify_vertices() {
     coplanar_lines_[pair] = d;
     for (const Id v : line) m.vkind[static_cast<std::size_t>(v)] = VertexKind::kRidge;
   }
+  // A planar interface whose rim cannot move (it meets a curved patch or a kept interface) is
+  // kept as given as a whole: remeshed up to a fixed rim, it strung vertices within 1e-5 of the
+  // rim's long edges (tets of quality 1e-7). Kept, it gets the kept surface's floor and note.
+  if (options_.keep_surface) return false;
+  bool froze = false;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (m.vkind[v] != VertexKind::kFixed || !inner[v] || !(fixed[v] || curved[v]) ||
+        (m.vtag[v] & (kTagCorner | kTagRequired)))
+      continue;
+    for (int c = 0; c < std::min(count[v], kMostRefs); ++c) {
+      const auto it = planes_.find(refs[kMostRefs * v + c]);
+      if (it == planes_.end() || !it->second.inner || !it->second.planar) continue;
+      it->second.planar = false;
+      froze = true;
+    }
+  }
+  return froze;
 }
 
 bool Remesh3dContext::interface_line(const std::int32_t* r, int n, std::int32_t& r1,
                                      std::int32_t& r2) const {
-  if (n != 3) return false;
-  const auto inner = [&](std::int32_t ref) {
-    const auto it = planes_.find(ref);
-    return it != planes_.end() && it->second.inner;
-  };
-  for (int k = 0; k < 3; ++k) {
-    const std::int32_t i = r[k], a = r[(k + 1) % 3], b = r[(k + 2) % 3];
-    const Plane *pi = plane(i), *pa = plane(a), *pb = plane(b);
-    if (!pi || !inner(i)) continue;
-    if (!pa || !pb || inner(a) || inner(b) || std::abs(dot(pa->n, pb->n)) < 1.0 - 1e-6 ||
-        std::abs(dot(pi->n, pa->n)) >= 1.0 - 1e-6)
-      return false;
-    r1 = std::min(std::min(a, b), i), r2 = std::max(std::min(a, b), i);
-    return true;
+  if (n < 3 || n > 4) return false;
+  bool any_inner = false;
+  const Plane* pl[4];
+  for (int k = 0; k < n; ++k) {
+    pl[k] = plane(r[k]);
+    if (!pl[k]) return false;
+    any_inner = any_inner || planes_.at(r[k]).inner;
   }
+  if (!any_inner) return false;
+  // The first two planes that cross; every plane must hold their common line.
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      if (std::abs(dot(pl[i]->n, pl[j]->n)) >= 1.0 - 1e-6) continue;
+      const Vec3 d = normalize(cross(pl[i]->n, pl[j]->n));
+      for (int k = 0; k < n; ++k)
+        if (std::abs(dot(pl[k]->n, d)) > 1e-6) return false;
+      r1 = std::min(r[i], r[j]), r2 = std::max(r[i], r[j]);
+      return true;
+    }
   return false;
 }
 

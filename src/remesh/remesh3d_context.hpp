@@ -83,14 +83,18 @@ class Remesh3dContext {
     bool inner = false;  ///< some face of the ref is an interface (between two tets)
   };
   void find_planes();
-  void classify_vertices();
+  /// The vertices' kinds; true when it found planar interfaces to keep as given (made
+  /// non-planar: classify again).
+  bool classify_vertices();
   const Plane* plane(std::int32_t ref) const;
   /// The direction of the line where planar patches r1 < r2 meet: their normals' cross product,
   /// or for coplanar patches the direction of their straight common boundary; false if none.
   bool ridge_direction(std::int32_t r1, std::int32_t r2, Vec3& d) const;
-  /// The 3 refs r[0..n) at a vertex or edge are a planar interface and two coplanar outer
-  /// patches (the outer faces of two solids, split where they meet): true, with the ridge (r1 <
-  /// r2) of the interface and the lesser patch, along which the line runs. False otherwise.
+  /// The 3 or 4 refs r[0..n) at a vertex or edge are planar, one at least an interface, and
+  /// their planes hold one common line (an interface meeting coplanar outer patches split
+  /// there, three or four interfaces meeting, an interface along an edge of the outer boundary):
+  /// true, with the first two refs whose planes cross (r1 < r2), which give the line. False
+  /// otherwise (a corner).
   bool interface_line(const std::int32_t* r, int n, std::int32_t& r1, std::int32_t& r2) const;
 
   Adapt3dOptions options_;

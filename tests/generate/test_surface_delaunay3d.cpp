@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "generate/boundary_recovery3d.hpp"
 #include "generate/surface_delaunay3d.hpp"
 #include "io/mesh_file.hpp"
 #include "mesh/check.hpp"
@@ -128,11 +129,28 @@ TEST(SurfaceDelaunay3d, InnerShellOrientedLikeTheOuterIsASolidOfItsOwn) {
   EXPECT_NEAR(volume(volume_inside(s, d, in)), (1000.0 - 1.0) / 6, 1e-9);
   EXPECT_THROW(volume_inside(s, d, out), InputError);
   EXPECT_THROW(volume_inside(s, d, on), InputError);
-  // A hole point in the outer region leaves the inner solid alone.
-  const std::vector<double> between = {5, 1, 1};
-  const Mesh inner = volume_inside(s, d, between);
-  EXPECT_NEAR(volume(inner), 1.0 / 6, 1e-12);
-  EXPECT_EQ(inner.tet_ref, std::vector<int>(inner.num_tets(), 1));
+  // A hole point in the outer region (next to the outside: its shell would bound nothing), or
+  // one in each of two regions side by side: refused by name.
+  try {
+    volume_inside(s, d, std::vector<double>{5, 1, 1});
+    ADD_FAILURE() << "a hole next to the outside was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("hole point (5, 1, 1) is in a region next to the outside"),
+              std::string::npos)
+        << e.what();
+  }
+  Mesh three = s;  // a third shell inside the inner one, outward: three nested regions
+  add_tet_surface(three, 0.25, 1.05, true);
+  BoundaryRecoveryOptions ro;
+  EXPECT_NEAR(volume(recover_volume(three, ro).volume), 1000.0 / 6, 1e-9);
+  ro.hole_points = {1.1, 1.1, 1.5, 1.08, 1.08, 1.08};
+  try {
+    recover_volume(three, ro);
+    ADD_FAILURE() << "two holes side by side were accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("are in regions next to each other"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(SurfaceDelaunay3d, SolidsSharingAFaceAreTwoRegions) {

@@ -18,6 +18,7 @@
 #include "metric/element.hpp"
 #include "metric/metric.hpp"
 #include "remesh/adapt3d.hpp"
+#include "remesh/curved_test_meshes.hpp"
 
 using namespace riemesh;
 
@@ -526,6 +527,86 @@ TEST(Adapt3d, InterfaceMeetingSplitOuterFacesIsRemeshed) {
     EXPECT_LT(longest, 0.1 * 1.6) << name;
     EXPECT_TRUE(r.report.notes.empty()) << name;
   }
+}
+
+/// m with tet refs region(centroid) and the faces between two refs a < b listed with ref 10 a + b.
+template <class Region>
+Mesh with_regions(Mesh m, Region region) {
+  std::map<std::array<Id, 3>, std::pair<int, std::array<Id, 3>>> seen;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    const Id* v = &m.tets[4 * t];
+    Vec3 c{};
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 3; ++k) c[k] += m.coords[3 * static_cast<std::size_t>(v[i]) + k] / 4;
+    m.tet_ref[t] = region(c);
+    for (int i = 0; i < 4; ++i) {
+      const std::array<Id, 3> f = {v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]};
+      std::array<Id, 3> key = f;
+      std::sort(key.begin(), key.end());
+      const auto [it, fresh] = seen.try_emplace(key, m.tet_ref[t], f);
+      if (fresh || it->second.first == m.tet_ref[t]) continue;
+      const int a = std::min(it->second.first, m.tet_ref[t]),
+                b = std::max(it->second.first, m.tet_ref[t]);
+      m.triangles.insert(m.triangles.end(), f.begin(), f.end());
+      m.tri_ref.push_back(10 * a + b);
+      m.tri_tag.push_back(0);
+    }
+  }
+  return m;
+}
+
+// Four subdomains around the line x = y = 0.5 (four planar interfaces meeting there, as gmsh's
+// 2 x 2 boxes): the line's vertices were fixed, its edges kept at the input's 0.25, and an
+// anisotropic field strung vertices within 1e-5 of it (tets of quality 1e-7). It is a ridge.
+TEST(Adapt3d, LineWhereFourInterfacesMeetIsRefined) {
+  const Mesh in = with_regions(
+      unit_cube(4), [](const Vec3& c) { return 1 + (c[0] > 0.5 ? 1 : 0) + (c[1] > 0.5 ? 2 : 0); });
+  Adapt3dOptions o;
+  o.hgrad = 0.0;
+  const Adapt3dResult r =
+      adapt3d(in, std::vector<SymMat3>(in.num_vertices(), isotropic_metric<3>(0.1)), o);
+  EXPECT_TRUE(check_mesh(r.mesh).valid());
+  const std::map<int, double> v = volume_by_ref(r.mesh), a = area_by_ref(r.mesh);
+  for (const int ref : {1, 2, 3, 4}) EXPECT_NEAR(v.at(ref), 0.25, 1e-12) << ref;
+  for (const int ref : {12, 13, 24, 34}) EXPECT_NEAR(a.at(ref), 0.5, 1e-12) << ref;
+  double longest = 0.0;  // of the edges on the line x = y = 0.5
+  std::size_t on_line = 0;
+  for (std::size_t t = 0; t < r.mesh.num_tets(); ++t)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const Id p = r.mesh.tets[4 * t + i], q = r.mesh.tets[4 * t + j];
+        const double* x = &r.mesh.coords[3 * static_cast<std::size_t>(p)];
+        const double* y = &r.mesh.coords[3 * static_cast<std::size_t>(q)];
+        if (x[0] != 0.5 || x[1] != 0.5 || y[0] != 0.5 || y[1] != 0.5) continue;
+        ++on_line;
+        longest = std::max(longest, std::abs(x[2] - y[2]));
+      }
+  std::printf("four interfaces: %zu tets, %zu tet edges on the line, longest %.3g, notes %zu\n",
+              r.mesh.num_tets(), on_line, longest, r.report.notes.size());
+  EXPECT_LT(longest, 0.1 * 1.6);
+  EXPECT_TRUE(r.report.notes.empty());
+}
+
+// A planar interface across the unit ball (x = 0) meets the curved sphere along a circle that
+// cannot move with the sphere's reconstruction: the interface is kept as given as a whole, with
+// the kept surface's floor and a note (remeshed up to its fixed rim, vertices piled up there).
+TEST(Adapt3d, PlanarInterfaceMeetingACurvedPatchIsKept) {
+  const Mesh in =
+      with_regions(test::unit_ball(4), [](const Vec3& c) { return c[0] > 0.0 ? 2 : 1; });
+  Adapt3dOptions o;
+  o.hgrad = 0.0;
+  const Adapt3dResult r =
+      adapt3d(in, std::vector<SymMat3>(in.num_vertices(), isotropic_metric<3>(0.12)), o);
+  EXPECT_TRUE(check_mesh(r.mesh).valid());
+  const std::map<int, double> a = area_by_ref(r.mesh), a0 = area_by_ref(in);
+  EXPECT_NEAR(a.at(12), a0.at(12), 1e-12);  // the same triangles
+  std::size_t faces = 0;
+  for (const int ref : r.mesh.tri_ref) faces += ref == 12;
+  EXPECT_EQ(faces, static_cast<std::size_t>(std::count(in.tri_ref.begin(), in.tri_ref.end(), 12)));
+  bool noted = false;
+  for (const std::string& n : r.report.notes)
+    noted |= n.find("some interfaces between subdomains are kept as given") != std::string::npos;
+  EXPECT_TRUE(noted);
 }
 
 // Coplanar planar patches of different refs (the outer faces of a gmsh multi-volume box): the
