@@ -144,6 +144,25 @@ TEST(Delaunay3d, IntegerPointsOfOneSphere) {
   for (InsertionOrder order : kOrders) expect_delaunay(xyz, delaunay3d(xyz, order));
 }
 
+TEST(Delaunay3d, CentreOfPointsOnASphereEmptiesEveryTet) {
+  // Points on a sphere (up to rounding), then its centre: every tet is in the centre's cavity,
+  // whose boundary has every point on it, more than the kernel's edge table takes (the cavity's
+  // edges are then sorted instead).
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> g;
+  std::vector<double> xyz;
+  for (int k = 0; k < 1500; ++k) {
+    const double x = g(rng), y = g(rng), z = g(rng), r = std::sqrt(x * x + y * y + z * z);
+    xyz.insert(xyz.end(), {x / r, y / r, z / r});
+  }
+  xyz.insert(xyz.end(), {0.0, 0.0, 0.0});
+  const Tetrahedralization tz = delaunay3d(xyz, InsertionOrder::kAsGiven);
+  expect_delaunay(xyz, tz);
+  std::size_t through_centre = 0;
+  for (Id v : tz.tets) through_centre += v == 1500;
+  EXPECT_GT(through_centre, 2000u);  // one tet per hull face: about 2 * 1500
+}
+
 TEST(Delaunay3d, ClusteredPoints) {
   // Tight clusters 1e-6 wide around a few centres, and points on coordinate planes.
   std::mt19937_64 rng(3);
