@@ -104,6 +104,16 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
           if (match) tets_[t].n[f] = 4 * u + g;
         }
   last_ = 0;
+  grow_scratch(64);
+  set_avx2(true);
+}
+
+void Delaunay3d::set_avx2(bool on) {
+#if defined(RIEMESH_HAVE_AVX2_KERNELS)
+  avx2_ = on && __builtin_cpu_supports("avx2");
+#else
+  (void)on;
+#endif
 }
 
 void Delaunay3d::reserve(std::size_t num_points) {
@@ -170,35 +180,66 @@ bool Delaunay3d::ghost_in_conflict(std::uint32_t t, const double* p) {
   return insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0;
 }
 
-/// The local number of vertex v on the cavity boundary of this insertion, given on first sight.
-std::uint32_t Delaunay3d::local_id(Id v) {
-  double* slot = tag_slot(v);
-  const auto tag = std::bit_cast<std::uint64_t>(*slot);
-  if (static_cast<std::uint32_t>(tag >> 32) == epoch_) return static_cast<std::uint32_t>(tag);
-  *slot = std::bit_cast<double>(std::uint64_t{epoch_} << 32 | num_local_);
-  return num_local_++;
+void Delaunay3d::grow_scratch(std::size_t cavity) {
+  const std::size_t size = std::max(cavity, 2 * cavity_.size());
+  cavity_.resize(size);
+  stack_.resize(2 * size + 2);
+  boundary_.resize(2 * size + 2);
 }
 
 /// The cavity: tets in conflict with p reachable from `start` (a depth-first search on an
 /// explicit stack), and its boundary faces with their vertices' local numbers.
-void Delaunay3d::find_cavity(std::uint32_t start, const double* p) {
+template <bool kAvx2>
+[[gnu::always_inline]] inline void Delaunay3d::find_cavity(std::uint32_t start, const double* p) {
   if (++epoch_ == 0) {  // the tags' epochs wrapped around: forget them all
     for (std::size_t i = 3; i < xyz_.size(); i += kStride) xyz_[i] = 0.0;
     epoch_ = 1;
   }
-  num_local_ = 0;
-  cavity_.clear();
-  boundary_.clear();
-  stack_.clear();
-  stack_.push_back(start);
+  // The scratch arrays are written by index, their sizes their capacities. The tets processed
+  // so far, P, are connected (a depth-first search tree), so they have at most 2 |P| + 2 faces
+  // on their boundary, and both the boundary faces found so far and the stack (tets reached
+  // through such faces) number at most that: grow_scratch keeps the stack and the boundary at
+  // 2 C + 2 for a cavity array of C (one check per tet). Members in locals: the calls out of the
+  // loop would make the compiler reload them.
+  std::size_t ns = 0, nc = 0, nf = 0;
+  std::uint32_t* stack = stack_.data();
+  std::uint32_t* cavity = cavity_.data();
+  BoundaryFace* boundary = boundary_.data();
+  std::size_t max_cavity = cavity_.size();
+  stack[ns++] = start;  // (the constructor made room)
   Tet* tets = tets_.data();
+  double* base = xyz_.data() + kStride;  // xyz(v) is base + v
+  const detail::StaticFilter3d filter = filter_;
+  const std::uint32_t epoch = epoch_;
+  std::uint32_t num_local = 0;
+  // The local number of vertex w on the cavity boundary, given on first sight (in its tag).
+  const auto local_id = [&](Id w) __attribute__((always_inline)) {
+    double* slot = base + (w | 3);
+    const auto tag = std::bit_cast<std::uint64_t>(*slot);
+    if (static_cast<std::uint32_t>(tag) == epoch) return static_cast<std::uint32_t>(tag >> 32);
+    *slot = std::bit_cast<double>(std::uint64_t{num_local} << 32 | epoch);
+    return num_local++;
+  };
   tets[start].n[0] |= kMark;
   std::size_t tests = 0;
   const detail::InsphereQuery query(p);
-  while (!stack_.empty()) {
-    const std::uint32_t t = stack_.back();
-    stack_.pop_back();
-    cavity_.push_back(t);
+  const auto insphere = [&](const double* a, const double* b, const double* c, const double* d)
+      __attribute__((always_inline)) {
+#if defined(RIEMESH_HAVE_AVX2_KERNELS)
+    if constexpr (kAvx2) return detail::insphere_sign_avx2(filter, query, a, b, c, d);
+#endif
+    return insphere_sign(filter, query, a, b, c, d);
+  };
+  while (ns != 0) {
+    if (nc == max_cavity) {
+      grow_scratch(nc + 1);
+      stack = stack_.data();
+      cavity = cavity_.data();
+      boundary = boundary_.data();
+      max_cavity = cavity_.size();
+    }
+    const std::uint32_t t = stack[--ns];
+    cavity[nc++] = t;
     // Face f of a positive tet is, in order, {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}[f]
     // (vertex f on its positive side, as the new point): one case per face, constant indices.
     const auto face = [&](int i, int a, int b, int c) __attribute__((always_inline)) {
@@ -208,29 +249,45 @@ void Delaunay3d::find_cavity(std::uint32_t start, const double* p) {
       if (!(nt.n[1] & kMark)) {     // not tested yet
         ++tests;
         const Id* w = nt.v;
-        const bool conflict =
-            (w[0] | w[1] | w[2] | w[3]) >= 0
-                ? insphere_sign(filter_, query, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3])) > 0
-                : ghost_in_conflict(code >> 2, p);
+        const bool conflict = (w[0] | w[1] | w[2] | w[3]) >= 0
+                                  ? insphere(base + w[0], base + w[1], base + w[2], base + w[3]) > 0
+                                  : ghost_in_conflict(code >> 2, p);
         if (conflict) {
           nt.n[0] |= kMark;
-          stack_.push_back(code >> 2);
+          stack[ns++] = code >> 2;
           return;
         }
         nt.n[1] |= kMark;
       }
       const Id* v = tets[t].v;
-      boundary_.push_back(
-          BoundaryFace{{v[a], v[b], v[c]}, code, {local_id(v[a]), local_id(v[b]), local_id(v[c])}});
+      boundary[nf++] =
+          BoundaryFace{{v[a], v[b], v[c]}, code, {local_id(v[a]), local_id(v[b]), local_id(v[c])}};
     };
     face(0, 1, 3, 2);
     face(1, 0, 2, 3);
     face(2, 0, 3, 1);
     face(3, 0, 1, 2);
   }
+  num_local_ = num_local;
+  num_cavity_ = nc;
+  num_boundary_ = nf;
   stats_.insphere_tests += tests;
-  stats_.cavity_tets += cavity_.size();
+  stats_.cavity_tets += nc;
 }
+
+// find_cavity compiled twice: for any x86-64 and for AVX2 (chosen at run time), where the same
+// SSE2 operations get three-operand encodings (fewer register copies). No FMA is enabled (the
+// filters' error bounds count every rounding): the results are bitwise the same.
+void Delaunay3d::find_cavity_base(std::uint32_t start, const double* p) {
+  find_cavity<false>(start, p);
+}
+
+#if defined(RIEMESH_HAVE_AVX2_KERNELS)
+__attribute__((target("avx2"))) void Delaunay3d::find_cavity_avx2(std::uint32_t start,
+                                                                  const double* p) {
+  find_cavity<true>(start, p);
+}
+#endif
 
 /// Replaces the cavity by the tets (a, b, c, v) on its boundary faces (a, b, c), in two sweeps.
 /// The cavity boundary is a triangulated sphere: each of its edges is on two boundary faces,
@@ -239,11 +296,11 @@ void Delaunay3d::find_cavity(std::uint32_t start, const double* p) {
 /// faces under their directed edges (a, b) in a table indexed by the vertices' local numbers, the
 /// second reads each tet's neighbours there under the reversed edges (b, a).
 void Delaunay3d::fill_cavity(Id v) {
-  const std::size_t nb = boundary_.size();
+  const std::size_t nb = num_boundary_;
   // The new tets: the cavity's, then deleted ones, then fresh ones.
-  const std::size_t num_cavity = cavity_.size();
+  const std::size_t num_cavity = num_cavity_;
   if (nb > num_cavity) {
-    cavity_.resize(nb);
+    if (cavity_.size() < nb) grow_scratch(nb);
     std::size_t k = num_cavity;
     for (; k < nb && !free_.empty(); ++k) {
       cavity_[k] = free_.back();
@@ -348,7 +405,12 @@ bool Delaunay3d::insert(Id v, Id* same) {
   const auto local = static_cast<Id>(kStride * original_.size());
   original_.push_back(v);
   xyz_.insert(xyz_.end(), {p[0], p[1], p[2], 0.0});
-  find_cavity(t, p);
+#if defined(RIEMESH_HAVE_AVX2_KERNELS)
+  if (avx2_)
+    find_cavity_avx2(t, p);
+  else
+#endif
+    find_cavity_base(t, p);
   fill_cavity(local);
   return true;
 }

@@ -82,6 +82,10 @@ class Delaunay3d {
 
   const Delaunay3dStats& stats() const { return stats_; }
 
+  /// The cavity search has an AVX2 variant, used when the CPU has AVX2 (the default, on) and
+  /// bitwise equivalent to the other: for tests, off forces the other.
+  void set_avx2(bool on);
+
  private:
   static constexpr Id kInfinite = -1;
   static constexpr Id kDeleted = -2;  // in v[0] of a deleted tet
@@ -107,10 +111,9 @@ class Delaunay3d {
   static constexpr std::size_t kStride = 4;
   const double* xyz(Id v) const { return xyz_.data() + kStride + v; }
   static std::size_t vertex_index(Id v) { return static_cast<std::uint32_t>(v) >> 2; }
-  /// The tag of vertex v (kInfinite included): epoch << 32 | (its local number) when v is on
-  /// the boundary of this insertion's cavity, as the bits of the record's 4th double.
-  double* tag_slot(Id v) { return xyz_.data() + kStride + (v | 3); }
-  std::uint32_t local_id(Id v);
+  // The record's 4th double holds the bits of vertex v's tag (at offset v | 3, kInfinite
+  // included): (its local number) << 32 | epoch when v is on the boundary of this insertion's
+  // cavity (find_cavity).
   bool is_ghost(std::uint32_t t) const {
     const Id* v = tets_[t].v;
     return (v[0] | v[1] | v[2] | v[3]) < 0;
@@ -118,8 +121,12 @@ class Delaunay3d {
   std::uint32_t locate(const double* p);
   bool flip_quad(const Id (&q)[4], std::vector<std::uint32_t>& vertex_tet);
   bool ghost_in_conflict(std::uint32_t t, const double* p);
+  template <bool kAvx2>
   void find_cavity(std::uint32_t start, const double* p);
+  void find_cavity_base(std::uint32_t start, const double* p);
+  void find_cavity_avx2(std::uint32_t start, const double* p);
   void fill_cavity(Id v);
+  void grow_scratch(std::size_t cavity);
 
   const std::vector<double>* coords_;
   // The tets refer to the vertices by the kernel's own numbering, in insertion order: vertex k
@@ -127,7 +134,7 @@ class Delaunay3d {
   // inserted one after the other (near each other in BRIO or Hilbert order) near each other in
   // memory, whatever the caller's numbering: fewer cache misses in the in-sphere tests; the tag
   // in each record numbers the cavity boundary's vertices without another array.
-  std::vector<double> xyz_;
+  std::vector<double, HugePageAllocator<double>> xyz_;  // records aligned to 32 bytes (AVX2)
   std::vector<Id> original_;
   detail::StaticFilter3d filter_;  // first stage of the predicates, over the points' box
   // kInfinite for the vertex at infinity, kDeleted in v[0]. Huge pages: hundreds of MB are
@@ -141,12 +148,15 @@ class Delaunay3d {
   std::vector<std::uint32_t> free_;  // deleted tets for reuse
   std::uint32_t epoch_ = 0;          // insertion count, in the vertices' tags
   std::uint32_t last_ = 0;   // where the next walk starts
+  bool avx2_ = false;        // the CPU has AVX2: find_cavity_avx2
   std::uint32_t rng_ = 0x9e3779b9u;  // xorshift state of the walk's face order
 
-  // Per-insertion scratch, kept between insertions to avoid allocations.
+  // Per-insertion scratch, kept between insertions to avoid allocations: sized to their
+  // capacities, num_cavity_ and num_boundary_ used.
   std::vector<std::uint32_t> stack_;
   std::vector<std::uint32_t> cavity_;
   std::vector<BoundaryFace> boundary_;
+  std::size_t num_cavity_ = 0, num_boundary_ = 0;
   // Up to kMostLocal boundary vertices the edge table has num_local_^2 entries (4 MB at most);
   // larger cavities (cospherical points) sort their edges instead.
   static constexpr std::size_t kMostLocal = 1024;
