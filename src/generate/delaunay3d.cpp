@@ -112,6 +112,7 @@ void Delaunay3d::set_avx2(bool on) {
 #if defined(RIEMESH_HAVE_AVX2_KERNELS)
   avx2_ = on && __builtin_cpu_supports("avx2");
 #else
+  avx2_ = false;  // (no AVX2 variant on this target)
   (void)on;
 #endif
 }
