@@ -1,6 +1,7 @@
 #include "generate/delaunay3d.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <string>
 #include <utility>
 
@@ -66,10 +67,11 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
   order.insert(order.begin(), v, v + 4);
   if (orient3d_sign(p(v[0]), p(v[1]), p(v[2]), p(v[3])) < 0) std::swap(v[0], v[1]);
   // The kernel's own numbering: vertex i is v[i], then the points in their insertion order.
+  xyz_.assign(kStride, 0.0);  // the vertex at infinity's record: only its tag is used
   for (int i = 0; i < 4; ++i) {
     original_.push_back(v[i]);
-    xyz_.insert(xyz_.end(), p(v[i]), p(v[i]) + 3);
-    v[i] = 3 * i;
+    xyz_.insert(xyz_.end(), {p(v[i])[0], p(v[i])[1], p(v[i])[2], 0.0});
+    v[i] = static_cast<Id>(kStride) * i;
   }
   // The static filter's box: all points given now (later ones grow it when inserted).
   for (std::size_t i = 0; i < coords->size(); i += 3) filter_.extend(coords->data() + i);
@@ -102,11 +104,22 @@ Delaunay3d::Delaunay3d(const std::vector<double>* coords, std::vector<Id>& order
           if (match) tets_[t].n[f] = 4 * u + g;
         }
   last_ = 0;
+  grow_scratch(64);
+  set_avx2(true);
+}
+
+void Delaunay3d::set_avx2(bool on) {
+#if defined(RIEMESH_HAVE_AVX2_KERNELS)
+  avx2_ = on && __builtin_cpu_supports("avx2");
+#else
+  avx2_ = false;  // (no AVX2 variant on this target)
+  (void)on;
+#endif
 }
 
 void Delaunay3d::reserve(std::size_t num_points) {
   tets_.reserve(7 * num_points);
-  xyz_.reserve(3 * num_points);
+  xyz_.reserve(kStride * (num_points + 1));
   original_.reserve(num_points);
 }
 
@@ -168,67 +181,130 @@ bool Delaunay3d::ghost_in_conflict(std::uint32_t t, const double* p) {
   return insphere_sign(filter_, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3]), p) > 0;
 }
 
+void Delaunay3d::grow_scratch(std::size_t cavity) {
+  const std::size_t size = std::max(cavity, 2 * cavity_.size());
+  cavity_.resize(size);
+  stack_.resize(2 * size + 2);
+  boundary_.resize(2 * size + 2);
+}
+
 /// The cavity: tets in conflict with p reachable from `start` (a depth-first search on an
-/// explicit stack), and its boundary faces as the new tets they will become.
-void Delaunay3d::find_cavity(std::uint32_t start, Id v, const double* p) {
-  ++epoch_;  // wraps to 0 after 2^32 insertions: fill_cavity then clears the stamps
-  cavity_.clear();
-  boundary_.clear();
-  stack_.clear();
-  stack_.push_back(start);
+/// explicit stack), and its boundary faces with their vertices' local numbers.
+template <bool kAvx2>
+[[gnu::always_inline]] inline void Delaunay3d::find_cavity(std::uint32_t start, const double* p) {
+  if (++epoch_ == 0) {  // the tags' epochs wrapped around: forget them all
+    for (std::size_t i = 3; i < xyz_.size(); i += kStride) xyz_[i] = 0.0;
+    epoch_ = 1;
+  }
+  // The scratch arrays are written by index, their sizes their capacities. The tets processed
+  // so far, P, are connected (a depth-first search tree), so they have at most 2 |P| + 2 faces
+  // on their boundary, and both the boundary faces found so far and the stack (tets reached
+  // through such faces) number at most that: grow_scratch keeps the stack and the boundary at
+  // 2 C + 2 for a cavity array of C (one check per tet). Members in locals: the calls out of the
+  // loop would make the compiler reload them.
+  std::size_t ns = 0, nc = 0, nf = 0;
+  std::uint32_t* stack = stack_.data();
+  std::uint32_t* cavity = cavity_.data();
+  BoundaryFace* boundary = boundary_.data();
+  std::size_t max_cavity = cavity_.size();
+  stack[ns++] = start;  // (the constructor made room)
   Tet* tets = tets_.data();
+  double* base = xyz_.data() + kStride;  // xyz(v) is base + v
+  const detail::StaticFilter3d filter = filter_;
+  const std::uint32_t epoch = epoch_;
+  std::uint32_t num_local = 0;
+  // The local number of vertex w on the cavity boundary, given on first sight (in its tag).
+  const auto local_id = [&](Id w) __attribute__((always_inline)) {
+    double* slot = base + (w | 3);
+    const auto tag = std::bit_cast<std::uint64_t>(*slot);
+    if (static_cast<std::uint32_t>(tag) == epoch) return static_cast<std::uint32_t>(tag >> 32);
+    *slot = std::bit_cast<double>(std::uint64_t{num_local} << 32 | epoch);
+    return num_local++;
+  };
   tets[start].n[0] |= kMark;
   std::size_t tests = 0;
   const detail::InsphereQuery query(p);
-  while (!stack_.empty()) {
-    const std::uint32_t t = stack_.back();
-    stack_.pop_back();
-    cavity_.push_back(t);
-    for (int i = 0; i < 4; ++i) {
+  const auto insphere = [&](const double* a, const double* b, const double* c, const double* d)
+      __attribute__((always_inline)) {
+#if defined(RIEMESH_HAVE_AVX2_KERNELS)
+    if constexpr (kAvx2) return detail::insphere_sign_avx2(filter, query, a, b, c, d);
+#endif
+    return insphere_sign(filter, query, a, b, c, d);
+  };
+  while (ns != 0) {
+    if (nc == max_cavity) {
+      grow_scratch(nc + 1);
+      stack = stack_.data();
+      cavity = cavity_.data();
+      boundary = boundary_.data();
+      max_cavity = cavity_.size();
+    }
+    const std::uint32_t t = stack[--ns];
+    cavity[nc++] = t;
+    // Face f of a positive tet is, in order, {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}[f]
+    // (vertex f on its positive side, as the new point): one case per face, constant indices.
+    const auto face = [&](int i, int a, int b, int c) __attribute__((always_inline)) {
       const std::uint32_t code = tets[t].n[i] & kCodeMask;
       Tet& nt = tets[code >> 2];
-      if (nt.n[0] & kMark) continue;  // in the cavity
-      if (!(nt.n[1] & kMark)) {        // not tested yet
+      if (nt.n[0] & kMark) return;  // in the cavity
+      if (!(nt.n[1] & kMark)) {     // not tested yet
         ++tests;
         const Id* w = nt.v;
-        const bool conflict =
-            (w[0] | w[1] | w[2] | w[3]) >= 0
-                ? insphere_sign(filter_, query, xyz(w[0]), xyz(w[1]), xyz(w[2]), xyz(w[3])) > 0
-                : ghost_in_conflict(code >> 2, p);
+        const bool conflict = (w[0] | w[1] | w[2] | w[3]) >= 0
+                                  ? insphere(base + w[0], base + w[1], base + w[2], base + w[3]) > 0
+                                  : ghost_in_conflict(code >> 2, p);
         if (conflict) {
           nt.n[0] |= kMark;
-          stack_.push_back(code >> 2);
-          continue;
+          stack[ns++] = code >> 2;
+          // Its neighbours are tested next: their records fetched meanwhile (a cache miss per
+          // tet on large meshes otherwise).
+          for (int j = 0; j < 4; ++j) __builtin_prefetch(tets + ((nt.n[j] & kCodeMask) >> 2));
+          return;
         }
         nt.n[1] |= kMark;
       }
-      BoundaryFace f;
-      for (int j = 0; j < 4; ++j) f.v[j] = tets[t].v[j];
-      f.v[i] = v;
-      f.outer = code;
-      f.face = i;
-      boundary_.push_back(f);
-    }
+      const Id* v = tets[t].v;
+      boundary[nf++] =
+          BoundaryFace{{v[a], v[b], v[c]}, code, {local_id(v[a]), local_id(v[b]), local_id(v[c])}};
+    };
+    face(0, 1, 3, 2);
+    face(1, 0, 2, 3);
+    face(2, 0, 3, 1);
+    face(3, 0, 1, 2);
   }
+  num_local_ = num_local;
+  num_cavity_ = nc;
+  num_boundary_ = nf;
   stats_.insphere_tests += tests;
-  stats_.cavity_tets += cavity_.size();
+  stats_.cavity_tets += nc;
 }
 
-/// Replaces the cavity by one tet per boundary face joined to the new point, in one sweep. The
-/// cavity boundary is a triangulated sphere: each of its edges is on two boundary faces, which
-/// run through it in opposite directions, and the two new tets on them are neighbours across
-/// their faces through that edge and the point. The first of the two to come stores its face in
-/// a small hash table under the directed edge (a, b), the second finds it there as (b, a) and
-/// links both.
-void Delaunay3d::fill_cavity() {
-  // Face f of a positive tet is, in order, {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}[f]
-  // (vertex f on its positive side); the edge from its vertex e to vertex e + 1 lies on the new
-  // tet's face opposite its vertex e + 2 (mod 3).
-  const std::size_t nb = boundary_.size();
-  // The new tets: the cavity's, then deleted ones, then fresh ones, in the order new_tet gave.
-  const std::size_t num_cavity = cavity_.size();
+// find_cavity compiled twice: for any x86-64 and for AVX2 (chosen at run time), where the same
+// SSE2 operations get three-operand encodings (fewer register copies). No FMA is enabled (the
+// filters' error bounds count every rounding): the results are bitwise the same.
+void Delaunay3d::find_cavity_base(std::uint32_t start, const double* p) {
+  find_cavity<false>(start, p);
+}
+
+#if defined(RIEMESH_HAVE_AVX2_KERNELS)
+__attribute__((target("avx2"))) void Delaunay3d::find_cavity_avx2(std::uint32_t start,
+                                                                  const double* p) {
+  find_cavity<true>(start, p);
+}
+#endif
+
+/// Replaces the cavity by the tets (a, b, c, v) on its boundary faces (a, b, c), in two sweeps.
+/// The cavity boundary is a triangulated sphere: each of its edges is on two boundary faces,
+/// which run through it in opposite directions, and the two new tets on them are neighbours
+/// across their faces through that edge and v. The first sweep files each new tet's three inner
+/// faces under their directed edges (a, b) in a table indexed by the vertices' local numbers, the
+/// second reads each tet's neighbours there under the reversed edges (b, a).
+void Delaunay3d::fill_cavity(Id v) {
+  const std::size_t nb = num_boundary_;
+  // The new tets: the cavity's, then deleted ones, then fresh ones.
+  const std::size_t num_cavity = num_cavity_;
   if (nb > num_cavity) {
-    cavity_.resize(nb);
+    if (cavity_.size() < nb) grow_scratch(nb);
     std::size_t k = num_cavity;
     for (; k < nb && !free_.empty(); ++k) {
       cavity_[k] = free_.back();
@@ -242,67 +318,69 @@ void Delaunay3d::fill_cavity() {
       for (std::size_t t = first; k < nb; ++k, ++t) cavity_[k] = static_cast<std::uint32_t>(t);
     }
   }
-  // At most 3 nb / 2 edges: a load factor under 3/8.
-  int bits = 6;
-  while ((std::size_t{1} << bits) < 4 * nb) ++bits;
-  const std::size_t size = std::size_t{1} << bits;
-  if (edges_.size() < size) edges_.resize(size, EdgeSlot{0, 0, 0});
-  if (epoch_ == 0) {  // the stamps wrapped around: forget them all
-    for (EdgeSlot& e : edges_) e.stamp = 0;
-    epoch_ = 1;
-  }
-  const std::size_t mask = size - 1;
-  const std::uint32_t epoch = epoch_;
-  EdgeSlot* table = edges_.data();
   Tet* tets = tets_.data();
   const std::uint32_t* ids = cavity_.data();
-  std::uint32_t t = 0;
-  for (std::size_t k = 0; k < nb; ++k) {
-    const BoundaryFace f = boundary_[k];  // a copy: the stores below cannot change it
-    t = ids[k];
-    Tet& tet = tets[t];
-    std::copy(f.v, f.v + 4, tet.v);
-    // The tet's 4 codes are all rewritten (here and by the links), which clears its mark; the
-    // outer tet's is cleared here.
-    tet.n[f.face] = f.outer;
-    Tet& outer = tets[f.outer >> 2];
-    outer.n[1] &= kCodeMask;
-    outer.n[f.outer & 3] = 4 * t + static_cast<std::uint32_t>(f.face);
-    // Directed edge (a, b) of the face, on the new tet's face opposite vertex `opposite`. The
-    // hash is symmetric, so that (b, a) probes the same slots.
-    const auto link = [&](Id a, Id b, int opposite) {
-      const std::uint32_t ua = static_cast<std::uint32_t>(a), ub = static_cast<std::uint32_t>(b);
-      const std::uint64_t key = (std::uint64_t{ua} << 32) | ub;
-      const std::uint64_t reverse = (std::uint64_t{ub} << 32) | ua;
-      const std::uint32_t code = 4 * t + static_cast<std::uint32_t>(opposite);
-      std::size_t i = static_cast<std::size_t>((std::uint64_t{ua + ub} * 0x9E3779B97F4A7C15ull) >> (64 - bits));
-      for (;; i = (i + 1) & mask) {
-        EdgeSlot& slot = table[i];
-        if (slot.stamp != epoch) {
-          slot = {key, code, epoch};
-          return;
-        }
-        if (slot.key == reverse) {
-          tet.n[opposite] = slot.code;
-          tets[slot.code >> 2].n[slot.code & 3] = code;
-          return;
-        }
-      }
+  const BoundaryFace* faces = boundary_.data();
+  // The outer tets' links to the new ones (each clears the outer tet's mark: a tested tet is
+  // always outside a boundary face); then each new tet written whole (the cavity's records are
+  // no longer read). Edge (a, b) of face (a, b, c) is on the new tet's face opposite c (2),
+  // (b, c) opposite a (0), (c, a) opposite b (1).
+  const std::size_t nl = num_local_;
+  const auto link_outer = [&](std::size_t k) __attribute__((always_inline)) {
+    const std::uint32_t outer = faces[k].outer;
+    Tet& o = tets[outer >> 2];
+    o.n[1] &= kCodeMask;
+    o.n[outer & 3] = 4 * ids[k] + 3;
+  };
+  if (nl <= kMostLocal) {
+    if (edges_.size() < nl * nl) edges_.resize(nl * nl);
+    std::uint32_t* table = edges_.data();
+    for (std::size_t k = 0; k < nb; ++k) {
+      link_outer(k);
+      const std::uint32_t code = 4 * ids[k];
+      const std::uint32_t* l = faces[k].l;
+      table[l[0] * nl + l[1]] = code + 2;
+      table[l[1] * nl + l[2]] = code;
+      table[l[2] * nl + l[0]] = code + 1;
+    }
+    for (std::size_t k = 0; k < nb; ++k) {
+      const BoundaryFace& f = faces[k];
+      const std::uint32_t* l = f.l;
+      tets[ids[k]] =
+          Tet{{f.v[0], f.v[1], f.v[2], v},
+              {table[l[2] * nl + l[1]], table[l[0] * nl + l[2]], table[l[1] * nl + l[0]], f.outer}};
+    }
+  } else {
+    // A huge cavity (cospherical points): the directed edges (a << 32 | b) sorted instead.
+    big_edges_.clear();
+    const auto key = [](std::uint64_t a, std::uint64_t b) { return a << 32 | b; };
+    for (std::size_t k = 0; k < nb; ++k) {
+      link_outer(k);
+      const std::uint32_t code = 4 * ids[k];
+      const std::uint32_t* l = faces[k].l;
+      big_edges_.emplace_back(key(l[0], l[1]), code + 2);
+      big_edges_.emplace_back(key(l[1], l[2]), code);
+      big_edges_.emplace_back(key(l[2], l[0]), code + 1);
+    }
+    std::sort(big_edges_.begin(), big_edges_.end());
+    const auto find = [&](std::uint64_t a, std::uint64_t b) {
+      const auto it = std::lower_bound(big_edges_.begin(), big_edges_.end(),
+                                       std::pair<std::uint64_t, std::uint32_t>{key(a, b), 0});
+      RIEMESH_CHECK(it != big_edges_.end() && it->first == key(a, b));
+      return it->second;
     };
-    // The face's edges, one case per face index so that the indices are constants.
-    const Id* w = f.v;
-    switch (f.face) {
-      case 0: link(w[1], w[3], 2); link(w[3], w[2], 1); link(w[2], w[1], 3); break;
-      case 1: link(w[0], w[2], 3); link(w[2], w[3], 0); link(w[3], w[0], 2); break;
-      case 2: link(w[0], w[3], 1); link(w[3], w[1], 0); link(w[1], w[0], 3); break;
-      default: link(w[0], w[1], 2); link(w[1], w[2], 0); link(w[2], w[0], 1); break;
+    for (std::size_t k = 0; k < nb; ++k) {
+      const BoundaryFace& f = faces[k];
+      const std::uint32_t* l = f.l;
+      tets[ids[k]] = Tet{{f.v[0], f.v[1], f.v[2], v},
+                         {find(l[2], l[1]), find(l[0], l[2]), find(l[1], l[0]), f.outer}};
     }
   }
   for (std::size_t k = nb; k < num_cavity; ++k) {
     tets[ids[k]].v[0] = kDeleted;  // its mark stays until it is reused (codes rewritten)
     free_.push_back(ids[k]);
   }
-  last_ = t;
+  last_ = ids[nb - 1];
 }
 
 bool Delaunay3d::insert(Id v, Id* same) {
@@ -316,17 +394,22 @@ bool Delaunay3d::insert(Id v, Id* same) {
     for (int i = 0; i < 4; ++i) {
       const Id w = tets_[t].v[i];
       if (same_point(xyz(w), p)) {
-        if (same) *same = original_[static_cast<std::uint32_t>(w) / 3];
+        if (same) *same = original_[vertex_index(w)];
         return false;
       }
     }
   }
-  RIEMESH_CHECK(original_.size() < 0x7fffffff / 3);  // the coordinates' offset fits an Id
-  const auto local = static_cast<Id>(3 * original_.size());
+  RIEMESH_CHECK(original_.size() < 0x7fffffff / kStride);  // the record's offset fits an Id
+  const auto local = static_cast<Id>(kStride * original_.size());
   original_.push_back(v);
-  xyz_.insert(xyz_.end(), p, p + 3);
-  find_cavity(t, local, p);
-  fill_cavity();
+  xyz_.insert(xyz_.end(), {p[0], p[1], p[2], 0.0});
+#if defined(RIEMESH_HAVE_AVX2_KERNELS)
+  if (avx2_)
+    find_cavity_avx2(t, p);
+  else
+#endif
+    find_cavity_base(t, p);
+  fill_cavity(local);
   return true;
 }
 
@@ -352,7 +435,7 @@ Tetrahedralization Delaunay3d::result() const {
   for (std::size_t t = 0; t < n; ++t) {
     if (old2new[t] == kNoId) continue;
     for (int i = 0; i < 4; ++i) {
-      *v++ = original_[static_cast<std::uint32_t>(tets_[t].v[i]) / 3];
+      *v++ = original_[vertex_index(tets_[t].v[i])];
       *a++ = old2new[tets_[t].n[i] >> 2];
     }
   }

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "generate/delaunay2d.hpp"  // InsertionOrder, shared with the 2D kernel
@@ -81,21 +82,21 @@ class Delaunay3d {
 
   const Delaunay3dStats& stats() const { return stats_; }
 
+  /// The cavity search has an AVX2 variant, used when the CPU has AVX2 (the default, on) and
+  /// bitwise equivalent to the other: for tests, off forces the other.
+  void set_avx2(bool on);
+
  private:
   static constexpr Id kInfinite = -1;
   static constexpr Id kDeleted = -2;  // in v[0] of a deleted tet
 
+  /// A face of the cavity boundary: its vertices (a, b, c), oriented so that (a, b, c, new
+  /// point) is positive, the outer tet's code 4 * (outer tet) + its face index, and the
+  /// vertices' local numbers in this insertion (see local_id).
   struct BoundaryFace {
-    Id v[4];              // the cavity tetrahedron's vertices with the face's apex replaced
-    std::uint32_t outer;  // 4 * (outer tet) + its face index
-    int face;             // the face's index in the cavity tetrahedron
-  };
-  /// A slot of the cavity boundary's edge table: a directed edge (a, b) as a << 32 | b and the
-  /// face of a new tet through the edge and the new point, as a neighbour code.
-  struct EdgeSlot {
-    std::uint64_t key;
-    std::uint32_t code;
-    std::uint32_t stamp;  // the slot is used in this insertion when stamp == epoch_
+    Id v[3];
+    std::uint32_t outer;
+    std::uint32_t l[3];
   };
 
   /// A tetrahedron: its vertices and, across the face opposite v[i], the neighbour's code
@@ -105,7 +106,14 @@ class Delaunay3d {
     std::uint32_t n[4];
   };
 
-  const double* xyz(Id v) const { return xyz_.data() + v; }
+  // Vertex k is stored as 4 k, the offset of its record (x, y, z, tag) in xyz_ past a first
+  // record that stands for the vertex at infinity (kInfinite = -1: its tag is at offset -1).
+  static constexpr std::size_t kStride = 4;
+  const double* xyz(Id v) const { return xyz_.data() + kStride + v; }
+  static std::size_t vertex_index(Id v) { return static_cast<std::uint32_t>(v) >> 2; }
+  // The record's 4th double holds the bits of vertex v's tag (at offset v | 3, kInfinite
+  // included): (its local number) << 32 | epoch when v is on the boundary of this insertion's
+  // cavity (find_cavity).
   bool is_ghost(std::uint32_t t) const {
     const Id* v = tets_[t].v;
     return (v[0] | v[1] | v[2] | v[3]) < 0;
@@ -113,16 +121,20 @@ class Delaunay3d {
   std::uint32_t locate(const double* p);
   bool flip_quad(const Id (&q)[4], std::vector<std::uint32_t>& vertex_tet);
   bool ghost_in_conflict(std::uint32_t t, const double* p);
-  void find_cavity(std::uint32_t start, Id v, const double* p);
-  void fill_cavity();
+  template <bool kAvx2>
+  void find_cavity(std::uint32_t start, const double* p);
+  void find_cavity_base(std::uint32_t start, const double* p);
+  void find_cavity_avx2(std::uint32_t start, const double* p);
+  void fill_cavity(Id v);
+  void grow_scratch(std::size_t cavity);
 
   const std::vector<double>* coords_;
   // The tets refer to the vertices by the kernel's own numbering, in insertion order: vertex k
-  // is stored as 3 k, the offset of its coordinates in xyz_ (a copy; one address computation
-  // less per vertex in the tests), its id in coords_ is original_[k]. The copy keeps the points inserted one after the
-  // other (near each other in BRIO or Hilbert order) near each other in memory, whatever the
-  // caller's numbering: fewer cache misses in the in-sphere tests.
-  std::vector<double> xyz_;
+  // is stored as 4 k (see xyz), its id in coords_ is original_[k]. The copy keeps the points
+  // inserted one after the other (near each other in BRIO or Hilbert order) near each other in
+  // memory, whatever the caller's numbering: fewer cache misses in the in-sphere tests; the tag
+  // in each record numbers the cavity boundary's vertices without another array.
+  std::vector<double, HugePageAllocator<double>> xyz_;  // records aligned to 32 bytes (AVX2)
   std::vector<Id> original_;
   detail::StaticFilter3d filter_;  // first stage of the predicates, over the points' box
   // kInfinite for the vertex at infinity, kDeleted in v[0]. Huge pages: hundreds of MB are
@@ -134,15 +146,23 @@ class Delaunay3d {
   // anyway. Cleared by fill_cavity (a tested tet is always next to the cavity).
   static constexpr std::uint32_t kMark = 0x80000000u, kCodeMask = 0x7fffffffu;
   std::vector<std::uint32_t> free_;  // deleted tets for reuse
-  std::uint32_t epoch_ = 1;  // insertion count, stamps edges_
+  std::uint32_t epoch_ = 0;          // insertion count, in the vertices' tags
   std::uint32_t last_ = 0;   // where the next walk starts
+  bool avx2_ = false;        // the CPU has AVX2: find_cavity_avx2
   std::uint32_t rng_ = 0x9e3779b9u;  // xorshift state of the walk's face order
 
-  // Per-insertion scratch, kept between insertions to avoid allocations.
+  // Per-insertion scratch, kept between insertions to avoid allocations: sized to their
+  // capacities, num_cavity_ and num_boundary_ used.
   std::vector<std::uint32_t> stack_;
   std::vector<std::uint32_t> cavity_;
   std::vector<BoundaryFace> boundary_;
-  std::vector<EdgeSlot> edges_;  // open addressing, power-of-two size, reused (stamps)
+  std::size_t num_cavity_ = 0, num_boundary_ = 0;
+  // Up to kMostLocal boundary vertices the edge table has num_local_^2 entries (4 MB at most);
+  // larger cavities (cospherical points) sort their edges instead.
+  static constexpr std::size_t kMostLocal = 1024;
+  std::uint32_t num_local_ = 0;       // vertices on the cavity boundary (local numbers 0..)
+  std::vector<std::uint32_t> edges_;  // [la * num_local_ + lb]: the new tets' faces by edge
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> big_edges_;
 
   Delaunay3dStats stats_;
 };

@@ -13,13 +13,13 @@ std::size_t Delaunay3d::flip_cocircular(const std::vector<std::array<Id, 4>>& qu
   const std::size_t n = coords_->size() / 3;
   std::vector<Id> local(n, kNoId);
   for (std::size_t k = 0; k < original_.size(); ++k)
-    local[static_cast<std::size_t>(original_[k])] = static_cast<Id>(3 * k);
+    local[static_cast<std::size_t>(original_[k])] = static_cast<Id>(kStride * k);
   std::vector<std::uint32_t> vertex_tet(original_.size(), ~0u);
   for (std::uint32_t t = 0; t < tets_.size(); ++t) {
     const Id* v = tets_[t].v;
     if (v[0] == kDeleted) continue;
     for (int i = 0; i < 4; ++i)
-      if (v[i] >= 0) vertex_tet[static_cast<std::size_t>(v[i]) / 3] = t;
+      if (v[i] >= 0) vertex_tet[vertex_index(v[i])] = t;
   }
   std::size_t flipped = 0;
   for (const std::array<Id, 4>& q : quads) {
@@ -46,7 +46,7 @@ bool Delaunay3d::flip_quad(const Id (&q)[4], std::vector<std::uint32_t>& vertex_
   // A tetrahedron through B and D: a search over the tetrahedra through B, given up (no flip)
   // past kMostBall of them (a vertex of a huge degree: the search is quadratic in it).
   constexpr std::size_t kMostBall = 256;
-  const std::uint32_t start = vertex_tet[static_cast<std::size_t>(B) / 3];
+  const std::uint32_t start = vertex_tet[vertex_index(B)];
   if (start == ~0u || index(start, B) < 0) return false;
   std::vector<std::uint32_t> seen{start}, stack{start};
   std::uint32_t t0 = ~0u;
@@ -133,8 +133,8 @@ bool Delaunay3d::flip_quad(const Id (&q)[4], std::vector<std::uint32_t>& vertex_
   outer(t3, a3, e4d), inner(t3, b3, t4, d4), outer(t3, d3, e3d);
   // Opposite A (at B's index), C in {A, C, D, Y}: (C, D, Y), (A, D, Y).
   outer(t4, b4, e4b), outer(t4, c4, e3b);
-  vertex_tet[static_cast<std::size_t>(B) / 3] = t1;
-  vertex_tet[static_cast<std::size_t>(D) / 3] = t2;
+  vertex_tet[vertex_index(B)] = t1;
+  vertex_tet[vertex_index(D)] = t2;
   return true;
 }
 

@@ -88,6 +88,43 @@ TEST(Delaunay3d, VectorInsphereDeterminantIsBitwiseTheScalarOne) {
   }
 }
 
+#if defined(RIEMESH_HAVE_AVX2_KERNELS)
+TEST(Delaunay3d, Avx2InsphereDeterminantIsBitwiseTheScalarOne) {
+  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "no AVX2";
+  std::mt19937_64 rng(10);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  alignas(32) double r[4][4];  // records of 4 doubles, the 4th never computed with
+  for (int trial = 0; trial < 20000; ++trial) {
+    double e[3];
+    const double scale = std::ldexp(1.0, trial % 40 - 20);
+    for (auto& q : r) {
+      for (int i = 0; i < 3; ++i) q[i] = 3.0 + scale * u(rng);
+      q[3] = trial % 2 ? std::nan("") : 1e-310;  // a NaN or a denormal: not read
+    }
+    for (double& x : e) x = 3.0 + scale * u(rng);
+    const double vector =
+        detail::insphere_det_avx2(detail::InsphereQuery(e), r[0], r[1], r[2], r[3]);
+    const double scalar = detail::insphere_det_scalar(r[0], r[1], r[2], r[3], e);
+    ASSERT_EQ(std::memcmp(&vector, &scalar, sizeof(double)), 0) << vector << " " << scalar;
+  }
+}
+#endif
+
+TEST(Delaunay3d, KernelWithAndWithoutAvx2GivesTheSameTets) {
+  for (const std::vector<double>& xyz : {random_points(3000, 12), grid_points(6)}) {
+    Tetrahedralization out[2];
+    for (int avx2 = 0; avx2 < 2; ++avx2) {
+      std::vector<Id> order = insertion_order(xyz, InsertionOrder::kBrio);
+      Delaunay3d kernel(&xyz, order);
+      kernel.set_avx2(avx2 == 1);
+      for (std::size_t k = 4; k < order.size(); ++k) kernel.insert(order[k]);
+      out[avx2] = kernel.result();
+    }
+    EXPECT_EQ(out[0].tets, out[1].tets);
+    EXPECT_EQ(out[0].tet2tet, out[1].tet2tet);
+  }
+}
+
 TEST(Delaunay3d, InsphereSignConvention) {
   const double a[3] = {0, 0, 0}, b[3] = {1, 0, 0}, c[3] = {0, 1, 0}, d[3] = {0, 0, 1};
   const double in[3] = {0.25, 0.25, 0.25}, out[3] = {2, 2, 2}, on[3] = {1, 1, 1};
@@ -142,6 +179,25 @@ TEST(Delaunay3d, IntegerPointsOfOneSphere) {
   for (InsertionOrder order : kOrders) expect_delaunay(xyz, delaunay3d(xyz, order));
   xyz.insert(xyz.end(), {0.0, 0.0, 0.0});
   for (InsertionOrder order : kOrders) expect_delaunay(xyz, delaunay3d(xyz, order));
+}
+
+TEST(Delaunay3d, CentreOfPointsOnASphereEmptiesEveryTet) {
+  // Points on a sphere (up to rounding), then its centre: every tet is in the centre's cavity,
+  // whose boundary has every point on it, more than the kernel's edge table takes (the cavity's
+  // edges are then sorted instead).
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> g;
+  std::vector<double> xyz;
+  for (int k = 0; k < 1500; ++k) {
+    const double x = g(rng), y = g(rng), z = g(rng), r = std::sqrt(x * x + y * y + z * z);
+    xyz.insert(xyz.end(), {x / r, y / r, z / r});
+  }
+  xyz.insert(xyz.end(), {0.0, 0.0, 0.0});
+  const Tetrahedralization tz = delaunay3d(xyz, InsertionOrder::kAsGiven);
+  expect_delaunay(xyz, tz);
+  std::size_t through_centre = 0;
+  for (Id v : tz.tets) through_centre += v == 1500;
+  EXPECT_GT(through_centre, 2000u);  // one tet per hull face: about 2 * 1500
 }
 
 TEST(Delaunay3d, ClusteredPoints) {
