@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <span>
 #include <utility>
 
 #include "mesh/adjacency.hpp"
@@ -32,6 +33,23 @@ FaceKey face_key(const Id* tet, int i) {
 }
 
 bool holds(const FaceKey& k, Id v) { return k.v[0] == v || k.v[1] == v || k.v[2] == v; }
+
+/// The key of face i of tet tv with sub.x replaced by sub.y; false when the face lacks sub.x.
+bool substituted_key(const Id* tv, int i, const Substitution& sub, FaceKey& key) {
+  Id w[3] = {tv[kTetFace[i][0]], tv[kTetFace[i][1]], tv[kTetFace[i][2]]};
+  bool hit = false;
+  for (Id& x : w)
+    if (x == sub.x) x = sub.y, hit = true;
+  if (hit) key = make_key(w[0], w[1], w[2]);
+  return hit;
+}
+
+/// A face holding both vertices of a substitution (a collapsed edge's face) vanishes.
+bool vanishes(const FaceKey& k, std::span<const Substitution> subst) {
+  for (const Substitution& sub : subst)
+    if (holds(k, sub.x) && holds(k, sub.y)) return true;
+  return false;
+}
 
 /// A face of the cavity's boundary: seen from inside, with what lies across it.
 struct CavityFace {
@@ -287,24 +305,16 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
       for (std::size_t c = 0; c < inner.size() && f.cavity == -1; ++c)
         if (inner[c].key.same(f.key)) f.cavity = -2 - static_cast<int>(c), ++inner[c].direct;
       for (const Substitution& sub : subst) {
+        FaceKey key;
         if (f.cavity != -1) break;
-        Id w[3] = {tv[kTetFace[i][0]], tv[kTetFace[i][1]], tv[kTetFace[i][2]]};
-        bool hit = false;
-        for (Id& x : w)
-          if (x == sub.x) x = sub.y, hit = true;
-        if (!hit) continue;
-        const FaceKey key = make_key(w[0], w[1], w[2]);
+        if (!substituted_key(tv, i, sub, key)) continue;
         for (std::size_t c = 0; c < inner.size() && f.cavity == -1; ++c)
           if (inner[c].key.same(key)) f.cavity = -2 - static_cast<int>(c), ++inner[c].direct;
       }
       if (f.cavity != -1) nf[f.partner].cavity = f.cavity;  // (counted once per pair)
     }
-    for (const CavityFace& c : inner) {
-      if (c.direct > 0) continue;
-      bool vanishes = false;
-      for (const Substitution& sub : subst) vanishes |= holds(c.key, sub.x) && holds(c.key, sub.y);
-      if (!vanishes) return false;
-    }
+    for (const CavityFace& c : inner)
+      if (c.direct == 0 && !vanishes(c.key, subst)) return false;
   }
   // The others are faces of the cavity's boundary.
   for (NewFace& f : nf) {
@@ -318,13 +328,8 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
     const Id* tv = tets[f.slot / 4].v;
     const int i = f.slot % 4;
     for (const Substitution& sub : subst) {
-      Id w[3] = {tv[kTetFace[i][0]], tv[kTetFace[i][1]], tv[kTetFace[i][2]]};
-      bool hit = false;
-      for (Id& x : w)
-        if (x == sub.x) x = sub.y, hit = true;
-      if (!hit) continue;
-      const FaceKey key = make_key(w[0], w[1], w[2]);
-      if (key.degenerate()) continue;
+      FaceKey key;
+      if (!substituted_key(tv, i, sub, key) || key.degenerate()) continue;
       for (std::size_t c = 0; c < cf.size(); ++c)
         if (cf[c].key.same(key) && cf[c].key.parity == key.parity && cf[c].outer == kNoId &&
             cf[c].bdy) {
@@ -339,9 +344,7 @@ bool replace_cavity(TetMesh& m, std::span<const Id> cavity, std::span<const NewT
     if (c.direct == 1 && c.substituted == 0) continue;
     if (c.outer != kNoId || c.direct > 0) return false;
     if (c.substituted > 0) continue;
-    bool vanishes = false;
-    for (const Substitution& sub : subst) vanishes |= holds(c.key, sub.x) && holds(c.key, sub.y);
-    if (!vanishes) return false;
+    if (!vanishes(c.key, subst)) return false;
   }
   // Apply: free the cavity, create the new tets, link their faces.
   verts.clear();
