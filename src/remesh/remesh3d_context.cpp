@@ -138,11 +138,16 @@ void Remesh3dContext::find_planes() {
     else
       pl.inner = true;
     for (const Vec3* p : {&a, &b, &c})
-      if (std::abs(dot(pl.n, *p) - pl.d) > tol) pl.planar = false;
+      pl.deviation = std::max(pl.deviation, std::abs(dot(pl.n, *p) - pl.d));
   }
-  // Planar interfaces are remeshed like planar patches; curved ones are kept as given.
-  for (const auto& [ref, pl] : planes_)
+  // Planar interfaces are remeshed like planar patches; curved ones are kept as given. An
+  // interface written with 10 significant digits is off its plane by a few 1e-10 of the
+  // diagonal (taken for curved, it was kept as given): interfaces get 1e-7 of the diagonal.
+  constexpr double kInterfaceFlatness = 1e-7;
+  for (auto& [ref, pl] : planes_) {
+    if (pl.deviation > (pl.outer ? tol : kInterfaceFlatness * norm(hi - lo))) pl.planar = false;
     has_interfaces_ = has_interfaces_ || (pl.inner && !pl.planar);
+  }
 }
 
 const Remesh3dContext::Plane* Remesh3dContext::plane(std::int32_t ref) const {

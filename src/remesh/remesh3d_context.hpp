@@ -81,6 +81,7 @@ class Remesh3dContext {
     bool planar = true;
     bool outer = false;  ///< some face of the ref is on the outer boundary (not an interface)
     bool inner = false;  ///< some face of the ref is an interface (between two tets)
+    double deviation = 0.0;  ///< largest distance of a vertex of the ref to the plane
   };
   void find_planes();
   /// The vertices' kinds; true when it found planar interfaces to keep as given (made

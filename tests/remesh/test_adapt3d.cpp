@@ -470,6 +470,25 @@ TEST(Adapt3d, FineSizesAtAPlanarInterface) {
     EXPECT_EQ(n.find("interfaces between subdomains"), std::string::npos) << n;
 }
 
+// An interface written with 10 significant digits is off its plane by ~1e-10: it was taken for
+// curved and kept as given. Interfaces are planar within 1e-7 of the diagonal.
+TEST(Adapt3d, InterfaceRoundedToTenDigitsIsRemeshed) {
+  Mesh in = two_subdomains(4, true);
+  int k = 0;
+  for (std::size_t v = 0; v < in.num_vertices(); ++v)
+    if (in.coords[3 * v] == 0.5) in.coords[3 * v] += (k++ % 2 ? 1 : -1) * 3e-10;
+  Adapt3dOptions o;
+  o.hgrad = 0.0;
+  const Adapt3dResult r =
+      adapt3d(in, std::vector<SymMat3>(in.num_vertices(), isotropic_metric<3>(0.1)), o);
+  EXPECT_TRUE(check_mesh(r.mesh).valid());
+  const auto faces = [](const Mesh& m) {
+    return std::count(m.tri_ref.begin(), m.tri_ref.end(), 10);
+  };
+  EXPECT_GT(faces(r.mesh), 5 * faces(in));
+  EXPECT_TRUE(r.report.notes.empty());
+}
+
 // Two solids as gmsh writes them: each with its own outer faces (refs 3..6 split at x = 0.5 into
 // r and r + 20) and the interface between them. The line where the interface meets the outer
 // faces lies on three refs; its vertices were fixed (and the interface kept as given). It is a
