@@ -16,13 +16,8 @@ namespace riemesh {
 
 namespace {
 
-using Face = std::array<Id, 3>;
-
-Face sorted(Id a, Id b, Id c) {
-  Face f = {a, b, c};
-  std::sort(f.begin(), f.end());
-  return f;
-}
+using detail::Face;
+using detail::sorted_face;
 
 /// "vertices 3 and 7" (1-based).
 std::string edge_name(Id a, Id b) {
@@ -52,6 +47,18 @@ std::vector<DirectedEdge> directed_edges(const Mesh& s) {
     return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.tri < y.tri;
   });
   return e;
+}
+
+/// The triangles as (sorted vertices, triangle id), sorted: a triangle listed twice is next to
+/// its copy.
+std::vector<std::pair<Face, Id>> faces_by_vertices(const Mesh& s) {
+  std::vector<std::pair<Face, Id>> faces(s.num_triangles());
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    const Id* v = &s.triangles[3 * t];
+    faces[t] = {sorted_face(v[0], v[1], v[2]), static_cast<Id>(t)};
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
 }
 
 void throw_defect(const char* what, std::size_t count, const std::string& first) {
@@ -111,12 +118,7 @@ void require_closed_surface(const Mesh& s) {
     throw_defect("triangles of zero area (collinear vertices)", flat,
                  "triangle " + std::to_string(first_flat + 1));
   // The same three vertices twice: a zero-volume region between the copies.
-  std::vector<std::pair<Face, Id>> faces(s.num_triangles());
-  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
-    const Id* v = &s.triangles[3 * t];
-    faces[t] = {sorted(v[0], v[1], v[2]), static_cast<Id>(t)};
-  }
-  std::sort(faces.begin(), faces.end());
+  const std::vector<std::pair<Face, Id>> faces = faces_by_vertices(s);
   std::size_t twice = 0;
   std::string first_twice;
   for (std::size_t k = 0; k + 1 < faces.size(); ++k)
@@ -188,12 +190,7 @@ void require_closed_surface(const Mesh& s) {
 
 std::optional<Mesh> merge_interfaces_listed_twice(const Mesh& s, std::size_t* merged) {
   *merged = 0;
-  std::vector<std::pair<Face, Id>> faces(s.num_triangles());
-  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
-    const Id* v = &s.triangles[3 * t];
-    faces[t] = {sorted(v[0], v[1], v[2]), static_cast<Id>(t)};
-  }
-  std::sort(faces.begin(), faces.end());
+  const std::vector<std::pair<Face, Id>> faces = faces_by_vertices(s);
   // Same vertex set: opposite orientations when the second's vertex after the first's v[0] is
   // the first's v[2].
   const auto opposite = [&](Id a, Id b) {
@@ -253,7 +250,7 @@ SurfaceDelaunay delaunay_of_surface(const Mesh& s) {
     const Id* v = &d.tz.tets[4 * t];
     for (int i = 0; i < 4; ++i) {
       for (int j = i + 1; j < 4; ++j) tet_edges.push_back(std::minmax(v[i], v[j]));
-      tet_faces.push_back(sorted(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]));
+      tet_faces.push_back(sorted_face(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]));
     }
   }
   std::sort(tet_edges.begin(), tet_edges.end());
@@ -264,7 +261,8 @@ SurfaceDelaunay delaunay_of_surface(const Mesh& s) {
     const Id a = old2new[static_cast<std::size_t>(v[0])], b = old2new[static_cast<std::size_t>(v[1])],
              c = old2new[static_cast<std::size_t>(v[2])];
     ++d.num_faces;
-    if (!std::binary_search(tet_faces.begin(), tet_faces.end(), sorted(a, b, c))) ++d.missing_faces;
+    if (!std::binary_search(tet_faces.begin(), tet_faces.end(), sorted_face(a, b, c)))
+      ++d.missing_faces;
     surface_edges.push_back(std::minmax(a, b));
     surface_edges.push_back(std::minmax(b, c));
     surface_edges.push_back(std::minmax(c, a));

@@ -13,13 +13,8 @@ namespace riemesh {
 
 namespace {
 
-using Face = std::array<Id, 3>;
-
-Face sorted(Id a, Id b, Id c) {
-  Face f = {a, b, c};
-  std::sort(f.begin(), f.end());
-  return f;
-}
+using detail::Face;
+using detail::sorted_face;
 
 /// Face i of a positive tet, oriented with its normal away from the tet.
 constexpr int kOutward[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
@@ -34,14 +29,14 @@ std::string place(const double* p) {
 std::vector<Id> surface_faces(const Tetrahedralization& tz, std::span<const Id> triangles) {
   std::vector<std::pair<Face, Id>> faces(triangles.size() / 3);
   for (std::size_t k = 0; k < faces.size(); ++k)
-    faces[k] = {sorted(triangles[3 * k], triangles[3 * k + 1], triangles[3 * k + 2]),
+    faces[k] = {sorted_face(triangles[3 * k], triangles[3 * k + 1], triangles[3 * k + 2]),
                 static_cast<Id>(k)};
   std::sort(faces.begin(), faces.end());
   std::vector<Id> out(tz.tets.size(), kNoId);
   for (std::size_t t = 0; t < tz.num_tets(); ++t) {
     const Id* v = &tz.tets[4 * t];
     for (int i = 0; i < 4; ++i) {
-      const Face f = sorted(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]);
+      const Face f = sorted_face(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]);
       const auto it = std::lower_bound(faces.begin(), faces.end(), std::pair<Face, Id>{f, -1});
       if (it != faces.end() && it->first == f)
         out[4 * t + static_cast<std::size_t>(i)] = it->second;
@@ -198,7 +193,7 @@ void require_no_pinch(const Mesh& volume) {
   for (std::size_t t = 0; t < nt; ++t) {
     const Id* v = &volume.tets[4 * t];
     for (std::size_t i = 0; i < 4; ++i)
-      faces[4 * t + i] = {sorted(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]), 4 * t + i};
+      faces[4 * t + i] = {sorted_face(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]), 4 * t + i};
   }
   std::sort(faces.begin(), faces.end());
   std::vector<std::size_t> parent(4 * nt);

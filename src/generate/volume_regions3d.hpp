@@ -12,6 +12,8 @@
 // listed once (a wall across a box, two solids sharing a face) separates two regions whatever its
 // orientation. Each meshed region gets its own tet ref 1, 2, ..., numbered in the order of the
 // first surface triangle around it. Same conventions as the planar domains (domain2d.hpp).
+#include <algorithm>
+#include <array>
 #include <span>
 #include <vector>
 
@@ -19,6 +21,16 @@
 #include "mesh/mesh.hpp"
 
 namespace riemesh {
+
+namespace detail {
+/// A triangle as its sorted vertex ids (faces of tets and surfaces compared as sets).
+using Face = std::array<Id, 3>;
+inline Face sorted_face(Id a, Id b, Id c) {
+  Face f = {a, b, c};
+  std::sort(f.begin(), f.end());
+  return f;
+}
+}  // namespace detail
 
 struct TetRegions {
   std::vector<int> ref;  ///< per tet: 0 outside or in a hole, else its region's ref

@@ -41,21 +41,6 @@ double split_fraction(double la, double lb) {
   return std::log(1.0 + f * (q - 1.0)) / std::log(q);
 }
 
-/// The refs of the listed faces holding edge (a, b) of the shell; false for an interface face
-/// or more than two of them.
-bool edge_face_refs(const TetMesh& m, const std::vector<Id>& shell, Id a, Id b,
-                    std::int32_t* refs, int& n) {
-  n = 0;
-  for (const Id t : shell)
-    for (int i = 0; i < 4; ++i) {
-      const Id v = m.tv[4 * t + i], s = 4 * t + i;
-      if (v == a || v == b || !m.fbdy[s]) continue;
-      if (m.tadj[s] != kNoId || n == 2) return false;
-      refs[n++] = m.face_ref(s);
-    }
-  return true;
-}
-
 /// The listed faces holding edge (a, b) of the shell, an interface face once: their refs in
 /// refs[0..n) (at most 4; false beyond) and whether one is an interface.
 bool edge_faces(const TetMesh& m, const std::vector<Id>& shell, Id a, Id b, std::int32_t* refs,
@@ -107,9 +92,12 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
     const Id a = input.edges[2 * e], b = input.edges[2 * e + 1];
     if (!mesh_.vert_alive(a) || !mesh_.vert_alive(b)) continue;
     collect_shell(mesh_, a, b, shell);
-    std::int32_t refs[2];
+    std::int32_t refs[4];
     int n = 0;
-    if (!edge_face_refs(mesh_, shell, a, b, refs, n) || n != 2 || refs[0] == refs[1]) continue;
+    bool interface = false;
+    if (!edge_faces(mesh_, shell, a, b, refs, n, interface) || interface || n != 2 ||
+        refs[0] == refs[1])
+      continue;
     edge_refs_.insert(edge_refs_.end(), {std::min(refs[0], refs[1]), std::max(refs[0], refs[1]),
                                          input.edge_ref.empty() ? 0 : input.edge_ref[e]});
   }
