@@ -83,9 +83,9 @@ void finish(const MeshArgs& a, const Mesh2dResult& r) {
 /// A .geo geometry: its curves meshed to the sizes (--hsiz, the points' lc, curvature within
 /// --hausd), then the domain they bound, its boundary kept, sizes inside from the boundary's.
 void mesh_geometry(MeshArgs& a) {
-  if (!a.metric.empty() || !a.holes.empty())
+  if (!a.metric.empty() || !a.holes.empty() || a.opt.no_holes)
     throw InputError(a.input +
-                     ": --metric and --hole apply to a domain .mesh; a .geo is sized "
+                     ": --metric, --hole and --no-holes apply to a domain .mesh; a .geo is sized "
                      "by --hsiz, its points' lc and --hausd, and its holes are its Plane "
                      "Surfaces' inner Curve Loops");
   const Geometry2d geometry = read_geo(a.input);
@@ -138,6 +138,8 @@ void run(MeshArgs& a) {
   if (a.hsiz_given->count() > 0) require_size_option("--hsiz", a.opt.hsiz);
   if (a.opt.hsiz > 0.0 && !a.metric.empty())
     throw InputError("--hsiz and --metric contradict: give one of them");
+  if (a.opt.no_holes && !a.holes.empty())
+    throw InputError("--hole and --no-holes contradict: give one of them");
   std::vector<double> holes3;  // X,Y,Z points, for surfaces
   for (const std::string& h : a.holes) {
     const std::vector<double> xy = parse_numbers(h, "--hole");
@@ -180,6 +182,7 @@ void run(MeshArgs& a) {
     f.passes = a.opt.adapt.max_passes;
     f.keep_triangles = a.keep_triangles;
     f.holes = holes3;
+    f.no_holes = a.opt.no_holes;
     if (a.hgrad->count() > 0) f.hgrad = a.opt.adapt.hgrad;
     f.quiet = a.quiet;
     f.verbosity = a.verbosity;
@@ -254,6 +257,9 @@ void register_mesh(CLI::App& app) {
   cmd->add_option("--hole", a->holes,
                   "A point X,Y (planar domain) or X,Y,Z (surface) inside a hole (repeatable); "
                   "when given, hole points alone decide which regions are holes");
+  cmd->add_flag("--no-holes", a->opt.no_holes,
+                "Mesh every region, whatever the orientation of its boundary (no holes; "
+                "contradicts --hole)");
   cmd->add_flag("--nofill", a->nofill,
                 "Surfaces: keep the tetrahedra of the boundary points only (no interior points)");
   cmd->add_flag("--keep-triangles", a->keep_triangles,
@@ -281,11 +287,11 @@ void register_mesh(CLI::App& app) {
                   "Verbosity (1: per-pass operator counts, lengths and mean quality)");
   cmd->footer(
       "Regions between edges get triangle refs 1, 2, ... (in the order of their first edge); a "
-      "region whose edges all leave it on their right is a hole unless --hole points are given. "
-      "Surfaces: regions between the triangles (an interface listed once separates two) get "
-      "tet refs 1, 2, ... (in the order of their first triangle); an enclosed shell oriented "
-      "against the one around it is a hole (a cavity), oriented alike a solid of its own, unless "
-      "--hole points are given.");
+      "region whose edges all leave it on their right is a hole unless --hole points or "
+      "--no-holes are given. Surfaces: regions between the triangles (an interface listed once "
+      "separates two) get tet refs 1, 2, ... (in the order of their first triangle); an enclosed "
+      "shell oriented against the one around it is a hole (a cavity), oriented alike a solid of "
+      "its own, unless --hole points or --no-holes are given.");
   cmd->callback([a] { run(*a); });
 }
 

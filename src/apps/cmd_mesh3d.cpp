@@ -35,6 +35,10 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
   Mesh out;
   double q_min = 0.0;
   std::size_t field_points = 0;
+  BoundaryRecoveryOptions recovery;
+  recovery.keep_triangles = args.keep_triangles;
+  recovery.hole_points = args.holes;
+  recovery.no_holes = args.no_holes;
   try {
     if (args.fill) {
       Adapt3dOptions o;
@@ -48,15 +52,12 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
             if (!args.quiet) print_pass(p, args.verbosity, "tetrahedra", "fill ");
             q_min = p.q_min;
           },
-          args.keep_triangles, args.holes);
+          recovery);
       s = filled.stats;
       field_points = filled.field_points;
       out = std::move(filled.adapted.mesh);
     } else {
-      BoundaryRecoveryOptions ro;
-      ro.keep_triangles = args.keep_triangles;
-      ro.hole_points = args.holes;
-      RecoveredVolume r = recover_volume(surface, ro);
+      RecoveredVolume r = recover_volume(surface, recovery);
       s = r.stats;
       out = std::move(r.volume);
     }
@@ -108,9 +109,15 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
                 s.steiner(), s.steiner_on_edges, s.steiner_in_faces, s.steiner_inside,
                 s.surface_vertices);
     if (args.fill) std::printf(" and %zu field points", field_points);
-    std::printf(": %zu tetrahedra, %zu faces and %zu edges missing, recovered in %zu rounds",
-                s.delaunay_tets, s.missing_faces, s.missing_edges, s.rounds);
+    std::printf(": %zu tetrahedra, %zu faces and %zu edges missing, recovered in %zu round%s",
+                s.delaunay_tets, s.missing_faces, s.missing_edges, s.rounds,
+                s.rounds == 1 ? "" : "s");
     if (s.flips > 0) std::printf(" (%zu edges by flips of cocircular quads)", s.flips);
+    if (s.steiner_for_flat_tets > 0)
+      std::printf(
+          "; %zu Steiner point%s split near-flat tetrahedra between nearly cocircular "
+          "surface points inside the volume",
+          s.steiner_for_flat_tets, s.steiner_for_flat_tets == 1 ? "" : "s");
     if (s.planar_patches > 0)
       std::printf(
           "; %zu planar patch%s of %zu triangles re-triangulated with Delaunay faces "

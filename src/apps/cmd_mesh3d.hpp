@@ -19,6 +19,7 @@ struct VolumeFillArgs {
   int passes = 15;  ///< largest number of the fill's optimisation passes (--passes)
   bool keep_triangles = false;  ///< --keep-triangles: planar patches not re-triangulated
   std::vector<double> holes;    ///< --hole points (x, y, z each): these regions left empty
+  bool no_holes = false;        ///< --no-holes: every enclosed region a solid of its own
   bool quiet = false;
   int verbosity = 0;  ///< 1: per-pass statistics of the fill
 };

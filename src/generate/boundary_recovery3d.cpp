@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -114,6 +115,7 @@ class Recovery {
   std::vector<Id> vertices_;    // surface vertex of each input point
   std::size_t interior_ = 0;    // interior points, after the surface's (coords_, info_)
   std::vector<double> hole_points_;
+  bool no_holes_ = false;
   std::vector<double> coords_;  // all points, input then Steiner
   std::vector<PointInfo> info_;
   std::vector<InputEdge> edges_;
@@ -124,6 +126,9 @@ class Recovery {
   std::size_t cap_ = 0;
   double max_steiner_per_vertex_ = 0.0;
   bool refine_flat_ = true;
+  // The Steiner count when near-flat tets were first refined (the points from then on serve them).
+  static constexpr std::size_t kNoFlat = std::numeric_limits<std::size_t>::max();
+  std::size_t flat_from_ = kNoFlat;
   std::optional<Delaunay3d> kernel_;
   std::optional<Tetrahedralization> first_tz_;  // the constructor's, until run()'s first round
   std::optional<TetSkeleton> first_skeleton_;
@@ -178,7 +183,10 @@ Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surf
   interior_ = options.interior_points.size() / 3;
   if (options.hole_points.size() % 3 != 0)
     throw InputError("hole points: 3 coordinates per point expected");
+  if (options.no_holes && !options.hole_points.empty())
+    throw InputError("hole points and no holes contradict");
   hole_points_ = options.hole_points;
+  no_holes_ = options.no_holes;
   info_.assign(nv + interior_, PointInfo{Kind::kInterior});
   stats_.surface_vertices = nv;
   max_steiner_per_vertex_ = options.max_steiner_per_vertex;
@@ -587,7 +595,7 @@ Mesh Recovery::volume(const Tetrahedralization& tz) const {
   d.coords = coords_;
   d.tz = tz;
   d.num_faces = refined.num_triangles();
-  return volume_inside(refined, d, hole_points_);
+  return volume_inside(refined, d, hole_points_, no_holes_);
 }
 
 /// Every interior point must be a vertex of an inside tet (else it was outside or on the surface).
@@ -724,10 +732,13 @@ RecoveredVolume Recovery::run() {
     }
     if (missing_faces.empty()) {
       Mesh v = volume(tz);
+      const std::size_t before = stats_.steiner();
       if (!refine_flat_ || !refine_flat_tets(v)) {
         require_interior_used(v);
+        if (flat_from_ != kNoFlat) stats_.steiner_for_flat_tets = stats_.steiner() - flat_from_;
         return {std::move(v), stats_};
       }
+      if (flat_from_ == kNoFlat) flat_from_ = before;
       continue;
     }
     for (const auto& [f, s] : missing_faces) {

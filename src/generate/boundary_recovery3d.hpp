@@ -55,6 +55,8 @@ struct BoundaryRecoveryOptions {
   /// Points (x, y, z each) inside regions to leave empty; when given they alone decide which
   /// regions are holes, otherwise the orientation of enclosed shells does (volume_regions3d.hpp).
   std::vector<double> hole_points;
+  /// No region is a hole, whatever the orientation of its shell (hole_points must be empty).
+  bool no_holes = false;
 };
 
 struct BoundaryRecoveryStats {
@@ -66,6 +68,10 @@ struct BoundaryRecoveryStats {
   std::size_t steiner_in_faces = 0;  // Steiner points inside input triangles
   std::size_t steiner_inside = 0;    // Steiner points inside the volume (always 0 here)
   std::size_t rounds = 0;            // recovery rounds (one tetrahedralisation scan each)
+  /// Steiner points (of those above) added once nothing was missing, to break up near-flat
+  /// inside tets (refine_flat: four nearly cocircular points of an interface or of a surface's
+  /// concave part), with those that recovered the pieces they split.
+  std::size_t steiner_for_flat_tets = 0;
   std::size_t flips = 0;  // missing edges recovered by a flip (cocircular quads: no Steiner point)
   std::size_t planar_patches = 0;   // planar patches re-triangulated (planar_patches3d.hpp)
   std::size_t patch_triangles = 0;  // input triangles they held

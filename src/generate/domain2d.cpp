@@ -188,7 +188,7 @@ std::vector<std::uint8_t> holes_from_points(const Triangulation2d& t, const std:
 }  // namespace
 
 Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_points,
-                              InsertionOrder order) {
+                              InsertionOrder order, bool no_holes) {
   if (in.dim != 2) throw InputError("meshing a domain needs a planar boundary (Dimension 2)");
   if (in.edges.empty())
     throw InputError(in.triangles.empty()
@@ -220,7 +220,7 @@ Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_point
   std::vector<std::uint8_t> hole(nregions, 0);
   if (!hole_points.empty())
     hole = holes_from_points(t, region, nregions, outside, on_constraint, hole_points);
-  else
+  else if (!no_holes)
     for (int r = 0; r < nregions; ++r) hole[r] = !left[r];
 
   // Kept regions, numbered by their first edge.

@@ -159,7 +159,7 @@ void sort_triangles_by_vertex(Mesh& m) {
 /// The vertices keep the lattice's row order; the coordinates are those of the points as given,
 /// not mapped back and forth.
 Domain2d with_lattice(const Mesh& boundary, Domain2d bare, const SymMat2 m,
-                      std::span<const double> holes, std::vector<SymMat2>& given,
+                      std::span<const double> holes, bool no_holes, std::vector<SymMat2>& given,
                       std::size_t* count) {
   const std::vector<double> points = lattice_points2d(bare.mesh, m, kLatticeClearance);
   *count = points.size() / 2;
@@ -194,7 +194,7 @@ Domain2d with_lattice(const Mesh& boundary, Domain2d bare, const SymMat2 m,
     map.to_unit(&holes[2 * k], &unit_holes[2 * k]);
   // Inserted along the Hilbert curve (the rows' order costs 3.4 times as many instructions:
   // each new row meets the long triangles from the last one to the far boundary).
-  Domain2d d = triangulate_domain2d(unit, unit_holes, InsertionOrder::kHilbert);
+  Domain2d d = triangulate_domain2d(unit, unit_holes, InsertionOrder::kHilbert, no_holes);
   for (std::size_t v = 0; v < d.mesh.num_vertices(); ++v) {
     const auto w = static_cast<std::size_t>(d.input_vertex[v]);
     const double* x = w < n0 ? &boundary.coords[2 * w] : &points[2 * (w - n0)];
@@ -211,6 +211,7 @@ void Mesh2dOptions::validate() const {
   if (hsiz < 0.0 || !std::isfinite(hsiz)) throw InputError("hsiz must be a positive size");
   if (hsiz > 0.0 && !metric.empty()) throw InputError("a metric and hsiz contradict: give one");
   if (holes.size() % 2 != 0) throw InputError("hole points need two coordinates each");
+  if (no_holes && !holes.empty()) throw InputError("hole points and no holes contradict");
   adapt.validate();
 }
 
@@ -279,7 +280,8 @@ Mesh2dResult mesh_domain2d_impl(const Mesh& boundary, const Mesh2dOptions& optio
     given = hausd_sizes(boundary, options.adapt);
   // The boundary as given is checked first (open loops, crossing or zero-length edges, hole
   // points): cut first, two crossing edges would meet at a shared new vertex.
-  Domain2d domain = triangulate_domain2d(boundary, options.holes);
+  Domain2d domain =
+      triangulate_domain2d(boundary, options.holes, InsertionOrder::kBrio, options.no_holes);
   // Every input vertex left lies on a boundary edge unless it was an isolated point inside.
   const auto sizes = [&](const Domain2d& d) {
     std::vector<SymMat2> out;
@@ -308,7 +310,7 @@ Mesh2dResult mesh_domain2d_impl(const Mesh& boundary, const Mesh2dOptions& optio
     // smooth curve through a vertex that turns less than --angle, bulging across a sharp spike
     // next to it), in edges of the cut boundary the user never saw.
     try {
-      domain = triangulate_domain2d(cut, options.holes);
+      domain = triangulate_domain2d(cut, options.holes, InsertionOrder::kBrio, options.no_holes);
     } catch (const InputError& e) {
       throw CutBoundaryCrosses(e.what());
     }
@@ -316,7 +318,7 @@ Mesh2dResult mesh_domain2d_impl(const Mesh& boundary, const Mesh2dOptions& optio
   if (constant) {  // (the cut's metrics too: interpolating equal metrics is exact)
     const SymMat2 m = given.front();
     domain = with_lattice(cut.edges.empty() ? boundary : cut, std::move(domain), m, options.holes,
-                          given, &lattice_points);
+                          options.no_holes, given, &lattice_points);
   }
   if (!cut.edges.empty() || constant) metrics = sizes(domain);
   Mesh& start = domain.mesh;

@@ -22,6 +22,7 @@ struct Mesh2dOptions {
   double hsiz = 0.0;             ///< uniform size (0: none)
   std::vector<SymMat2> metric;   ///< one metric per vertex of the boundary mesh (empty: none)
   std::vector<double> holes;     ///< hole points, 2 doubles each (empty: orientation decides)
+  bool no_holes = false;         ///< no region is a hole, whatever the orientation (no holes then)
   /// Keep the boundary vertices and edges exactly as given (required); false: the boundary
   /// curves are remeshed to the size field by adapt2d (within hausd of their reconstruction).
   bool keep_boundary = true;

@@ -275,7 +275,8 @@ SurfaceDelaunay delaunay_of_surface(const Mesh& s) {
   return d;
 }
 
-Mesh volume_inside(const Mesh& s, const SurfaceDelaunay& d, std::span<const double> hole_points) {
+Mesh volume_inside(const Mesh& s, const SurfaceDelaunay& d, std::span<const double> hole_points,
+                   bool no_holes) {
   if (!d.conforming()) throw Error("volume_inside: the surface is not in the tetrahedralisation");
   std::vector<Id> old2new(s.num_vertices(), kNoId);
   for (std::size_t k = 0; k < d.vertices.size(); ++k)
@@ -283,7 +284,7 @@ Mesh volume_inside(const Mesh& s, const SurfaceDelaunay& d, std::span<const doub
   std::vector<Id> local(s.triangles.size());
   for (std::size_t k = 0; k < local.size(); ++k)
     local[k] = old2new[static_cast<std::size_t>(s.triangles[k])];
-  const std::vector<int> ref = tet_regions(d.tz, local, d.coords, hole_points).ref;
+  const std::vector<int> ref = tet_regions(d.tz, local, d.coords, hole_points, no_holes).ref;
   Mesh out;
   out.dim = 3;
   out.coords = d.coords;

@@ -54,6 +54,6 @@ SurfaceDelaunay delaunay_of_surface(const Mesh& surface);
 /// in d.vertices. Error if d is not conforming; InputError for a bad hole point or solids that
 /// touch along an edge or at a point (require_no_pinch).
 Mesh volume_inside(const Mesh& surface, const SurfaceDelaunay& d,
-                   std::span<const double> hole_points = {});
+                   std::span<const double> hole_points = {}, bool no_holes = false);
 
 }  // namespace riemesh

@@ -242,16 +242,14 @@ Adapt3dResult fill_volume(Mesh&& volume, double hsiz, Adapt3dOptions options,
 }
 
 FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions options,
-                         const PassCallback& on_pass, bool keep_triangles,
-                         std::span<const double> hole_points) {
+                         const PassCallback& on_pass, const BoundaryRecoveryOptions& recovery) {
   if (!(hsiz >= 0.0) || !std::isfinite(hsiz))
     throw InputError("the size must be finite and >= 0 (0: from the boundary edges)");
   options.validate();
   // Near-flat tets are left to fill_volume's sliver sweeps (BoundaryRecoveryOptions::refine_flat).
-  BoundaryRecoveryOptions ro;
+  BoundaryRecoveryOptions ro = recovery;
   ro.refine_flat = false;
-  ro.keep_triangles = keep_triangles;
-  ro.hole_points.assign(hole_points.begin(), hole_points.end());
+  ro.interior_points.clear();
   RecoveredVolume first = recover_volume(surface, ro);
   // Sizes clipped to [hmin, hmax] (the field points follow them too).
   const auto sizes_of = [&](const Mesh& v) {

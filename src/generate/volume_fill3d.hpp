@@ -49,10 +49,10 @@ struct FilledVolume {
   BoundaryRecoveryStats stats;     ///< of the final recovery (with the field points)
   std::size_t field_points = 0;
 };
-/// keep_triangles: BoundaryRecoveryOptions::keep_triangles (planar patches not re-triangulated);
-/// hole_points: BoundaryRecoveryOptions::hole_points (regions left empty).
+/// recovery: keep_triangles and the holes (hole_points, no_holes) of BoundaryRecoveryOptions; its
+/// refine_flat and interior_points are mesh_volume's own.
 FilledVolume mesh_volume(const Mesh& surface, double hsiz, Adapt3dOptions options,
-                         const PassCallback& on_pass = {}, bool keep_triangles = false,
-                         std::span<const double> hole_points = {});
+                         const PassCallback& on_pass = {},
+                         const BoundaryRecoveryOptions& recovery = {});
 
 }  // namespace riemesh

@@ -76,7 +76,8 @@ Id locate(const Tetrahedralization& tz, std::span<const double> coords,
 }  // namespace
 
 TetRegions tet_regions(const Tetrahedralization& tz, std::span<const Id> triangles,
-                       std::span<const double> coords, std::span<const double> hole_points) {
+                       std::span<const double> coords, std::span<const double> hole_points,
+                       bool no_holes) {
   const std::size_t nt = tz.num_tets();
   const std::vector<Id> on_face = surface_faces(tz, triangles);
   // Regions: flooding through the faces that are no surface triangle.
@@ -163,7 +164,7 @@ TetRegions tet_regions(const Tetrahedralization& tz, std::span<const Id> triangl
                          "bound no volume");
       }
     }
-  } else {
+  } else if (!no_holes) {
     for (std::size_t r = 0; r < rc; ++r)
       hole[r] = !outside[r] && !by_outside[r] && (outward ? away[r] == 0 : toward[r] == 0);
   }

@@ -5,7 +5,8 @@
 // Regions are the sets of tets joined through faces that are no surface triangle. The outside is
 // made of the regions reached from beyond the convex hull without crossing the surface; a region
 // next to the outside is always meshed. Hole points, when given, alone decide which of the
-// regions enclosed by others are holes. Otherwise an enclosed region is a hole when every surface
+// regions enclosed by others are holes; with no_holes none is. Otherwise an enclosed region is a
+// hole when every surface
 // triangle around it faces into it the way the outer boundary faces the outside (a cavity: its
 // shell oriented against the shell around it), and a solid of its own otherwise: nested shells
 // oriented alike (a sphere inside a box, as gmsh writes it) give two regions, and an interface
@@ -40,11 +41,12 @@ struct TetRegions {
 
 /// The regions of `tz` (a tetrahedralisation holding every triangle of `triangles`, 3 point ids
 /// each, as tet faces) and which are meshed. coords: the points (3 doubles each), read only to
-/// locate hole points (3 doubles each). InputError when a hole point is outside every region or
-/// on the surface, or when no region is left.
+/// locate hole points (3 doubles each); no_holes: every region not outside is meshed (hole_points
+/// must be empty). InputError when a hole point is outside every region or on the surface, or
+/// when no region is left.
 TetRegions tet_regions(const Tetrahedralization& tz, std::span<const Id> triangles,
                        std::span<const double> coords = {},
-                       std::span<const double> hole_points = {});
+                       std::span<const double> hole_points = {}, bool no_holes = false);
 
 /// InputError when the tets of `volume` around a vertex are not joined through faces (two solids
 /// touching along an edge or at a point: no manifold, which the optimiser's walks need), naming

@@ -38,6 +38,10 @@ domain "$TMP/sub.mesh" ccw
   [ "$(refs_of "$TMP/sub-out.mesh")" = 2 ] && ok "ccw-inner-loop-is-a-subdomain" || ko "ccw-inner-loop-is-a-subdomain"
 "$R" mesh "$TMP/sub.mesh" -o "$TMP/sub-hole.mesh" --hsiz 0.3 --hole 1.5,1.5 -q | grep -q "1 region, 1 hole" &&
   ok "hole-point" || ko "hole-point"
+# --no-holes: the clockwise loop bounds a subdomain too; with --hole it contradicts.
+"$R" mesh "$TMP/hole.mesh" -o "$TMP/hole-solid.mesh" --hsiz 0.3 --no-holes -q | grep -q "2 regions, 0 holes" &&
+  ok "no-holes" || ko "no-holes"
+expect_error_matching no-holes-with-hole "--hole and --no-holes contradict" mesh "$TMP/hole.mesh" -o "$TMP/x.mesh" --no-holes --hole 1.5,1.5
 # A hole point on a boundary vertex or edge belongs to no region (the first triangle found chose).
 expect_error_matching hole-point-on-vertex "hole point (1, 1) lies on the boundary" mesh "$TMP/sub.mesh" -o "$TMP/x.mesh" --hsiz 0.3 --hole 1,1
 expect_error_matching hole-point-on-edge "hole point (1.5, 1) lies on the boundary" mesh "$TMP/sub.mesh" -o "$TMP/x.mesh" --hsiz 0.3 --hole 1.5,1

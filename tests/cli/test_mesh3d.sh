@@ -122,6 +122,24 @@ vols=$(ref_volumes "$TMP/cavity_in_vol.mesh")
 "$R" mesh "$TMP/solid_in.mesh" -o "$TMP/solid_hole.mesh" -q --hole 0.5,0.5,0.5 &&
   [ "$(ref_volumes "$TMP/solid_hole.mesh")" = "1:0.936000" ] && ok mesh3d-hole-point ||
   ko "mesh3d-hole-point: $(ref_volumes "$TMP/solid_hole.mesh")"
+# --no-holes: the cavity (inner shell reversed) is meshed as a solid of its own; with --hole it
+# contradicts.
+out=$("$R" mesh "$TMP/cavity_in.mesh" -o "$TMP/cavity_solid.mesh" --nofill --no-holes 2>&1); code=$?
+[ $code -eq 0 ] && [ "$(ref_volumes "$TMP/cavity_solid.mesh")" = "1:0.936000 2:0.064000" ] &&
+  [[ "$out" == *"; 2 regions (tet refs 1-2)" ]] && ok mesh3d-no-holes ||
+  ko "mesh3d-no-holes: $code $out $(ref_volumes "$TMP/cavity_solid.mesh")"
+expect_error_matching mesh3d-no-holes-with-hole "--hole and --no-holes contradict" \
+  mesh "$TMP/cavity_in.mesh" -o "$TMP/y.mesh" --no-holes --hole 0.5,0.5,0.5
+# gmsh's two boxes (tests/data/two_boxes_gmsh.mesh), --nofill: nothing is missing, but nearly
+# cocircular quads of the shared face (inside the volume) leave flat tets that Steiner points
+# break up; the summary said "0 faces and 0 edges missing" with no word on them.
+out=$("$R" mesh "$(dirname "$0")/../data/two_boxes_gmsh.mesh" -o "$TMP/two_gmsh.mesh" --nofill 2>&1)
+if [[ "$out" =~ \ ([1-9][0-9]*)\ Steiner\ points\ .*\ 0\ faces\ and\ 0\ edges\ missing.*\;\ ([0-9]+)\ Steiner\ points\ split\ near-flat ]] &&
+   [ "${BASH_REMATCH[1]}" = "${BASH_REMATCH[2]}" ] && "$R" check "$TMP/two_gmsh.mesh" >/dev/null; then
+  ok mesh3d-nofill-flat-steiner-named
+else
+  ko "mesh3d-nofill-flat-steiner-named: $out"
+fi
 expect_error_matching mesh3d-hole-outside "hole point (2, 0.5, 0.5) is outside the volume" \
   mesh "$TMP/solid_in.mesh" -o "$TMP/y.mesh" --hole 2,0.5,0.5
 expect_error_matching mesh3d-hole-2d-point "--hole takes X,Y,Z points for a surface" \

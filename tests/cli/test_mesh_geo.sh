@@ -53,6 +53,7 @@ fi
 
 # Options that do not apply, and bad geometries: one line naming file and line, no output.
 expect_error geo-metric mesh "$GEO/square_hole.geo" -o "$TMP/o1.mesh" --metric "$TMP/none.sol"
+expect_error_matching geo-no-holes "--metric, --hole and --no-holes apply to a domain .mesh" mesh "$GEO/square_hole.geo" -o "$TMP/o1.mesh" --no-holes
 printf 'Point(1) = {0, 0, 0};\nPoint(2) = {1, 0, 0};\nLine(1) = {1, 2};\nExtrude {0, 1, 0} { Curve{1}; }\n' >"$TMP/extrude.geo"
 expect_error geo-unsupported mesh "$TMP/extrude.geo" -o "$TMP/o2.mesh"
 "$R" mesh "$TMP/extrude.geo" -o "$TMP/o2.mesh" 2>&1 | grep -q "extrude.geo:4: 'Extrude' is not supported" &&

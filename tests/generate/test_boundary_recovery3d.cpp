@@ -373,4 +373,29 @@ TEST(BoundaryRecovery3d, InterfaceListedTwiceIsTakenOnce) {
 }
 
 }  // namespace
+TEST(BoundaryRecovery3d, SteinerPointsForFlatTetsAreCounted) {
+  // gmsh's surface of two unit boxes sharing the face x = 1 (tests/data/two_boxes_gmsh.geo):
+  // every triangle is a face of the Delaunay tetrahedralisation of its vertices, but the shared
+  // face, inside the volume, holds nearly cocircular quads whose flat tets the recovery breaks up
+  // with Steiner points. They were reported with "0 faces and 0 edges missing" and no reason:
+  // each one is counted as such now.
+  const Mesh s = read_mesh(std::string(RIEMESH_TEST_DATA) + "/two_boxes_gmsh.mesh");
+  const RecoveredVolume r = recover_volume(s);
+  EXPECT_EQ(r.stats.missing_faces, 0u);
+  EXPECT_EQ(r.stats.missing_edges, 0u);
+  EXPECT_GT(r.stats.steiner(), 0u);
+  EXPECT_EQ(r.stats.steiner_for_flat_tets, r.stats.steiner());
+  EXPECT_TRUE(check_mesh(r.volume).valid());
+  // Left to the optimiser: none.
+  BoundaryRecoveryOptions keep_flat;
+  keep_flat.refine_flat = false;
+  const RecoveredVolume k = recover_volume(s, keep_flat);
+  EXPECT_EQ(k.stats.steiner(), 0u);
+  EXPECT_EQ(k.stats.steiner_for_flat_tets, 0u);
+  // A surface whose triangles are missing: Steiner points for them, none counted for flat tets.
+  const RecoveredVolume b = recover_volume(schonhardt());
+  EXPECT_GT(b.stats.steiner(), 0u);
+  EXPECT_EQ(b.stats.steiner_for_flat_tets, 0u);
+}
+
 }  // namespace riemesh

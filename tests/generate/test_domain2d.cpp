@@ -113,6 +113,13 @@ TEST(Domain2d, SquareWithClockwiseHole) {
   EXPECT_DOUBLE_EQ(a.at(1), 15.0);
   EXPECT_EQ(d.mesh.num_edges(), 8u);
   expect_conforming_cdt(d.mesh);
+  // No holes: the clockwise loop bounds a subdomain of its own.
+  const Domain2d n = triangulate_domain2d(m, {}, InsertionOrder::kBrio, true);
+  EXPECT_EQ(n.regions, 2);
+  EXPECT_EQ(n.holes, 0);
+  const auto b = areas(n.mesh);
+  EXPECT_DOUBLE_EQ(b.at(1), 15.0);
+  EXPECT_DOUBLE_EQ(b.at(2), 1.0);
 }
 
 TEST(Domain2d, CounterClockwiseInnerLoopIsASubdomain) {

@@ -77,6 +77,20 @@ TEST(SurfaceDelaunay3d, ConvexIcosphereIsFilled) {
   EXPECT_LT(volume(v), 4.0 / 3 * M_PI);
 }
 
+/// Volume of the tets with ref `ref`.
+double region_volume(const Mesh& v, int ref) {
+  Mesh part = v;
+  part.tets.clear();
+  part.tet_ref.clear();
+  for (std::size_t t = 0; t < v.num_tets(); ++t)
+    if (v.tet_ref[t] == ref) {
+      part.tets.insert(part.tets.end(), v.tets.begin() + static_cast<std::ptrdiff_t>(4 * t),
+                       v.tets.begin() + static_cast<std::ptrdiff_t>(4 * t + 4));
+      part.tet_ref.push_back(ref);
+    }
+  return volume(part);
+}
+
 TEST(SurfaceDelaunay3d, NestedShellsKeepTheSpaceBetweenThem) {
   // An outer tetrahedron of side 10 and an inner one of side 1, inward: the volume between.
   Mesh s;
@@ -94,20 +108,15 @@ TEST(SurfaceDelaunay3d, NestedShellsKeepTheSpaceBetweenThem) {
   for (std::size_t k = 0; k < r.triangles.size(); k += 3)
     std::swap(r.triangles[k + 1], r.triangles[k + 2]);
   EXPECT_NEAR(volume(volume_inside(r, delaunay_of_surface(r))), (1000.0 - 1.0) / 6, 1e-9);
-}
-
-/// Volume of the tets with ref `ref`.
-double region_volume(const Mesh& v, int ref) {
-  Mesh part = v;
-  part.tets.clear();
-  part.tet_ref.clear();
-  for (std::size_t t = 0; t < v.num_tets(); ++t)
-    if (v.tet_ref[t] == ref) {
-      part.tets.insert(part.tets.end(), v.tets.begin() + static_cast<std::ptrdiff_t>(4 * t),
-                       v.tets.begin() + static_cast<std::ptrdiff_t>(4 * t + 4));
-      part.tet_ref.push_back(ref);
-    }
-  return volume(part);
+  // No holes: the inner shell bounds a solid of its own, whatever its orientation.
+  const Mesh n = volume_inside(s, d, {}, true);
+  EXPECT_NEAR(region_volume(n, 1), (1000.0 - 1.0) / 6, 1e-9);
+  EXPECT_NEAR(region_volume(n, 2), 1.0 / 6, 1e-12);
+  BoundaryRecoveryOptions ro;
+  ro.no_holes = true;
+  EXPECT_NEAR(volume(recover_volume(s, ro).volume), 1000.0 / 6, 1e-9);
+  ro.hole_points = {1.1, 1.1, 1.1};
+  EXPECT_THROW(recover_volume(s, ro), InputError);  // they contradict
 }
 
 TEST(SurfaceDelaunay3d, InnerShellOrientedLikeTheOuterIsASolidOfItsOwn) {
