@@ -659,6 +659,7 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
                     l);
     result.report.notes.push_back(note);
   }
+  ctx->restore_refs();
   const TetMesh final_mesh = std::move(m);
   std::vector<std::uint32_t>().swap(final_mesh.edge_scratch);
   const std::vector<std::int32_t> edge_refs = ctx->edge_refs();

@@ -6,6 +6,7 @@
 
 #include "mesh/adjacency.hpp"
 #include "metric/metric.hpp"
+#include "remesh/planar_pieces3d.hpp"
 #include "remesh/renumber_tail.hpp"
 
 namespace riemesh {
@@ -41,6 +42,20 @@ double split_fraction(double la, double lb) {
   return std::log(1.0 + f * (q - 1.0)) / std::log(q);
 }
 
+/// Planar patches: their vertices within this fraction of the bounding box's diagonal of their
+/// plane; interfaces: within the second (one written with 10 significant digits is off its plane
+/// by a few 1e-10 of the diagonal: taken for curved, it was kept as given).
+constexpr double kOuterFlatness = 1e-10;
+constexpr double kInterfaceFlatness = 1e-7;
+
+/// The diagonal of the vertices' bounding box.
+double diagonal(const TetMesh& m) {
+  Vec3 lo = m.xyz.empty() ? Vec3{} : m.xyz[0], hi = lo;
+  for (const Vec3& p : m.xyz)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  return norm(hi - lo);
+}
+
 /// The listed faces holding edge (a, b) of the shell, an interface face once: their refs in
 /// refs[0..n) (at most 4; false beyond) and whether one is an interface.
 bool edge_faces(const TetMesh& m, const std::vector<Id>& shell, Id a, Id b, std::int32_t* refs,
@@ -70,6 +85,11 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
       background_(take_points(input), std::move(input.tets), std::move(metrics), options.interp,
                   tet_neighbours(mesh_)),
       constant_(same_metric<3>(background_.metrics())) {
+  if (!options.keep_surface && options.detect_angles) {
+    const double diag = diagonal(mesh_);
+    pieces_ = split_planar_pieces(mesh_, options.angle_deg, kOuterFlatness * diag,
+                                  kInterfaceFlatness * diag);
+  }
   find_planes();
   std::vector<std::int32_t> curved;
   // Curved patches are reconstructed from their outer faces; a ref only on interfaces between
@@ -95,9 +115,10 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
     std::int32_t refs[4];
     int n = 0;
     bool interface = false;
-    if (!edge_faces(mesh_, shell, a, b, refs, n, interface) || interface || n != 2 ||
-        refs[0] == refs[1])
-      continue;
+    if (!edge_faces(mesh_, shell, a, b, refs, n, interface) || interface || n != 2) continue;
+    for (std::int32_t& r : refs)  // (the output has the given refs: restore_refs)
+      if (const auto it = pieces_.find(r); it != pieces_.end()) r = it->second;
+    if (refs[0] == refs[1]) continue;
     edge_refs_.insert(edge_refs_.end(), {std::min(refs[0], refs[1]), std::max(refs[0], refs[1]),
                                          input.edge_ref.empty() ? 0 : input.edge_ref[e]});
   }
@@ -105,10 +126,7 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
 
 void Remesh3dContext::find_planes() {
   const TetMesh& m = mesh_;
-  Vec3 lo = m.xyz.empty() ? Vec3{} : m.xyz[0], hi = lo;
-  for (const Vec3& p : m.xyz)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  const double tol = 1e-10 * norm(hi - lo);
+  const double diag = diagonal(m);
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4);
     if (!m.fbdy[s] || !m.tet_alive(t)) continue;
@@ -128,12 +146,9 @@ void Remesh3dContext::find_planes() {
     for (const Vec3* p : {&a, &b, &c})
       pl.deviation = std::max(pl.deviation, std::abs(dot(pl.n, *p) - pl.d));
   }
-  // Planar interfaces are remeshed like planar patches; curved ones are kept as given. An
-  // interface written with 10 significant digits is off its plane by a few 1e-10 of the
-  // diagonal (taken for curved, it was kept as given): interfaces get 1e-7 of the diagonal.
-  constexpr double kInterfaceFlatness = 1e-7;
+  // Planar interfaces are remeshed like planar patches; curved ones are kept as given.
   for (auto& [ref, pl] : planes_) {
-    if (pl.deviation > (pl.outer ? tol : kInterfaceFlatness * norm(hi - lo))) pl.planar = false;
+    if (pl.deviation > (pl.outer ? kOuterFlatness : kInterfaceFlatness) * diag) pl.planar = false;
     has_interfaces_ = has_interfaces_ || (pl.inner && !pl.planar);
   }
 }
@@ -203,10 +218,7 @@ bool Remesh3dContext::classify_vertices() {
   // the volumes meet): their common line had no direction from the planes, its vertices were
   // fixed and its edges never split (4x the size asked). When its vertices are collinear, the
   // line is a ridge of that direction.
-  Vec3 lo = m.xyz.empty() ? Vec3{} : m.xyz[0], hi = lo;
-  for (const Vec3& p : m.xyz)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  const double tol = 1e-10 * norm(hi - lo);
+  const double tol = kOuterFlatness * diagonal(m);
   for (const auto& [pair, line] : on_coplanar_line) {
     if (line.size() < 2) continue;
     const Vec3& o = m.xyz[static_cast<std::size_t>(line[0])];
@@ -362,6 +374,11 @@ void Remesh3dContext::set_field(std::vector<SymMat3>&& metrics) {
     m.vmoved[vi] = now;
   }
   m.quality.clear();
+}
+
+void Remesh3dContext::restore_refs() {
+  restore_piece_refs(mesh_, pieces_);
+  pieces_.clear();
 }
 
 void Remesh3dContext::inherit_hint(Id v) {

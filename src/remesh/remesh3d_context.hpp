@@ -66,6 +66,10 @@ class Remesh3dContext {
     return it != planes_.end() && it->second.inner && !it->second.planar;
   }
 
+  /// Gives the faces of the planar pieces of a split ref (planar_pieces3d.hpp) their given ref
+  /// again: before the mesh is written, after the passes.
+  void restore_refs();
+
   /// Records, for vertex v just created or moved, the background tet of the last metric_for.
   void inherit_hint(Id v);
 
@@ -105,6 +109,8 @@ class Remesh3dContext {
   /// without locating the point; as 2D's Remesh2dContext).
   std::optional<SymMat3> constant_;
   std::map<std::int32_t, Plane> planes_;
+  /// Refs of the planar pieces of split refs -> the given ref (planar_pieces3d.hpp).
+  std::map<std::int32_t, std::int32_t> pieces_;
   /// Coplanar planar patches (r1 < r2) meeting along a straight line: its unit direction.
   std::map<std::pair<std::int32_t, std::int32_t>, Vec3> coplanar_lines_;
   std::vector<std::int32_t> edge_refs_;

@@ -391,6 +391,27 @@ std::map<int, double> volume_by_ref(const Mesh& m) {
   return out;
 }
 
+/// The edges of ref `ref`'s outline (on one triangle of that ref): their count and the longest.
+std::pair<std::size_t, double> interface_outline(const Mesh& m, int ref) {
+  std::map<std::pair<Id, Id>, int> on;
+  for (std::size_t f = 0; f < m.num_triangles(); ++f)
+    for (int k = 0; m.tri_ref[f] == ref && k < 3; ++k) {
+      const Id p = m.triangles[3 * f + k], q = m.triangles[3 * f + (k + 1) % 3];
+      ++on[{std::min(p, q), std::max(p, q)}];
+    }
+  double longest = 0.0;
+  std::size_t outline = 0;
+  for (const auto& [e, count] : on) {
+    if (count != 1) continue;
+    ++outline;
+    double l2 = 0.0;
+    for (int i = 0; i < 3; ++i)
+      l2 += std::pow(m.coords[3 * e.first + i] - m.coords[3 * e.second + i], 2);
+    longest = std::max(longest, std::sqrt(l2));
+  }
+  return {outline, longest};
+}
+
 }  // namespace
 
 // Interfaces between subdomains are kept as given. Listed: their ref was taken for a curved
@@ -523,28 +544,51 @@ TEST(Adapt3d, InterfaceMeetingSplitOuterFacesIsRemeshed) {
     const std::map<int, double> v = volume_by_ref(r.mesh);
     EXPECT_NEAR(v.at(1), 0.5, 1e-12) << name;
     EXPECT_NEAR(v.at(2), 0.5, 1e-12) << name;
-    // The interface's outline (its edges on one interface triangle): input 4 per side of 0.25.
-    std::map<std::pair<Id, Id>, int> on;
-    for (std::size_t f = 0; f < r.mesh.num_triangles(); ++f)
-      for (int k = 0; r.mesh.tri_ref[f] == 10 && k < 3; ++k) {
-        const Id p = r.mesh.triangles[3 * f + k], q = r.mesh.triangles[3 * f + (k + 1) % 3];
-        ++on[{std::min(p, q), std::max(p, q)}];
-      }
-    double longest = 0.0;
-    std::size_t outline = 0;
-    for (const auto& [e, count] : on) {
-      if (count != 1) continue;
-      ++outline;
-      double l2 = 0.0;
-      for (int i = 0; i < 3; ++i)
-        l2 += std::pow(r.mesh.coords[3 * e.first + i] - r.mesh.coords[3 * e.second + i], 2);
-      longest = std::max(longest, std::sqrt(l2));
-    }
+    // The interface's outline: input 4 per side of 0.25.
+    const auto [outline, longest] = interface_outline(r.mesh, 10);
     std::printf("%s: %zu tets, interface outline %zu edges, longest %.3g, notes %zu\n",
                 name.c_str(), r.mesh.num_tets(), outline, longest, r.report.notes.size());
     EXPECT_GE(outline, 32u) << name;  // 4 sides of 1 at 0.1
     EXPECT_LT(longest, 0.1 * 1.6) << name;
     EXPECT_TRUE(r.report.notes.empty()) << name;
+  }
+}
+
+// The same with every outer face of one ref (a "wall" physical group, as gmsh users write it):
+// that ref, on six planes, was taken for one curved patch, so the interface's rim (on a curved
+// patch and an interface at once) was fixed and the interface kept as given: rim edges 2.5 long
+// in the metric, no note. Its planar pieces, joined at sharp edges only, are planar patches now
+// (planar_pieces3d.hpp) and the rim a ridge; the output has the given refs.
+TEST(Adapt3d, InterfaceMeetingOneWallRefIsRemeshed) {
+  Mesh in = two_subdomains(4, true);
+  for (std::int32_t& ref : in.tri_ref)
+    if (ref != 10) ref = 1;
+  Adapt3dOptions o;
+  o.hgrad = 0.0;
+  const Adapt3dResult r =
+      adapt3d(in, std::vector<SymMat3>(in.num_vertices(), isotropic_metric<3>(0.1)), o);
+  EXPECT_TRUE(check_mesh(r.mesh).valid());
+  const std::map<int, double> a = area_by_ref(r.mesh);
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_NEAR(a.at(1), 6.0, 1e-12);
+  EXPECT_NEAR(a.at(10), 1.0, 1e-12);
+  const std::map<int, double> v = volume_by_ref(r.mesh);
+  EXPECT_NEAR(v.at(1), 0.5, 1e-12);
+  EXPECT_NEAR(v.at(2), 0.5, 1e-12);
+  const auto [outline, longest] = interface_outline(r.mesh, 10);
+  EXPECT_GE(outline, 32u);
+  EXPECT_LT(longest, 0.1 * 1.6);
+  EXPECT_TRUE(r.report.notes.empty());
+  EXPECT_TRUE(r.mesh.edges.empty());  // no ref changes along the outer boundary: no Edges
+  // Every boundary vertex still on the cube's surface.
+  for (std::size_t f = 0; f < r.mesh.num_triangles(); ++f) {
+    if (r.mesh.tri_ref[f] != 1) continue;
+    for (int k = 0; k < 3; ++k) {
+      const double* p = &r.mesh.coords[3 * static_cast<std::size_t>(r.mesh.triangles[3 * f + k])];
+      double gap = 1.0;
+      for (int i = 0; i < 3; ++i) gap = std::min({gap, std::abs(p[i]), std::abs(p[i] - 1.0)});
+      EXPECT_LT(gap, 1e-12);
+    }
   }
 }
 

@@ -1,0 +1,122 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "mesh/adjacency.hpp"
+#include "mesh/fixtures.hpp"
+#include "metric/metric.hpp"
+#include "remesh/planar_pieces3d.hpp"
+
+namespace riemesh {
+namespace {
+
+TetMesh tet_mesh(const Mesh& m) {
+  return build_tet_mesh(m, std::vector<SymMat3>(m.num_vertices(), SymMat3::identity()));
+}
+
+/// Per face ref of m: the planes (rounded normal and offset) its faces lie on.
+std::map<std::int32_t, std::set<std::array<long, 4>>> planes_by_ref(const TetMesh& m) {
+  std::map<std::int32_t, std::set<std::array<long, 4>>> out;
+  for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
+    if (!m.fbdy[s] || !m.tet_alive(static_cast<Id>(s / 4))) continue;
+    const Id* v = &m.tv[4 * (s / 4)];
+    const int i = static_cast<int>(s % 4);
+    const Vec3 &a = m.xyz[v[kTetFace[i][0]]], &b = m.xyz[v[kTetFace[i][1]]],
+               &c = m.xyz[v[kTetFace[i][2]]];
+    Vec3 n = normalize(cross(b - a, c - a));
+    if (m.tadj[s] != kNoId && (n[0] < 0 || (n[0] == 0 && (n[1] < 0 || (n[1] == 0 && n[2] < 0)))))
+      n = -1.0 * n;  // an interface face: either side
+    out[m.face_ref(s)].insert({std::lround(1e6 * n[0]), std::lround(1e6 * n[1]),
+                               std::lround(1e6 * n[2]), std::lround(1e6 * dot(n, a))});
+  }
+  return out;
+}
+
+}  // namespace
+
+// A cube whose six faces have one ref (a "wall" group): six planar pieces meeting at right
+// angles, the first keeping ref 1, the others fresh refs 2..6 (above every face ref); each
+// piece on one plane; restored, every face has ref 1 again.
+TEST(PlanarPieces3d, OneRefOnSixPlanesIsSplit) {
+  Mesh cube = unit_cube(3);
+  std::fill(cube.tri_ref.begin(), cube.tri_ref.end(), 1);
+  TetMesh m = tet_mesh(cube);
+  const std::map<std::int32_t, std::int32_t> pieces = split_planar_pieces(m, 45.0, 1e-10, 1e-7);
+  ASSERT_EQ(pieces.size(), 5u);
+  for (const auto& [piece, given] : pieces) {
+    EXPECT_EQ(given, 1);
+    EXPECT_GE(piece, 2);
+    EXPECT_LE(piece, 6);
+  }
+  const auto planes = planes_by_ref(m);
+  ASSERT_EQ(planes.size(), 6u);
+  for (const auto& [ref, p] : planes) EXPECT_EQ(p.size(), 1u) << "ref " << ref;
+  restore_piece_refs(m, pieces);
+  const auto restored = planes_by_ref(m);
+  ASSERT_EQ(restored.size(), 1u);
+  EXPECT_EQ(restored.begin()->first, 1);
+  EXPECT_EQ(restored.begin()->second.size(), 6u);
+}
+
+// The same cube with a shallow roof (its top rises to 0.1 at x = 0.5, turning by 11.4 degrees
+// there): the ref is a curved patch for the default 45 degrees (a faceted curved surface turns
+// by a few degrees from facet to facet) and left alone; for 5 degrees the roof's ridge is sharp
+// and the ref splits into seven planes.
+TEST(PlanarPieces3d, SmoothEdgesKeepARefWhole) {
+  Mesh cube = unit_cube(4);
+  std::fill(cube.tri_ref.begin(), cube.tri_ref.end(), 1);
+  for (std::size_t v = 0; v < cube.num_vertices(); ++v)
+    if (cube.coords[3 * v + 2] == 1.0)
+      cube.coords[3 * v + 2] += 0.2 * std::min(cube.coords[3 * v], 1.0 - cube.coords[3 * v]);
+  TetMesh m = tet_mesh(cube);
+  EXPECT_TRUE(split_planar_pieces(m, 45.0, 1e-10, 1e-7).empty());
+  EXPECT_EQ(planes_by_ref(m).size(), 1u);
+  EXPECT_EQ(split_planar_pieces(m, 5.0, 1e-10, 1e-7).size(), 6u);
+  EXPECT_EQ(planes_by_ref(m).size(), 7u);
+}
+
+// An L-shaped interface (the faces between the tets with x < 0.5 and y < 0.5 and the others,
+// one ref): two planes at right angles, two pieces; the face seen from both sides gets the
+// piece's ref on both.
+TEST(PlanarPieces3d, LShapedInterfaceIsSplit) {
+  Mesh cube = unit_cube(4);
+  std::map<std::array<Id, 3>, int> seen;
+  for (std::size_t t = 0; t < cube.num_tets(); ++t) {
+    Vec3 c{};
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 3; ++k)
+        c[k] += cube.coords[3 * static_cast<std::size_t>(cube.tets[4 * t + i]) + k] / 4;
+    cube.tet_ref[t] = c[0] < 0.5 && c[1] < 0.5 ? 2 : 1;
+  }
+  for (std::size_t t = 0; t < cube.num_tets(); ++t)
+    for (int i = 0; i < 4; ++i) {
+      std::array<Id, 3> f;
+      for (int k = 0; k < 3; ++k) f[k] = cube.tets[4 * t + kTetFace[i][k]];
+      std::array<Id, 3> key = f;
+      std::sort(key.begin(), key.end());
+      const auto [it, fresh] = seen.try_emplace(key, cube.tet_ref[t]);
+      if (fresh || it->second == cube.tet_ref[t]) continue;
+      cube.triangles.insert(cube.triangles.end(), f.begin(), f.end());
+      cube.tri_ref.push_back(10);
+      cube.tri_tag.push_back(0);
+    }
+  TetMesh m = tet_mesh(cube);
+  const auto pieces = split_planar_pieces(m, 45.0, 1e-10, 1e-7);
+  ASSERT_EQ(pieces.size(), 1u);
+  EXPECT_EQ(pieces.begin()->second, 10);
+  const auto planes = planes_by_ref(m);
+  EXPECT_EQ(planes.at(10).size(), 1u);
+  EXPECT_EQ(planes.at(pieces.begin()->first).size(), 1u);
+  for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
+    if (m.fbdy[s] && m.tadj[s] != kNoId) {
+      EXPECT_EQ(m.face_ref(s), m.face_ref(static_cast<std::size_t>(m.tadj[s])));
+    }
+  }
+}
+
+}  // namespace riemesh
