@@ -83,6 +83,13 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
                  "interface given by both its volumes): each taken once, with the ref of its "
                  "first listing\n",
                  input.c_str(), s.interfaces_listed_twice);
+  if (s.inconsistent_edges > 0 && !args.quiet)
+    std::fprintf(stderr,
+                 "riemesh: note: %s: %zu edges are traversed the same way by both their triangles "
+                 "(inconsistent orientation): taken as they are, since the surface bounds several "
+                 "regions (an interface separates its two regions whichever way it faces; an "
+                 "enclosed shell is a hole only when all of it faces into it)\n",
+                 input.c_str(), s.inconsistent_edges);
   write_mesh(out, output);
   // The tets of the boundary points alone may keep flat slivers between nearly cocircular
   // surface points, which the recovery could not remove (the fill's optimiser does): said, not

@@ -146,7 +146,7 @@ std::string vertex_pair(Id a, Id b) {
 }
 
 Recovery::Recovery(const Mesh& s, const BoundaryRecoveryOptions& options) : surface_(s) {
-  require_closed_surface(s);
+  stats_.inconsistent_edges = require_closed_surface(s);
   const SelfIntersections crossing = find_self_intersections(s, 1, true);
   if (crossing.pairs > 0) {
     // Two triangulations of one face (a face of two volumes given by each, cut differently)

@@ -78,6 +78,9 @@ struct BoundaryRecoveryStats {
   /// Pairs of triangles on the same vertices in opposite orientations (an interface given by
   /// both its volumes) taken once (merge_interfaces_listed_twice).
   std::size_t interfaces_listed_twice = 0;
+  /// Edges traversed the same way by their two triangles, tolerated on a surface of several
+  /// regions (an interface's triangles may face either way: require_closed_surface).
+  std::size_t inconsistent_edges = 0;
   std::size_t steiner() const { return steiner_on_edges + steiner_in_faces + steiner_inside; }
 };
 

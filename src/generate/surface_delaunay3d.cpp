@@ -74,7 +74,7 @@ void throw_defect(const char* what, std::size_t count, const std::string& first)
 
 }  // namespace
 
-void require_closed_surface(const Mesh& s) {
+std::size_t require_closed_surface(const Mesh& s) {
   if (s.dim != 3 || s.num_triangles() == 0)
     throw InputError("the surface cannot bound a volume: no triangles in 3D");
   // Normals and squared lengths of differences must stay finite (a coordinate of 1e308 in a
@@ -128,9 +128,12 @@ void require_closed_surface(const Mesh& s) {
   if (twice) throw_defect("triangles listed twice (same three vertices)", twice, first_twice);
   // Edges on more than two triangles are where regions meet (a wall inside a box, the interface
   // of two solids listed once): allowed; their orientation says nothing (an interface faces away
-  // from one of its regions, into the other). Edges on two triangles must be traversed both ways.
+  // from one of its regions, into the other). Edges on two triangles must be traversed both ways
+  // on a surface of one region; with several, a triangle of an interface may face either way
+  // (half an interface turned was refused), so those are counted, not refused.
   const std::vector<DirectedEdge> e = directed_edges(s);
   std::size_t open = 0, flipped = 0;
+  bool regions_meet = false;
   std::string first_open, first_flipped;
   for (std::size_t i = 0; i < e.size();) {
     std::size_t j = i;
@@ -138,10 +141,11 @@ void require_closed_surface(const Mesh& s) {
     const std::string name = edge_name(e[i].lo, e[i].hi);
     if (j - i == 1 && open++ == 0) first_open = name;
     if (j - i == 2 && e[i].forward == e[i + 1].forward && flipped++ == 0) first_flipped = name;
+    regions_meet = regions_meet || j - i > 2;
     i = j;
   }
   if (open) throw_defect("edges on one triangle only (holes)", open, "edge of " + first_open);
-  if (flipped)
+  if (flipped && !regions_meet)
     throw_defect("edges traversed the same way by both their triangles (inconsistent orientation)",
                  flipped, "edge of " + first_flipped);
   // The triangles at a vertex, joined across their edges through it, form cycles (around
@@ -186,6 +190,7 @@ void require_closed_surface(const Mesh& s) {
   if (pinched)
     throw_defect("non-manifold vertices (where separate sheets of the surface touch)", pinched,
                  "vertex " + std::to_string(first_pinched + 1));
+  return flipped;
 }
 
 std::optional<Mesh> merge_interfaces_listed_twice(const Mesh& s, std::size_t* merged) {

@@ -18,12 +18,14 @@ namespace riemesh {
 /// Throws InputError naming the first defect that keeps the triangles of `surface` from bounding
 /// a volume: no triangles, a triangle with a repeated vertex, a triangle listed twice, an edge on
 /// one triangle only (a hole), two triangles traversing their common edge the same way when it
-/// has only them (inconsistent orientation), a vertex where separate sheets of the surface touch
+/// has only them (inconsistent orientation; tolerated on a surface with edges on three triangles
+/// or more, whose interfaces separate their regions whichever way they face, and counted in the
+/// result), a vertex where separate sheets of the surface touch
 /// (non-manifold vertex), a triangle of zero area, two vertices at the same place, a coordinate
 /// over 1e150 in magnitude or not finite (squared lengths would overflow). Edges on more than two
 /// triangles are where regions meet (an interface listed once) and are accepted. Vertex numbers
 /// in messages are 1-based, as in the files. Self-intersections are not detected.
-void require_closed_surface(const Mesh& surface);
+std::size_t require_closed_surface(const Mesh& surface);
 
 /// The surface with each pair of triangles on the same three vertices in opposite orientations
 /// (an interface given by both its volumes, each shell closed on its own, as CAD tools export

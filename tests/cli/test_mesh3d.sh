@@ -140,6 +140,29 @@ if [[ "$out" =~ \ ([1-9][0-9]*)\ Steiner\ points\ .*\ 0\ faces\ and\ 0\ edges\ m
 else
   ko "mesh3d-nofill-flat-steiner-named: $out"
 fi
+# Half the shared face of gmsh's two boxes turned: an interface separates its regions whichever
+# way its triangles face; it was refused as "inconsistent orientation", now taken with a note.
+/usr/bin/python3 - "$(dirname "$0")/../data/two_boxes_gmsh.mesh" "$TMP/two_mixed.mesh" <<'PY'
+import sys
+toks = open(sys.argv[1]).read().split()
+n = int(toks[toks.index('Vertices') + 1]); i = toks.index('Vertices') + 2
+pts = [tuple(map(float, toks[i + 4 * k: i + 4 * k + 3])) for k in range(n)]
+m = int(toks[toks.index('Triangles') + 1]); j = toks.index('Triangles') + 2
+tris = [list(map(int, toks[j + 4 * k: j + 4 * k + 4])) for k in range(m)]
+turned = 0
+for t in tris:
+    if all(pts[v - 1][0] == 1.0 for v in t[:3]):
+        if turned % 2 == 0: t[1], t[2] = t[2], t[1]
+        turned += 1
+with open(sys.argv[2], "w") as f:
+    f.write("MeshVersionFormatted 2\nDimension 3\nVertices\n%d\n" % n)
+    f.write("".join("%.17g %.17g %.17g 0\n" % p for p in pts))
+    f.write("Triangles\n%d\n" % m + "".join("%d %d %d %d\n" % tuple(t) for t in tris) + "End\n")
+PY
+out=$("$R" mesh "$TMP/two_mixed.mesh" -o "$TMP/two_mixed_vol.mesh" --nofill 2>&1); code=$?
+[ $code -eq 0 ] && [ "$(ref_volumes "$TMP/two_mixed_vol.mesh")" = "1:1.000000 2:1.000000" ] &&
+  [[ "$out" == *"edges are traversed the same way by both their triangles (inconsistent orientation): taken as they are"* ]] &&
+  ok mesh3d-interface-mixed-orientation || ko "mesh3d-interface-mixed-orientation: $code $out"
 expect_error_matching mesh3d-hole-outside "hole point (2, 0.5, 0.5) is outside the volume" \
   mesh "$TMP/solid_in.mesh" -o "$TMP/y.mesh" --hole 2,0.5,0.5
 expect_error_matching mesh3d-hole-2d-point "--hole takes X,Y,Z points for a surface" \

@@ -398,4 +398,36 @@ TEST(BoundaryRecovery3d, SteinerPointsForFlatTetsAreCounted) {
   EXPECT_EQ(b.stats.steiner_for_flat_tets, 0u);
 }
 
+TEST(BoundaryRecovery3d, InterfaceOfMixedOrientationIsTaken) {
+  // gmsh's two boxes with every other triangle of the shared face x = 1 turned: the edges between
+  // turned and unturned ones are traversed the same way by both their triangles. The shared face
+  // separates the two boxes whichever way each triangle faces: it was refused ("cannot bound a
+  // volume: inconsistent orientation"); taken now, the edges counted. On a surface of one region
+  // (no edge on three triangles) it is still refused.
+  Mesh s = read_mesh(std::string(RIEMESH_TEST_DATA) + "/two_boxes_gmsh.mesh");
+  int turned = 0;
+  for (std::size_t t = 0; t < s.num_triangles(); ++t) {
+    bool shared = true;
+    for (int k = 0; k < 3; ++k)
+      shared = shared && s.coords[3 * static_cast<std::size_t>(s.triangles[3 * t + k])] == 1.0;
+    if (shared && turned++ % 2 == 0) std::swap(s.triangles[3 * t + 1], s.triangles[3 * t + 2]);
+  }
+  ASSERT_GT(turned, 10);
+  const RecoveredVolume r = recover_volume(s);
+  EXPECT_GT(r.stats.inconsistent_edges, 0u);
+  EXPECT_TRUE(check_mesh(r.volume).valid());
+  std::map<int, double> volumes;
+  for (std::size_t t = 0; t < r.volume.num_tets(); ++t) {
+    Vec3 p[4];
+    for (int k = 0; k < 4; ++k) p[k] = point(r.volume, r.volume.tets[4 * t + k]);
+    volumes[r.volume.tet_ref[t]] += dot(cross(p[1] - p[0], p[2] - p[0]), p[3] - p[0]) / 6;
+  }
+  ASSERT_EQ(volumes.size(), 2u);
+  EXPECT_NEAR(volumes.at(1), 1.0, 1e-12);
+  EXPECT_NEAR(volumes.at(2), 1.0, 1e-12);
+  EXPECT_EQ(recover_volume(read_mesh(std::string(RIEMESH_TEST_DATA) + "/two_boxes_gmsh.mesh"))
+                .stats.inconsistent_edges,
+            0u);
+}
+
 }  // namespace riemesh
