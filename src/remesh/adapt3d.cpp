@@ -653,9 +653,9 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     else
       std::snprintf(note, sizeof note,
                     "some interfaces between subdomains are kept as given (3D remeshing refines "
-                    "planar ones, with a ref of their own and a rim on planar patches): their "
-                    "edges are up to %.3g long in the metric, and the tets along them cannot "
-                    "follow the sizes",
+                    "planar ones, with a ref of their own and a rim on planar patches, and "
+                    "closed curved ones touching no other surface): their edges are up to %.3g "
+                    "long in the metric, and the tets along them cannot follow the sizes",
                     l);
     result.report.notes.push_back(note);
   }

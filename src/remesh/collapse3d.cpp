@@ -32,7 +32,10 @@ bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to)
   }
   if (n != 2) return false;
   if (k == VertexKind::kPlanar) return refs[0] == p0 && refs[1] == p0;
-  if (interface) return false;  // (curved patches meeting an interface are fixed)
+  // (curved patches meeting a planar or kept interface are fixed; a closed curved interface is
+  // on the reconstruction: m.surface)
+  if (interface && !(m.surface && m.surface->curved(refs[0]) && m.surface->curved(refs[1])))
+    return false;
   if (k == VertexKind::kSurface) return refs[0] == p0 && refs[1] == p0;
   if (k == VertexKind::kCurve)  // along its feature line only
     return m.surface && ((refs[0] == p0 && refs[1] == p1) || (refs[0] == p1 && refs[1] == p0)) &&

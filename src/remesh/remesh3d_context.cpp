@@ -92,18 +92,18 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
   }
   find_planes();
   std::vector<std::int32_t> curved;
-  // Curved patches are reconstructed from their outer faces; a ref only on interfaces between
-  // subdomains (whose vertices stay fixed) has none (it was taken for a curved patch with an
-  // empty surface: every gmsh multi-volume mesh was refused).
+  // Curved patches are reconstructed from their listed faces (an interface's once), outer
+  // patches and closed curved interfaces (a sphere in a box); other curved interfaces are kept
+  // as given (a ref only on interfaces was taken for a curved patch with an empty surface:
+  // every gmsh multi-volume mesh was refused).
   for (const auto& [ref, pl] : planes_)
-    if (!pl.planar && pl.outer) curved.push_back(ref);
+    if (!pl.planar && (pl.outer || closed_interface(ref))) curved.push_back(ref);
   if (!options.keep_surface && !curved.empty())
     boundary_ = std::make_unique<Boundary3d>(mesh_, std::move(curved), options),
     mesh_.surface = boundary_.get();
   while (classify_vertices()) {
   }
-  for (const auto& [ref, pl] : planes_)
-    has_interfaces_ = has_interfaces_ || (pl.inner && !pl.planar);
+  for (const auto& [ref, pl] : planes_) has_interfaces_ = has_interfaces_ || kept_interface(ref);
   num_input_vertices_ = mesh_.vertex_capacity();
   hint_.assign(mesh_.vertex_capacity(), kNoId);
   for (std::size_t v = 0; v < hint_.size(); ++v) hint_[v] = mesh_.vtet[v];
@@ -149,8 +149,44 @@ void Remesh3dContext::find_planes() {
   // Planar interfaces are remeshed like planar patches; curved ones are kept as given.
   for (auto& [ref, pl] : planes_) {
     if (pl.deviation > (pl.outer ? kOuterFlatness : kInterfaceFlatness) * diag) pl.planar = false;
-    has_interfaces_ = has_interfaces_ || (pl.inner && !pl.planar);
   }
+}
+
+bool Remesh3dContext::kept_interface(std::int32_t ref) const {
+  const auto it = planes_.find(ref);
+  return it != planes_.end() && it->second.inner && !it->second.planar &&
+         !(boundary_ && boundary_->curved(ref));
+}
+
+bool Remesh3dContext::closed_interface(std::int32_t ref) const {
+  const auto it = planes_.find(ref);
+  if (it == planes_.end() || it->second.outer || !it->second.inner) return false;
+  const TetMesh& m = mesh_;
+  std::vector<std::pair<Id, Id>> edges;
+  std::vector<Id> mine, others;
+  for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
+    const Id t = static_cast<Id>(s / 4), r = m.tadj[s];
+    if (!m.fbdy[s] || !m.tet_alive(t) || (r != kNoId && r < static_cast<Id>(s))) continue;
+    const int i = static_cast<int>(s % 4);
+    const Id f[3] = {m.tv[4 * t + kTetFace[i][0]], m.tv[4 * t + kTetFace[i][1]],
+                     m.tv[4 * t + kTetFace[i][2]]};
+    if (m.face_ref(s) != ref) {
+      others.insert(others.end(), f, f + 3);
+      continue;
+    }
+    mine.insert(mine.end(), f, f + 3);
+    for (int k = 0; k < 3; ++k)
+      edges.push_back({std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3])});
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t k = 0; k < edges.size(); k += 2)
+    if (k + 1 >= edges.size() || edges[k] != edges[k + 1] ||
+        (k + 2 < edges.size() && edges[k + 2] == edges[k]))
+      return false;
+  std::sort(others.begin(), others.end());
+  for (const Id v : mine)
+    if (std::binary_search(others.begin(), others.end(), v)) return false;
+  return true;
 }
 
 const Remesh3dContext::Plane* Remesh3dContext::plane(std::int32_t ref) const {
@@ -164,7 +200,9 @@ bool Remesh3dContext::classify_vertices() {
   constexpr int kMostRefs = 4;  // refs recorded per vertex
   std::vector<std::int32_t> refs(kMostRefs * nv, 0);
   std::vector<int> count(nv, 0);
-  std::vector<bool> fixed(nv, false), curved(nv, false), inner(nv, false);
+  // inner: on an interface; off_surface: on an interface the reconstruction does not hold (a
+  // planar one, or a curved one kept as given).
+  std::vector<bool> fixed(nv, false), curved(nv, false), inner(nv, false), off_surface(nv, false);
   std::map<std::pair<std::int32_t, std::int32_t>, std::vector<Id>> on_coplanar_line;
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4);
@@ -172,11 +210,14 @@ bool Remesh3dContext::classify_vertices() {
     const int i = static_cast<int>(s % 4);
     const std::int32_t ref = m.face_ref(s);
     const bool flat = plane(ref) != nullptr, interface = m.tadj[s] != kNoId;
+    const bool rebuilt = boundary_ && boundary_->curved(ref);
     for (int k = 0; k < 3; ++k) {
       const Id v = m.tv[4 * t + kTetFace[i][k]];
-      if ((interface && !flat) || (!flat && !boundary_) || options_.keep_surface) fixed[v] = true;
+      if ((interface && !flat && !rebuilt) || (!flat && !boundary_) || options_.keep_surface)
+        fixed[v] = true;
       if (!flat) curved[v] = true;
       if (interface) inner[v] = true;
+      if (interface && !rebuilt) off_surface[v] = true;
       int& c = count[v];
       std::int32_t* r = &refs[kMostRefs * v];
       if (std::find(r, r + std::min(c, kMostRefs), ref) != r + std::min(c, kMostRefs)) continue;
@@ -188,8 +229,8 @@ bool Remesh3dContext::classify_vertices() {
     VertexKind k = VertexKind::kFixed;
     const std::int32_t* r = &refs[kMostRefs * v];
     std::int32_t r1 = 0, r2 = 0;
-    // A curved patch meeting an interface: its reconstruction does not see the interface.
-    if ((m.vtag[v] & (kTagCorner | kTagRequired)) || fixed[v] || (inner[v] && curved[v]) ||
+    // A curved patch meeting an interface its reconstruction does not hold.
+    if ((m.vtag[v] & (kTagCorner | kTagRequired)) || fixed[v] || (off_surface[v] && curved[v]) ||
         (count[v] > 2 && !(inner[v] && interface_line(r, count[v], r1, r2)))) {
       k = VertexKind::kFixed;
     } else if (count[v] > 2) {  // where a planar interface meets coplanar outer patches
@@ -302,7 +343,13 @@ bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
   if (shell.empty() || !edge_faces(mesh_, shell, a, b, refs, n, interface)) return false;
   out.kind = VertexKind::kInterior;
   out.plane[0] = out.plane[1] = 0;
-  if (interface) {  // on a planar interface (its faces once in refs), or where it meets others
+  if (interface && n == 2 && boundary_ && boundary_->curved(refs[0]) &&
+      boundary_->curved(refs[1])) {  // on a closed curved interface: on its reconstruction
+    if (options_.keep_surface) return false;
+    const bool line = boundary_->feature_edge(mesh_, a, b, refs[0], refs[1]);
+    out.kind = line ? VertexKind::kCurve : VertexKind::kSurface;
+    out.plane[0] = std::min(refs[0], refs[1]), out.plane[1] = std::max(refs[0], refs[1]);
+  } else if (interface) {  // on a planar interface (its faces once), or where it meets others
     if (options_.keep_surface) return false;
     std::int32_t d[4];
     int nd = 0;

@@ -56,15 +56,14 @@ class Remesh3dContext {
   std::span<const SymMat3> field() const { return background_.metrics(); }
 
   /// True when some listed face between two tets (an interface between subdomains) is on a
-  /// curved interface, kept as given with its vertices fixed (planar interfaces are remeshed
+  /// curved interface kept as given with its vertices fixed (planar interfaces are remeshed
   /// like planar patches: their vertices move in their plane, their edges are split and
-  /// collapsed, their faces on both sides kept listed by replace_cavity).
+  /// collapsed, their faces on both sides kept listed by replace_cavity; closed curved ones, a
+  /// sphere in a box, like curved patches, on their reconstruction).
   bool has_interfaces() const { return has_interfaces_; }
-  /// True when the faces of `ref` are kept as given as an interface (a curved interface).
-  bool kept_interface(std::int32_t ref) const {
-    const auto it = planes_.find(ref);
-    return it != planes_.end() && it->second.inner && !it->second.planar;
-  }
+  /// True when the faces of `ref` are kept as given as an interface (a curved interface that
+  /// is not closed, or any with --nosurf).
+  bool kept_interface(std::int32_t ref) const;
 
   /// Gives the faces of the planar pieces of a split ref (planar_pieces3d.hpp) their given ref
   /// again: before the mesh is written, after the passes.
@@ -88,6 +87,9 @@ class Remesh3dContext {
     double deviation = 0.0;  ///< largest distance of a vertex of the ref to the plane
   };
   void find_planes();
+  /// Whether `ref` is a curved interface on its own: on interface faces only, which form a
+  /// closed surface (each edge on two of them) touching no other listed face (an inclusion).
+  bool closed_interface(std::int32_t ref) const;
   /// The vertices' kinds; true when it found planar interfaces to keep as given (made
   /// non-planar: classify again).
   bool classify_vertices();

@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "curved_test_meshes.hpp"
+#include "mesh/adjacency.hpp"
 #include "mesh/check.hpp"
 #include "mesh/distance.hpp"
 #include "mesh/fixtures.hpp"
@@ -207,6 +210,67 @@ TEST(Adapt3dCurved, BallWithinHausd) {
   const HausdorffDistance d = hausdorff_distance(in_s, out_s, DistanceOptions{});
   EXPECT_LT(d.two_sided(), o.hausd);
   EXPECT_GT(worst_quality(r), 0.2);
+}
+
+// A ball of radius 0.5 inside the unit ball (a closed curved interface between two regions, as
+// a sphere inclusion in gmsh): kept as given, its facets of 0.25 stayed while the sizes around
+// them were 0.08 (a gmsh sphere in a box at --hsiz 0.1: metric lengths up to 5.0, q min 0.302).
+// Now remeshed on its reconstruction like a curved patch: refined, within hausd of the input
+// interface both ways, the faces listed between the two regions, no note.
+TEST(Adapt3dCurved, ClosedCurvedInterfaceIsRemeshed) {
+  Mesh in = test::unit_ball(8);
+  std::map<std::array<Id, 3>, std::size_t> seen;
+  for (std::size_t t = 0; t < in.num_tets(); ++t) {
+    Vec3 c{};
+    for (int i = 0; i < 4; ++i) c = c + 0.25 * point(in, in.tets[4 * t + i]);
+    in.tet_ref[t] = norm(c) < 0.5 ? 2 : 1;
+  }
+  for (std::size_t t = 0; t < in.num_tets(); ++t)
+    for (int i = 0; i < 4; ++i) {
+      std::array<Id, 3> f;
+      for (int k = 0; k < 3; ++k) f[k] = in.tets[4 * t + kTetFace[i][k]];
+      std::array<Id, 3> key = f;
+      std::sort(key.begin(), key.end());
+      const auto [it, fresh] = seen.try_emplace(key, t);
+      if (fresh || in.tet_ref[it->second] == in.tet_ref[t]) continue;
+      in.triangles.insert(in.triangles.end(), f.begin(), f.end());
+      in.tri_ref.push_back(7);
+      in.tri_tag.push_back(kTagNone);
+    }
+  const auto interface = [](const Mesh& m) {
+    Mesh s;
+    s.dim = 3;
+    s.coords = m.coords;
+    s.vert_ref.assign(m.num_vertices(), 0);
+    s.vert_tag.assign(m.num_vertices(), 0);
+    for (std::size_t f = 0; f < m.num_triangles(); ++f)
+      if (m.tri_ref[f] == 7) {
+        s.triangles.insert(s.triangles.end(), &m.triangles[3 * f], &m.triangles[3 * f + 3]);
+        s.tri_ref.push_back(7);
+      }
+    return s;
+  };
+  const Mesh before = interface(in);
+  ASSERT_EQ(before.num_triangles(), 6u * 4 * 4 * 2);
+  Adapt3dOptions o;
+  o.hausd = 0.01;
+  o.hgrad = 0.0;
+  const Adapt3dResult r =
+      adapt3d(in, std::vector<SymMat3>(in.num_vertices(), isotropic_metric<3>(0.08)), o);
+  const CheckReport check = check_mesh(r.mesh);
+  EXPECT_TRUE(check.valid()) << (check.issues.empty() ? "" : to_string(check.issues[0].category));
+  const Mesh after = interface(r.mesh);
+  EXPECT_GT(after.num_triangles(), 4 * before.num_triangles());
+  EXPECT_LT(hausdorff_distance(before, after, DistanceOptions{}).two_sided(), o.hausd);
+  double longest = 0.0;
+  for (std::size_t f = 0; f < after.num_triangles(); ++f)
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, norm(point(after, after.triangles[3 * f + k]) -
+                                       point(after, after.triangles[3 * f + (k + 1) % 3])));
+  EXPECT_LT(longest, 0.08 * 1.8);
+  for (const std::string& n : r.report.notes)
+    EXPECT_EQ(n.find("interfaces between subdomains"), std::string::npos) << n;
+  EXPECT_GT(worst_quality(r), 0.3);
 }
 
 TEST(Adapt3dCurved, PlanarCubeUnchanged) {
