@@ -68,17 +68,9 @@ bool normal_turn_ok(const Tri3& before, const Tri3& after, double h) {
   return std::acos(c) <= kTurn + slack;
 }
 
-/// Face slot s of a ball or shell (which holds both sides of an interface face) counted once: an
-/// outer face, or an interface face seen from the region of lower tet ref (from the lower slot
-/// between tets of one ref), so that a closed interface's faces are oriented alike (seen from
-/// either side at random, its vertex normals cancelled out and its reconstruction sank 0.05
-/// into a sphere of radius 0.5).
-bool listed_once(const TetMesh& m, std::size_t s) {
-  const Id r = m.tadj[s];
-  if (r == kNoId) return true;
-  const std::int32_t here = m.tref[s / 4], there = m.tref[static_cast<std::size_t>(r) / 4];
-  return here != there ? here < there : static_cast<Id>(s) < r;
-}
+/// Face slot s of a ball or shell (which holds both sides of an interface face) counted once
+/// (tet_mesh.hpp), so that a closed interface's faces are oriented alike.
+bool listed_once(const TetMesh& m, std::size_t s) { return m.face_side_listed(s); }
 
 FeatureOptions feature_options(const Adapt3dOptions& o) {
   FeatureOptions f;

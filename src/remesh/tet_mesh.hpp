@@ -111,6 +111,16 @@ struct TetMesh {
     const std::uint8_t c = fbdy[slot];
     return c == kRefOverflow ? ref_overflow.at(static_cast<Id>(slot)) : ref_table[c - 1];
   }
+  /// Whether slot s is the side a listed face is taken from when it is taken once: an outer
+  /// face, or an interface face seen from the region of lower tet ref (from the lower slot
+  /// between tets of one ref), so that an interface's faces are oriented alike (out of that
+  /// region) in reconstructions and output files.
+  bool face_side_listed(std::size_t s) const {
+    const Id r = tadj[s];
+    if (r == kNoId) return true;
+    const std::int32_t here = tref[s / 4], there = tref[static_cast<std::size_t>(r) / 4];
+    return here != there ? here < there : static_cast<Id>(s) < r;
+  }
   /// The code of a listed face of ref `ref` (table entry added when new and room is left).
   std::uint8_t ref_code(std::int32_t ref);
   /// Sets the face at `slot`: unlisted (code 0), or listed with `code` (ref_code) and, for

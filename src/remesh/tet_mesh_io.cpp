@@ -139,7 +139,7 @@ Mesh to_mesh(const TetMesh& m, std::span<const std::int32_t> edge_refs,
       const std::size_t s = 4 * t + i;
       if (!m.fbdy[s]) continue;
       const Id r = m.tadj[s];
-      if (r != kNoId && r < static_cast<Id>(s)) continue;  // interface: once
+      if (!m.face_side_listed(s)) continue;  // interface: once, out of its lower region
       const Id a = v[kTetFace[i][0]], b = v[kTetFace[i][1]], c = v[kTetFace[i][2]];
       out.triangles.insert(out.triangles.end(), {id[a], id[b], id[c]});
       out.tri_ref.push_back(m.face_ref(s));
