@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "metric/intersection.hpp"
+#include "remesh/plane_fit.hpp"
 #include "remesh/surface_metric.hpp"
 
 namespace riemesh {
@@ -279,32 +280,20 @@ void intersect_curvature_sizes(const Mesh& volume, std::vector<SymMat3>& metrics
     const Vec3 p = point_of(volume, static_cast<Id>(v));
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   }
-  const double tol = 1e-10 * norm(hi - lo);
-  // The planar listed patches (as Remesh3dContext finds them): one normal, all points on it.
-  struct Plane {
-    Vec3 n{};
-    double d = 0.0;
-    bool planar = true;
-  };
-  std::map<std::int32_t, Plane> planes;
+  // The planar listed patches (as Remesh3dContext finds them, plane_fit.hpp).
   auto ref_of = [&](std::size_t t) { return volume.tri_ref.size() == nt ? volume.tri_ref[t] : 0; };
-  for (std::size_t t = 0; t < nt; ++t) {
-    const Vec3 a = point_of(volume, volume.triangles[3 * t]);
-    const Vec3 b = point_of(volume, volume.triangles[3 * t + 1]);
-    const Vec3 c = point_of(volume, volume.triangles[3 * t + 2]);
-    const Vec3 n = normalize(cross(b - a, c - a));
-    auto [it, fresh] = planes.try_emplace(ref_of(t));
-    Plane& pl = it->second;
-    if (fresh) pl.n = n, pl.d = dot(n, a);
-    if (std::abs(dot(n, pl.n)) < 1.0 - 1e-9) pl.planar = false;
-    for (const Vec3* p : {&a, &b, &c})
-      if (std::abs(dot(pl.n, *p) - pl.d) > tol) pl.planar = false;
-  }
+  std::map<std::int32_t, std::vector<Tri3>> faces;
+  for (std::size_t t = 0; t < nt; ++t)
+    faces[ref_of(t)].push_back(Tri3{point_of(volume, volume.triangles[3 * t]),
+                                    point_of(volume, volume.triangles[3 * t + 1]),
+                                    point_of(volume, volume.triangles[3 * t + 2])});
+  std::map<std::int32_t, bool> planar;
+  for (const auto& [ref, f] : faces) planar[ref] = is_planar(fit_plane(f), norm(hi - lo));
   Mesh s;
   s.dim = 3;
   std::vector<Id> sid(nv, kNoId), vid;
   for (std::size_t t = 0; t < nt; ++t) {
-    if (planes[ref_of(t)].planar) continue;
+    if (planar[ref_of(t)]) continue;
     for (int k = 0; k < 3; ++k) {
       const Id v = volume.triangles[3 * t + k];
       if (sid[v] == kNoId) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mesh/adjacency.hpp"
+#include "remesh/plane_fit.hpp"
 
 namespace riemesh {
 namespace {
@@ -35,7 +36,7 @@ double turn_cosine(const Face& f, const Face& g) {
 }  // namespace
 
 std::map<std::int32_t, std::int32_t> split_planar_pieces(TetMesh& m, double angle_deg,
-                                                         double outer_tol, double inner_tol) {
+                                                         double diagonal) {
   std::vector<Face> faces;
   std::int32_t highest = std::numeric_limits<std::int32_t>::min();
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
@@ -71,7 +72,7 @@ std::map<std::int32_t, std::int32_t> split_planar_pieces(TetMesh& m, double angl
   std::sort(edges.begin(), edges.end());
   std::vector<Id> parent(faces.size());
   std::iota(parent.begin(), parent.end(), Id{0});
-  constexpr double kCoplanar = 1.0 - 1e-9;
+  constexpr double kCoplanar = 1.0 - kPlaneNormal;
   const auto each_pair_on_an_edge = [&](auto&& act) {
     for (std::size_t i = 0; i < edges.size();) {
       std::size_t j = i;
@@ -100,23 +101,17 @@ std::map<std::int32_t, std::int32_t> split_planar_pieces(TetMesh& m, double angl
     if (find_root(parent, x) != find_root(parent, y) && turn_cosine(f, g) >= sharp)
       several[f.ref] = false;  // a smooth edge between two pieces: a curved patch
   });
-  // Each piece planar: its vertices on the plane of its first face.
-  std::vector<Id> first_face(faces.size(), kNoId);
-  std::vector<bool> has_outer(faces.size(), false);
+  // Each piece planar.
+  std::map<Id, std::vector<Tri3>> piece_faces;
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Id root = find_root(parent, static_cast<Id>(f));
-    if (first_face[root] == kNoId) first_face[root] = static_cast<Id>(f);
-    if (faces[f].outer) has_outer[root] = true;
-  }
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    auto it = several.find(faces[f].ref);
+    const auto it = several.find(faces[f].ref);
     if (it == several.end() || !it->second) continue;
-    const Id root = find_root(parent, static_cast<Id>(f));
-    const Face& p = faces[first_face[root]];
-    const double tol = has_outer[root] ? outer_tol : inner_tol;
-    for (const Id v : faces[f].v)
-      if (std::abs(dot(p.n, m.xyz[v] - m.xyz[p.v[0]])) > tol) it->second = false;
+    const Face& x = faces[f];
+    piece_faces[find_root(parent, static_cast<Id>(f))].push_back(
+        Tri3{m.xyz[x.v[0]], m.xyz[x.v[1]], m.xyz[x.v[2]]});
   }
+  for (const auto& [root, tris] : piece_faces)
+    if (!is_planar(fit_plane(tris), diagonal)) several[faces[root].ref] = false;
   // Fresh refs for the pieces after each ref's first, in the order of their first face.
   std::map<std::int32_t, std::int32_t> pieces;
   std::map<Id, std::int32_t> piece_ref;  // root -> ref

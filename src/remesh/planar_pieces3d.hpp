@@ -16,13 +16,12 @@ namespace riemesh {
 /// Gives each planar piece of a split ref but the first (pieces in the order of their first
 /// face slot) a fresh ref above every face ref of m, and returns piece ref -> given ref. A ref is
 /// split when its faces form two or more pieces (faces joined across edges where they are
-/// coplanar), every edge between two of its pieces turns by more than angle_deg (outer faces: the
-/// angle of their outward normals; interfaces: of their planes), and every piece is planar within
-/// outer_tol (a piece with an outer face) or inner_tol (interface pieces) of its first face's
-/// plane. Smooth curved refs (a faceted cylinder turns by a few degrees from facet to facet) and
-/// refs of one plane are left alone.
+/// coplanar within kPlaneNormal), every edge between two of its pieces turns by more than
+/// angle_deg (outer faces: the angle of their outward normals; interfaces: of their planes), and
+/// every piece is planar (plane_fit.hpp, `diagonal` the mesh's). Smooth curved refs (a faceted
+/// cylinder turns by a few degrees from facet to facet) and refs of one plane are left alone.
 std::map<std::int32_t, std::int32_t> split_planar_pieces(TetMesh& m, double angle_deg,
-                                                         double outer_tol, double inner_tol);
+                                                         double diagonal);
 
 /// Gives the faces of each piece ref of `pieces` (split_planar_pieces) their given ref again.
 void restore_piece_refs(TetMesh& m, const std::map<std::int32_t, std::int32_t>& pieces);

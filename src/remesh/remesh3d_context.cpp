@@ -7,6 +7,7 @@
 #include "mesh/adjacency.hpp"
 #include "metric/metric.hpp"
 #include "remesh/planar_pieces3d.hpp"
+#include "remesh/plane_fit.hpp"
 #include "remesh/renumber_tail.hpp"
 
 namespace riemesh {
@@ -41,12 +42,6 @@ double split_fraction(double la, double lb) {
   if (uniform) return f;
   return std::log(1.0 + f * (q - 1.0)) / std::log(q);
 }
-
-/// Planar patches: their vertices within this fraction of the bounding box's diagonal of their
-/// plane; interfaces: within the second (one written with 10 significant digits is off its plane
-/// by a few 1e-10 of the diagonal: taken for curved, it was kept as given).
-constexpr double kOuterFlatness = 1e-10;
-constexpr double kInterfaceFlatness = 1e-7;
 
 /// The diagonal of the vertices' bounding box.
 double diagonal(const TetMesh& m) {
@@ -87,8 +82,7 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
       constant_(same_metric<3>(background_.metrics())) {
   if (!options.keep_surface && options.detect_angles) {
     const double diag = diagonal(mesh_);
-    pieces_ = split_planar_pieces(mesh_, options.angle_deg, kOuterFlatness * diag,
-                                  kInterfaceFlatness * diag);
+    pieces_ = split_planar_pieces(mesh_, options.angle_deg, kFlatness * diag);
   }
   find_planes();
   std::vector<std::int32_t> curved;
@@ -126,29 +120,28 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
 
 void Remesh3dContext::find_planes() {
   const TetMesh& m = mesh_;
-  const double diag = diagonal(m);
+  std::map<std::int32_t, std::vector<Tri3>> faces;  // each listed face once
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4);
     if (!m.fbdy[s] || !m.tet_alive(t)) continue;
-    const int i = static_cast<int>(s % 4);
-    const Vec3& a = m.xyz[m.tv[4 * t + kTetFace[i][0]]];
-    const Vec3& b = m.xyz[m.tv[4 * t + kTetFace[i][1]]];
-    const Vec3& c = m.xyz[m.tv[4 * t + kTetFace[i][2]]];
-    const Vec3 n = normalize(cross(b - a, c - a));
-    auto [it, fresh] = planes_.try_emplace(m.face_ref(s));
-    Plane& pl = it->second;
-    if (fresh) pl.n = n, pl.d = dot(n, a);
-    // (|n . n'|: an interface face is seen from both sides, with opposite normals.)
-    if (std::abs(dot(n, pl.n)) < 1.0 - 1e-9) pl.planar = false;
+    Plane& pl = planes_[m.face_ref(s)];
     if (m.tadj[s] == kNoId) pl.outer = true;
     else
       pl.inner = true;
-    for (const Vec3* p : {&a, &b, &c})
-      pl.deviation = std::max(pl.deviation, std::abs(dot(pl.n, *p) - pl.d));
+    if (!m.face_side_listed(s)) continue;
+    const int i = static_cast<int>(s % 4);
+    faces[m.face_ref(s)].push_back(Tri3{m.xyz[m.tv[4 * t + kTetFace[i][0]]],
+                                        m.xyz[m.tv[4 * t + kTetFace[i][1]]],
+                                        m.xyz[m.tv[4 * t + kTetFace[i][2]]]});
   }
-  // Planar interfaces are remeshed like planar patches; curved ones are kept as given.
-  for (auto& [ref, pl] : planes_) {
-    if (pl.deviation > (pl.outer ? kOuterFlatness : kInterfaceFlatness) * diag) pl.planar = false;
+  // Planar patches and interfaces are remeshed on their plane; curved interfaces that are not
+  // closed are kept as given (plane_fit.hpp).
+  const double diag = diagonal(m);
+  for (const auto& [ref, f] : faces) {
+    const PlaneFit fit = fit_plane(f);
+    Plane& pl = planes_.at(ref);
+    pl.n = fit.n, pl.d = fit.d;
+    pl.planar = is_planar(fit, diag);
   }
 }
 
@@ -248,7 +241,7 @@ bool Remesh3dContext::classify_vertices() {
     } else {
       r1 = std::min(r[0], r[1]), r2 = std::max(r[0], r[1]);
       m.vplane[2 * v] = r1, m.vplane[2 * v + 1] = r2;
-      if (std::abs(dot(plane(r1)->n, plane(r2)->n)) < 1.0 - 1e-6)
+      if (std::abs(dot(plane(r1)->n, plane(r2)->n)) < 1.0 - kPlaneNormal)
         k = VertexKind::kRidge;
       else
         on_coplanar_line[{r1, r2}].push_back(static_cast<Id>(v));
@@ -259,7 +252,7 @@ bool Remesh3dContext::classify_vertices() {
   // the volumes meet): their common line had no direction from the planes, its vertices were
   // fixed and its edges never split (4x the size asked). When its vertices are collinear, the
   // line is a ridge of that direction.
-  const double tol = kOuterFlatness * diagonal(m);
+  const double tol = kFlatness * diagonal(m);
   for (const auto& [pair, line] : on_coplanar_line) {
     if (line.size() < 2) continue;
     const Vec3& o = m.xyz[static_cast<std::size_t>(line[0])];
@@ -311,7 +304,7 @@ bool Remesh3dContext::interface_line(const std::int32_t* r, int n, std::int32_t&
   // The first two planes that cross; every plane must hold their common line.
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
-      if (std::abs(dot(pl[i]->n, pl[j]->n)) >= 1.0 - 1e-6) continue;
+      if (std::abs(dot(pl[i]->n, pl[j]->n)) >= 1.0 - kPlaneNormal) continue;
       const Vec3 d = normalize(cross(pl[i]->n, pl[j]->n));
       for (int k = 0; k < n; ++k)
         if (std::abs(dot(pl[k]->n, d)) > 1e-6) return false;
@@ -324,7 +317,7 @@ bool Remesh3dContext::interface_line(const std::int32_t* r, int n, std::int32_t&
 bool Remesh3dContext::ridge_direction(std::int32_t r1, std::int32_t r2, Vec3& d) const {
   const Plane *p1 = plane(r1), *p2 = plane(r2);
   if (!p1 || !p2) return false;
-  if (std::abs(dot(p1->n, p2->n)) < 1.0 - 1e-6) {
+  if (std::abs(dot(p1->n, p2->n)) < 1.0 - kPlaneNormal) {
     d = normalize(cross(p1->n, p2->n));
     return true;
   }

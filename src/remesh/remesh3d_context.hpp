@@ -84,7 +84,6 @@ class Remesh3dContext {
     bool planar = true;
     bool outer = false;  ///< some face of the ref is on the outer boundary (not an interface)
     bool inner = false;  ///< some face of the ref is an interface (between two tets)
-    double deviation = 0.0;  ///< largest distance of a vertex of the ref to the plane
   };
   void find_planes();
   /// Whether `ref` is a curved interface on its own: on interface faces only, which form a

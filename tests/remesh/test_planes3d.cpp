@@ -11,6 +11,7 @@
 #include "mesh/fixtures.hpp"
 #include "metric/metric.hpp"
 #include "remesh/planar_pieces3d.hpp"
+#include "remesh/plane_fit.hpp"
 
 namespace riemesh {
 namespace {
@@ -46,7 +47,7 @@ TEST(PlanarPieces3d, OneRefOnSixPlanesIsSplit) {
   Mesh cube = unit_cube(3);
   std::fill(cube.tri_ref.begin(), cube.tri_ref.end(), 1);
   TetMesh m = tet_mesh(cube);
-  const std::map<std::int32_t, std::int32_t> pieces = split_planar_pieces(m, 45.0, 1e-10, 1e-7);
+  const std::map<std::int32_t, std::int32_t> pieces = split_planar_pieces(m, 45.0, std::sqrt(3.0));
   ASSERT_EQ(pieces.size(), 5u);
   for (const auto& [piece, given] : pieces) {
     EXPECT_EQ(given, 1);
@@ -74,9 +75,9 @@ TEST(PlanarPieces3d, SmoothEdgesKeepARefWhole) {
     if (cube.coords[3 * v + 2] == 1.0)
       cube.coords[3 * v + 2] += 0.2 * std::min(cube.coords[3 * v], 1.0 - cube.coords[3 * v]);
   TetMesh m = tet_mesh(cube);
-  EXPECT_TRUE(split_planar_pieces(m, 45.0, 1e-10, 1e-7).empty());
+  EXPECT_TRUE(split_planar_pieces(m, 45.0, std::sqrt(3.0)).empty());
   EXPECT_EQ(planes_by_ref(m).size(), 1u);
-  EXPECT_EQ(split_planar_pieces(m, 5.0, 1e-10, 1e-7).size(), 6u);
+  EXPECT_EQ(split_planar_pieces(m, 5.0, std::sqrt(3.0)).size(), 6u);
   EXPECT_EQ(planes_by_ref(m).size(), 7u);
 }
 
@@ -106,7 +107,7 @@ TEST(PlanarPieces3d, LShapedInterfaceIsSplit) {
       cube.tri_tag.push_back(0);
     }
   TetMesh m = tet_mesh(cube);
-  const auto pieces = split_planar_pieces(m, 45.0, 1e-10, 1e-7);
+  const auto pieces = split_planar_pieces(m, 45.0, std::sqrt(3.0));
   ASSERT_EQ(pieces.size(), 1u);
   EXPECT_EQ(pieces.begin()->second, 10);
   const auto planes = planes_by_ref(m);
@@ -117,6 +118,28 @@ TEST(PlanarPieces3d, LShapedInterfaceIsSplit) {
       EXPECT_EQ(m.face_ref(s), m.face_ref(static_cast<std::size_t>(m.tadj[s])));
     }
   }
+}
+
+// The plane fitted to faces of either orientation: exact on a plane, a vertex off it measured,
+// faces turning by 1 degree not aligned.
+TEST(PlaneFit, FitsFacesOfEitherOrientation) {
+  const Vec3 a{{0, 0, 0.3}}, b{{1, 0, 0.3}}, c{{1, 1, 0.3}}, d{{0, 1, 0.3}};
+  const std::vector<Tri3> square = {Tri3{a, b, c}, Tri3{a, d, c}};  // the second turned
+  PlaneFit f = fit_plane(square);
+  EXPECT_TRUE(f.aligned);
+  EXPECT_DOUBLE_EQ(std::abs(f.n[2]), 1.0);
+  EXPECT_DOUBLE_EQ(f.d * f.n[2], 0.3);
+  EXPECT_LT(f.deviation, 1e-15);
+  EXPECT_TRUE(is_planar(f, 1.0));
+  const Vec3 up{{0, 1, 0.3 + 4e-6}};  // d lifted: off the fitted plane by about 2e-6
+  f = fit_plane(std::vector<Tri3>{Tri3{a, b, c}, Tri3{a, c, up}});
+  EXPECT_TRUE(f.aligned);
+  EXPECT_GT(f.deviation, 1e-6);
+  EXPECT_LT(f.deviation, 4e-6);
+  EXPECT_FALSE(is_planar(f, 1.0));
+  EXPECT_TRUE(is_planar(f, 10.0));
+  const Vec3 bent{{0, 1, 0.3 + std::tan(M_PI / 180)}};
+  EXPECT_FALSE(fit_plane(std::vector<Tri3>{Tri3{a, b, c}, Tri3{a, c, bent}}).aligned);
 }
 
 }  // namespace riemesh
