@@ -86,9 +86,10 @@ void mesh_volume_from_surface(const std::string& input, const Mesh& surface,
   if (s.inconsistent_edges > 0 && !args.quiet)
     std::fprintf(stderr,
                  "riemesh: note: %s: %zu edges are traversed the same way by both their triangles "
-                 "(inconsistent orientation): taken as they are, since the surface bounds several "
-                 "regions (an interface separates its two regions whichever way it faces; an "
-                 "enclosed shell is a hole only when all of it faces into it)\n",
+                 "(inconsistent orientation): accepted, since the surface bounds several regions "
+                 "(an interface separates its two regions whichever way it faces; an enclosed "
+                 "shell is a hole only when all of it faces into it); the output's triangles face "
+                 "out of their regions\n",
                  input.c_str(), s.inconsistent_edges);
   write_mesh(out, output);
   // The tets of the boundary points alone may keep flat slivers between nearly cocircular

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/predicates.hpp"
 #include "generate/volume_regions3d.hpp"
+#include "mesh/adjacency.hpp"
 
 namespace riemesh {
 
@@ -280,6 +281,38 @@ SurfaceDelaunay delaunay_of_surface(const Mesh& s) {
   return d;
 }
 
+void orient_boundary_triangles(Mesh& v) {
+  // The kept tets' faces, each with its tet and the face's outward orientation.
+  struct Side {
+    Face key;
+    std::array<Id, 3> out;
+    int ref;
+  };
+  std::vector<Side> sides;
+  sides.reserve(4 * v.num_tets());
+  for (std::size_t t = 0; t < v.num_tets(); ++t)
+    for (int i = 0; i < 4; ++i) {
+      const Id* q = &v.tets[4 * t];
+      const std::array<Id, 3> f = {q[kTetFace[i][0]], q[kTetFace[i][1]], q[kTetFace[i][2]]};
+      sides.push_back({sorted_face(f[0], f[1], f[2]), f, v.tet_ref[t]});
+    }
+  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
+    return a.key != b.key ? a.key < b.key : a.ref < b.ref;
+  });
+  for (std::size_t t = 0; t < v.num_triangles(); ++t) {
+    Id* f = &v.triangles[3 * t];
+    const Face key = sorted_face(f[0], f[1], f[2]);
+    const auto it = std::lower_bound(sides.begin(), sides.end(), key,
+                                     [](const Side& a, const Face& k) { return a.key < k; });
+    if (it == sides.end() || it->key != key) continue;
+    // Facing out of its tet, or of the region of lower ref between two (the first after the
+    // sort); the same cyclic order as that face means the same orientation.
+    const std::array<Id, 3>& o = it->out;
+    const int k = o[0] == f[0] ? 0 : o[1] == f[0] ? 1 : 2;
+    if (o[(k + 1) % 3] != f[1]) std::swap(f[1], f[2]);
+  }
+}
+
 Mesh volume_inside(const Mesh& s, const SurfaceDelaunay& d, std::span<const double> hole_points,
                    bool no_holes) {
   if (!d.conforming()) throw Error("volume_inside: the surface is not in the tetrahedralisation");
@@ -310,6 +343,7 @@ Mesh volume_inside(const Mesh& s, const SurfaceDelaunay& d, std::span<const doub
     out.tri_ref.push_back(t < s.tri_ref.size() ? s.tri_ref[t] : 0);
     out.tri_tag.push_back(t < s.tri_tag.size() ? s.tri_tag[t] : 0);
   }
+  orient_boundary_triangles(out);
   return out;
 }
 

@@ -54,6 +54,12 @@ SurfaceDelaunay delaunay_of_surface(const Mesh& surface);
 /// or the orientation of enclosed shells decide), each region's tets with its ref 1, 2, ...; the
 /// surface's triangles (refs kept) as boundary faces, and its vertices (refs kept), renumbered as
 /// in d.vertices. Error if d is not conforming; InputError for a bad hole point or solids that
+/// Turns each boundary triangle of the volume mesh `v` that is a face of its tets to face out of
+/// its tet, or out of the region of lower tet ref between two (an interface), as the 3D
+/// remesher writes them: a surface listed inward, or one whose triangles face both ways, gives
+/// a volume whose triangles all face out.
+void orient_boundary_triangles(Mesh& v);
+
 /// touch along an edge or at a point (require_no_pinch).
 Mesh volume_inside(const Mesh& surface, const SurfaceDelaunay& d,
                    std::span<const double> hole_points = {}, bool no_holes = false);

@@ -469,15 +469,16 @@ bool keep_locality(Remesh3dContext& ctx, std::size_t renumber_after, SweepMemos&
   return true;
 }
 
-/// The longest edge, in the metric, of the listed faces kept as given: those of curved
-/// interfaces between subdomains or, with `outer`, all listed faces; 0 when there is none.
+/// The longest edge, in the metric, of the listed faces kept as given or on curved interfaces
+/// between subdomains (closed ones are remeshed, but coarse facets far from their smooth
+/// surface may refuse their splits) or, with `outer`, of all listed faces; 0 when there is none.
 double longest_kept_edge(const Remesh3dContext& ctx, bool outer) {
   const TetMesh& m = ctx.mesh();
   double longest = 0.0;
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4);
     if (!m.fbdy[s] || !m.tet_alive(t)) continue;
-    if (!outer && (m.tadj[s] == kNoId || !ctx.kept_interface(m.face_ref(s)))) continue;
+    if (!outer && (m.tadj[s] == kNoId || !ctx.curved_interface(m.face_ref(s)))) continue;
     const int i = static_cast<int>(s % 4);
     for (int k = 0; k < 3; ++k)
       longest = std::max(longest, edge_length(m, m.tv[4 * t + kTetFace[i][k]],
@@ -652,10 +653,10 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
                     l);
     else
       std::snprintf(note, sizeof note,
-                    "some interfaces between subdomains are kept as given (3D remeshing refines "
-                    "planar ones, with a ref of their own and a rim on planar patches, and "
-                    "closed curved ones touching no other surface): their edges are up to %.3g "
-                    "long in the metric, and the tets along them cannot follow the sizes",
+                    "curved interfaces between subdomains keep edges up to %.3g long in the "
+                    "metric (3D remeshing refines planar interfaces and closed curved ones "
+                    "touching no other surface, within --hausd of their facets; others are kept "
+                    "as given): the tets along them cannot follow the sizes",
                     l);
     result.report.notes.push_back(note);
   }

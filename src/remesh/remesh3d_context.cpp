@@ -97,7 +97,11 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
     mesh_.surface = boundary_.get();
   while (classify_vertices()) {
   }
-  for (const auto& [ref, pl] : planes_) has_interfaces_ = has_interfaces_ || kept_interface(ref);
+  // Curved interfaces, kept or rebuilt, get the kept surface's split floor: the coarse facets of
+  // a closed one far from its smooth surface (gmsh's pole of a sphere of size 0.2) refuse their
+  // splits within --hausd, and the splits around them made tets of quality 0.001.
+  for (const auto& [ref, pl] : planes_)
+    has_interfaces_ = has_interfaces_ || (pl.inner && !pl.planar);
   num_input_vertices_ = mesh_.vertex_capacity();
   hint_.assign(mesh_.vertex_capacity(), kNoId);
   for (std::size_t v = 0; v < hint_.size(); ++v) hint_[v] = mesh_.vtet[v];

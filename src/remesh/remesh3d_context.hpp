@@ -56,11 +56,16 @@ class Remesh3dContext {
   std::span<const SymMat3> field() const { return background_.metrics(); }
 
   /// True when some listed face between two tets (an interface between subdomains) is on a
-  /// curved interface kept as given with its vertices fixed (planar interfaces are remeshed
-  /// like planar patches: their vertices move in their plane, their edges are split and
-  /// collapsed, their faces on both sides kept listed by replace_cavity; closed curved ones, a
-  /// sphere in a box, like curved patches, on their reconstruction).
+  /// curved interface: kept as given with its vertices fixed, or, closed (a sphere in a box),
+  /// remeshed like a curved patch on its reconstruction (planar interfaces are remeshed like
+  /// planar patches: their vertices move in their plane, their edges are split and collapsed,
+  /// their faces on both sides kept listed by replace_cavity).
   bool has_interfaces() const { return has_interfaces_; }
+  /// True when `ref` is a curved interface (kept or rebuilt).
+  bool curved_interface(std::int32_t ref) const {
+    const auto it = planes_.find(ref);
+    return it != planes_.end() && it->second.inner && !it->second.planar;
+  }
   /// True when the faces of `ref` are kept as given as an interface (a curved interface that
   /// is not closed, or any with --nosurf).
   bool kept_interface(std::int32_t ref) const;

@@ -1,7 +1,10 @@
 // Mesh <-> TetMesh: neighbours and listed faces in, compacted arrays and ridge edges out.
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstdio>
 #include <map>
+#include <vector>
 
 #include "core/error.hpp"
 #include "mesh/adjacency.hpp"
@@ -16,6 +19,31 @@ std::array<Id, 3> sorted3(Id a, Id b, Id c) {
   std::array<Id, 3> k{a, b, c};
   std::sort(k.begin(), k.end());
   return k;
+}
+
+/// InputError when the tets at a vertex are not joined through faces (two solids touching along
+/// an edge or at a point): the operators walk a vertex's ball and an edge's shell through faces,
+/// and an edge's shell came up empty ("internal check failed: !shell.empty()").
+void require_manifold(const TetMesh& m) {
+  std::vector<std::uint32_t> tets_at(m.vertex_capacity(), 0);
+  for (const Id v : m.tv) ++tets_at[static_cast<std::size_t>(v)];
+  std::vector<Id> ball;
+  std::size_t pinched = 0;
+  Id first = kNoId;
+  for (std::size_t v = 0; v < m.vertex_capacity(); ++v) {
+    if (m.vtet[v] == kNoId) continue;
+    collect_ball(m, static_cast<Id>(v), ball);
+    if (ball.size() != tets_at[v] && pinched++ == 0) first = static_cast<Id>(v);
+  }
+  if (!pinched) return;
+  const Vec3& p = m.xyz[static_cast<std::size_t>(first)];
+  char msg[320];
+  std::snprintf(msg, sizeof msg,
+                "the volume is not a manifold at %zu vertices (first: (%g, %g, %g)): the "
+                "tetrahedra there are not joined through faces (solids touching along an edge "
+                "or at a point); 3D remeshing needs them joined",
+                pinched, p[0], p[1], p[2]);
+  throw InputError(msg);
 }
 
 }  // namespace
@@ -110,6 +138,7 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   for (std::size_t v = 0; v < nv; ++v)
     if (m.vtet[v] == kNoId) m.free_verts.push_back(static_cast<Id>(v));  // in no tet: dropped
   std::reverse(m.free_verts.begin(), m.free_verts.end());
+  require_manifold(m);
   return m;
 }
 

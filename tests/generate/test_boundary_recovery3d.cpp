@@ -425,6 +425,23 @@ TEST(BoundaryRecovery3d, InterfaceOfMixedOrientationIsTaken) {
   ASSERT_EQ(volumes.size(), 2u);
   EXPECT_NEAR(volumes.at(1), 1.0, 1e-12);
   EXPECT_NEAR(volumes.at(2), 1.0, 1e-12);
+  // Written facing out: the outer triangles away from the boxes' centre, the shared face's all
+  // one way (out of the region of lower ref).
+  std::size_t outward = 0, inward = 0, plus_x = 0, minus_x = 0;
+  for (std::size_t f = 0; f < r.volume.num_triangles(); ++f) {
+    const Id* t = &r.volume.triangles[3 * f];
+    const Vec3 a = point(r.volume, t[0]), b = point(r.volume, t[1]), c = point(r.volume, t[2]);
+    const Vec3 n = cross(b - a, c - a);
+    if (a[0] == 1.0 && b[0] == 1.0 && c[0] == 1.0) {
+      ++(n[0] > 0 ? plus_x : minus_x);
+      continue;
+    }
+    const Vec3 mid = (1.0 / 3.0) * (a + b + c) - Vec3{1.0, 0.5, 0.5};
+    ++(dot(n, mid) > 0 ? outward : inward);
+  }
+  EXPECT_EQ(inward, 0u);
+  EXPECT_GT(outward, 0u);
+  EXPECT_TRUE(plus_x == 0 || minus_x == 0) << plus_x << " " << minus_x;
   EXPECT_EQ(recover_volume(read_mesh(std::string(RIEMESH_TEST_DATA) + "/two_boxes_gmsh.mesh"))
                 .stats.inconsistent_edges,
             0u);

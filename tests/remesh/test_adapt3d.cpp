@@ -687,7 +687,7 @@ TEST(Adapt3d, PlanarInterfaceMeetingACurvedPatchIsKept) {
   EXPECT_EQ(faces, static_cast<std::size_t>(std::count(in.tri_ref.begin(), in.tri_ref.end(), 12)));
   bool noted = false;
   for (const std::string& n : r.report.notes)
-    noted |= n.find("some interfaces between subdomains are kept as given") != std::string::npos;
+    noted |= n.find("curved interfaces between subdomains keep edges up to") != std::string::npos;
   EXPECT_TRUE(noted);
 }
 
