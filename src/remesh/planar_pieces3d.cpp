@@ -112,22 +112,35 @@ std::map<std::int32_t, std::int32_t> split_planar_pieces(TetMesh& m, double angl
   }
   for (const auto& [root, tris] : piece_faces)
     if (!is_planar(fit_plane(tris), diagonal)) several[faces[root].ref] = false;
-  // Fresh refs for the pieces after each ref's first, in the order of their first face.
-  std::map<std::int32_t, std::int32_t> pieces;
-  std::map<Id, std::int32_t> piece_ref;  // root -> ref
+  // Fresh refs for the pieces after each ref's first, in the order of their first face: above
+  // every face ref, or below them all when the refs reach INT32_MAX (a wall ref of 2147483647
+  // kept every interface meeting it), none when neither has room.
+  std::int64_t needed = 0;
+  std::map<Id, bool> counted;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto it = several.find(faces[f].ref);
+    const Id root = find_root(parent, static_cast<Id>(f));
+    if (it != several.end() && it->second && first_root.at(faces[f].ref) != root &&
+        counted.try_emplace(root, true).second)
+      ++needed;
+  }
+  std::int32_t lowest = std::numeric_limits<std::int32_t>::max();
+  for (const Face& f : faces) lowest = std::min(lowest, f.ref);
+  constexpr std::int64_t kTop = std::numeric_limits<std::int32_t>::max();
+  constexpr std::int64_t kBottom = std::numeric_limits<std::int32_t>::min();
   std::int64_t next = static_cast<std::int64_t>(highest) + 1;
+  if (next + needed - 1 > kTop) next = static_cast<std::int64_t>(lowest) - needed;
+  std::map<std::int32_t, std::int32_t> pieces;
+  if (needed == 0 || next < kBottom) return pieces;
+  std::map<Id, std::int32_t> piece_ref;  // root -> ref
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const auto it = several.find(faces[f].ref);
     if (it == several.end() || !it->second) continue;
     const Id root = find_root(parent, static_cast<Id>(f));
     auto [pr, fresh] = piece_ref.try_emplace(root, faces[f].ref);
     if (fresh && first_root.at(faces[f].ref) != root) {
-      if (next > std::numeric_limits<std::int32_t>::max()) {
-        pr->second = faces[f].ref;  // no ref left: the piece keeps the given one
-      } else {
-        pr->second = static_cast<std::int32_t>(next++);
-        pieces[pr->second] = faces[f].ref;
-      }
+      pr->second = static_cast<std::int32_t>(next++);
+      pieces[pr->second] = faces[f].ref;
     }
     if (pr->second == faces[f].ref) continue;
     const std::uint8_t code = m.ref_code(pr->second);

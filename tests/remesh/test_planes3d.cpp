@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <vector>
@@ -62,6 +63,18 @@ TEST(PlanarPieces3d, OneRefOnSixPlanesIsSplit) {
   ASSERT_EQ(restored.size(), 1u);
   EXPECT_EQ(restored.begin()->first, 1);
   EXPECT_EQ(restored.begin()->second.size(), 6u);
+  // A ref at INT32_MAX: the fresh refs are taken below every ref (there were none above it, and
+  // the ref was left whole).
+  constexpr std::int32_t kTop = std::numeric_limits<std::int32_t>::max();
+  std::fill(cube.tri_ref.begin(), cube.tri_ref.end(), kTop);
+  TetMesh top = tet_mesh(cube);
+  const auto top_pieces = split_planar_pieces(top, 45.0, std::sqrt(3.0));
+  ASSERT_EQ(top_pieces.size(), 5u);
+  for (const auto& [piece, given] : top_pieces) {
+    EXPECT_EQ(given, kTop);
+    EXPECT_LT(piece, kTop);
+  }
+  EXPECT_EQ(planes_by_ref(top).size(), 6u);
 }
 
 // The same cube with a shallow roof (its top rises to 0.1 at x = 0.5, turning by 11.4 degrees
