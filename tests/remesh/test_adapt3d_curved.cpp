@@ -212,13 +212,10 @@ TEST(Adapt3dCurved, BallWithinHausd) {
   EXPECT_GT(worst_quality(r), 0.2);
 }
 
-// A ball of radius 0.5 inside the unit ball (a closed curved interface between two regions, as
-// a sphere inclusion in gmsh): kept as given, its facets of 0.25 stayed while the sizes around
-// them were 0.08 (a gmsh sphere in a box at --hsiz 0.1: metric lengths up to 5.0, q min 0.302).
-// Now remeshed on its reconstruction like a curved patch: refined, within hausd of the input
-// interface both ways, the faces listed between the two regions, no note.
-TEST(Adapt3dCurved, ClosedCurvedInterfaceIsRemeshed) {
-  Mesh in = test::unit_ball(8);
+/// The unit ball unit_ball(n) with the tets inside radius 0.5 (a sphere of cube shells when n
+/// is a multiple of 4) of tet ref 2, the faces between them and the rest listed with ref 7.
+Mesh ball_in_ball(int n) {
+  Mesh in = test::unit_ball(n);
   std::map<std::array<Id, 3>, std::size_t> seen;
   for (std::size_t t = 0; t < in.num_tets(); ++t) {
     Vec3 c{};
@@ -237,6 +234,16 @@ TEST(Adapt3dCurved, ClosedCurvedInterfaceIsRemeshed) {
       in.tri_ref.push_back(7);
       in.tri_tag.push_back(kTagNone);
     }
+  return in;
+}
+
+// A ball of radius 0.5 inside the unit ball (a closed curved interface between two regions, as
+// a sphere inclusion in gmsh): kept as given, its facets of 0.25 stayed while the sizes around
+// them were 0.08 (a gmsh sphere in a box at --hsiz 0.1: metric lengths up to 5.0, q min 0.302).
+// Now remeshed on its reconstruction like a curved patch: refined, within hausd of the input
+// interface both ways, the faces listed between the two regions, no note.
+TEST(Adapt3dCurved, ClosedCurvedInterfaceIsRemeshed) {
+  Mesh in = ball_in_ball(8);
   const auto interface = [](const Mesh& m) {
     Mesh s;
     s.dim = 3;
