@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <vector>
 
@@ -91,10 +92,17 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
                            mesh.triangles[3 * f + 2]), f);
   // A face between tets of different refs that is not listed is an interface all the same, kept
   // as given (tets changed subdomain across it, the sphere of a gmsh sphere-in-box written with
-  // Physical Volumes only moved by 0.07): it gets the ref after the largest listed one.
+  // Physical Volumes only moved by 0.07): it gets the ref after the largest listed one (before
+  // the smallest when the largest is INT32_MAX).
   std::vector<std::uint8_t> found(mesh.num_triangles(), 0);
-  std::int32_t interface_ref = 1;
-  for (const int r : mesh.tri_ref) interface_ref = std::max(interface_ref, r + 1);
+  std::int64_t above = 1, below = 0;
+  for (const int r : mesh.tri_ref)
+    above = std::max<std::int64_t>(above, std::int64_t{r} + 1),
+    below = std::min(below, std::int64_t{r} - 1);
+  const auto interface_ref = static_cast<std::int32_t>(
+      above <= std::numeric_limits<std::int32_t>::max()
+          ? above
+          : std::max<std::int64_t>(below, std::numeric_limits<std::int32_t>::min()));
   for (std::size_t t = 0; t < nt; ++t) {
     const Id* v = &mesh.tets[4 * t];
     // Rounded to zero or below, the exact orientation decides (a valid flat sliver of a
