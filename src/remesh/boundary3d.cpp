@@ -69,10 +69,6 @@ bool normal_turn_ok(const Tri3& before, const Tri3& after, double h) {
   return std::acos(c) <= kTurn + slack;
 }
 
-/// Face slot s of a ball or shell (which holds both sides of an interface face) counted once
-/// (tet_mesh.hpp), so that a closed interface's faces are oriented alike.
-bool listed_once(const TetMesh& m, std::size_t s) { return m.face_side_listed(s); }
-
 FeatureOptions feature_options(const Adapt3dOptions& o) {
   FeatureOptions f;
   f.angle_deg = o.angle_deg;
@@ -97,7 +93,7 @@ Boundary3d::Boundary3d(const TetMesh& m, std::vector<std::int32_t> curved_refs,
   std::vector<SymMat3> metric;
   for (std::size_t slot = 0; slot < m.fbdy.size(); ++slot) {
     const Id t = static_cast<Id>(slot / 4);
-    if (!m.fbdy[slot] || !m.tet_alive(t) || !listed_once(m, slot) || !curved(m.face_ref(slot)))
+    if (!m.fbdy[slot] || !m.tet_alive(t) || !m.face_side_listed(slot) || !curved(m.face_ref(slot)))
       continue;
     const int i = static_cast<int>(slot % 4);
     for (int k = 0; k < 3; ++k) {
@@ -231,7 +227,7 @@ bool curved_boundary_ok(const TetMesh& m, std::span<const Id> ball, Id v, Id to,
   for (const Id t : ball)
     for (int i = 0; i < 4; ++i) {
       const std::size_t s = 4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i);
-      if (!m.fbdy[s] || !listed_once(m, s) || !m.surface->curved(m.face_ref(s))) continue;
+      if (!m.fbdy[s] || !m.face_side_listed(s) || !m.surface->curved(m.face_ref(s))) continue;
       Id f[3];
       for (int k = 0; k < 3; ++k) f[k] = m.tv[4 * t + kTetFace[i][k]];
       if (f[0] != v && f[1] != v && f[2] != v) continue;
@@ -254,7 +250,7 @@ bool curved_split_ok(const TetMesh& m, std::span<const Id> shell, Id a, Id b, co
     for (int i = 0; i < 4; ++i) {
       const std::size_t s = 4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i);
       const Id opp = m.tv[s];
-      if (opp == a || opp == b || !m.fbdy[s] || !listed_once(m, s) ||
+      if (opp == a || opp == b || !m.fbdy[s] || !m.face_side_listed(s) ||
           !m.surface->curved(m.face_ref(s)))
         continue;
       Id f[3];

@@ -2,7 +2,9 @@
 // Volumes with curved boundaries for the tests of the 3D remesher's curved patches: a coarsely
 // faceted cylinder and a ball.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -102,6 +104,33 @@ inline std::vector<SymMat3> cylinder_metric(const Mesh& m, double r, double h, d
     out.push_back(x);
   }
   return out;
+}
+
+/// m with tet refs region(centroid) (a Vec3 -> int) and the faces between two refs a < b listed
+/// with ref 10 a + b.
+template <class Region>
+inline Mesh with_regions(Mesh m, Region region) {
+  std::map<std::array<Id, 3>, std::pair<int, std::array<Id, 3>>> seen;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    const Id* v = &m.tets[4 * t];
+    Vec3 c{};
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 3; ++k) c[k] += m.coords[3 * static_cast<std::size_t>(v[i]) + k] / 4;
+    m.tet_ref[t] = region(c);
+    for (int i = 0; i < 4; ++i) {
+      const std::array<Id, 3> f = {v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]};
+      std::array<Id, 3> key = f;
+      std::sort(key.begin(), key.end());
+      const auto [it, fresh] = seen.try_emplace(key, m.tet_ref[t], f);
+      if (fresh || it->second.first == m.tet_ref[t]) continue;
+      const int a = std::min(it->second.first, m.tet_ref[t]),
+                b = std::max(it->second.first, m.tet_ref[t]);
+      m.triangles.insert(m.triangles.end(), f.begin(), f.end());
+      m.tri_ref.push_back(10 * a + b);
+      m.tri_tag.push_back(0);
+    }
+  }
+  return m;
 }
 
 }  // namespace riemesh::test

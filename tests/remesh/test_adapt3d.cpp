@@ -611,37 +611,11 @@ TEST(Adapt3d, InterfaceMeetingOneWallRefIsRemeshed) {
   }
 }
 
-/// m with tet refs region(centroid) and the faces between two refs a < b listed with ref 10 a + b.
-template <class Region>
-Mesh with_regions(Mesh m, Region region) {
-  std::map<std::array<Id, 3>, std::pair<int, std::array<Id, 3>>> seen;
-  for (std::size_t t = 0; t < m.num_tets(); ++t) {
-    const Id* v = &m.tets[4 * t];
-    Vec3 c{};
-    for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 3; ++k) c[k] += m.coords[3 * static_cast<std::size_t>(v[i]) + k] / 4;
-    m.tet_ref[t] = region(c);
-    for (int i = 0; i < 4; ++i) {
-      const std::array<Id, 3> f = {v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]};
-      std::array<Id, 3> key = f;
-      std::sort(key.begin(), key.end());
-      const auto [it, fresh] = seen.try_emplace(key, m.tet_ref[t], f);
-      if (fresh || it->second.first == m.tet_ref[t]) continue;
-      const int a = std::min(it->second.first, m.tet_ref[t]),
-                b = std::max(it->second.first, m.tet_ref[t]);
-      m.triangles.insert(m.triangles.end(), f.begin(), f.end());
-      m.tri_ref.push_back(10 * a + b);
-      m.tri_tag.push_back(0);
-    }
-  }
-  return m;
-}
-
 // Four subdomains around the line x = y = 0.5 (four planar interfaces meeting there, as gmsh's
 // 2 x 2 boxes): the line's vertices were fixed, its edges kept at the input's 0.25, and an
 // anisotropic field strung vertices within 1e-5 of it (tets of quality 1e-7). It is a ridge.
 TEST(Adapt3d, LineWhereFourInterfacesMeetIsRefined) {
-  const Mesh in = with_regions(
+  const Mesh in = test::with_regions(
       unit_cube(4), [](const Vec3& c) { return 1 + (c[0] > 0.5 ? 1 : 0) + (c[1] > 0.5 ? 2 : 0); });
   Adapt3dOptions o;
   o.hgrad = 0.0;
@@ -674,7 +648,7 @@ TEST(Adapt3d, LineWhereFourInterfacesMeetIsRefined) {
 // the kept surface's floor and a note (remeshed up to its fixed rim, vertices piled up there).
 TEST(Adapt3d, PlanarInterfaceMeetingACurvedPatchIsKept) {
   const Mesh in =
-      with_regions(test::unit_ball(4), [](const Vec3& c) { return c[0] > 0.0 ? 2 : 1; });
+      test::with_regions(test::unit_ball(4), [](const Vec3& c) { return c[0] > 0.0 ? 2 : 1; });
   Adapt3dOptions o;
   o.hgrad = 0.0;
   const Adapt3dResult r =

@@ -213,28 +213,10 @@ TEST(Adapt3dCurved, BallWithinHausd) {
 }
 
 /// The unit ball unit_ball(n) with the tets inside radius 0.5 (a sphere of cube shells when n
-/// is a multiple of 4) of tet ref 2, the faces between them and the rest listed with ref 7.
+/// is a multiple of 4) of tet ref 2, the faces between them and the rest listed with ref 12.
 Mesh ball_in_ball(int n) {
-  Mesh in = test::unit_ball(n);
-  std::map<std::array<Id, 3>, std::size_t> seen;
-  for (std::size_t t = 0; t < in.num_tets(); ++t) {
-    Vec3 c{};
-    for (int i = 0; i < 4; ++i) c = c + 0.25 * point(in, in.tets[4 * t + i]);
-    in.tet_ref[t] = norm(c) < 0.5 ? 2 : 1;
-  }
-  for (std::size_t t = 0; t < in.num_tets(); ++t)
-    for (int i = 0; i < 4; ++i) {
-      std::array<Id, 3> f;
-      for (int k = 0; k < 3; ++k) f[k] = in.tets[4 * t + kTetFace[i][k]];
-      std::array<Id, 3> key = f;
-      std::sort(key.begin(), key.end());
-      const auto [it, fresh] = seen.try_emplace(key, t);
-      if (fresh || in.tet_ref[it->second] == in.tet_ref[t]) continue;
-      in.triangles.insert(in.triangles.end(), f.begin(), f.end());
-      in.tri_ref.push_back(7);
-      in.tri_tag.push_back(kTagNone);
-    }
-  return in;
+  return test::with_regions(test::unit_ball(n),
+                            [](const Vec3& c) { return norm(c) < 0.5 ? 2 : 1; });
 }
 
 // A ball of radius 0.5 inside the unit ball (a closed curved interface between two regions, as
@@ -251,9 +233,9 @@ TEST(Adapt3dCurved, ClosedCurvedInterfaceIsRemeshed) {
     s.vert_ref.assign(m.num_vertices(), 0);
     s.vert_tag.assign(m.num_vertices(), 0);
     for (std::size_t f = 0; f < m.num_triangles(); ++f)
-      if (m.tri_ref[f] == 7) {
+      if (m.tri_ref[f] == 12) {
         s.triangles.insert(s.triangles.end(), &m.triangles[3 * f], &m.triangles[3 * f + 3]);
-        s.tri_ref.push_back(7);
+        s.tri_ref.push_back(12);
       }
     return s;
   };

@@ -8,6 +8,7 @@
 #include <set>
 #include <vector>
 
+#include "curved_test_meshes.hpp"
 #include "mesh/adjacency.hpp"
 #include "mesh/fixtures.hpp"
 #include "metric/metric.hpp"
@@ -98,33 +99,14 @@ TEST(PlanarPieces3d, SmoothEdgesKeepARefWhole) {
 // one ref): two planes at right angles, two pieces; the face seen from both sides gets the
 // piece's ref on both.
 TEST(PlanarPieces3d, LShapedInterfaceIsSplit) {
-  Mesh cube = unit_cube(4);
-  std::map<std::array<Id, 3>, int> seen;
-  for (std::size_t t = 0; t < cube.num_tets(); ++t) {
-    Vec3 c{};
-    for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 3; ++k)
-        c[k] += cube.coords[3 * static_cast<std::size_t>(cube.tets[4 * t + i]) + k] / 4;
-    cube.tet_ref[t] = c[0] < 0.5 && c[1] < 0.5 ? 2 : 1;
-  }
-  for (std::size_t t = 0; t < cube.num_tets(); ++t)
-    for (int i = 0; i < 4; ++i) {
-      std::array<Id, 3> f;
-      for (int k = 0; k < 3; ++k) f[k] = cube.tets[4 * t + kTetFace[i][k]];
-      std::array<Id, 3> key = f;
-      std::sort(key.begin(), key.end());
-      const auto [it, fresh] = seen.try_emplace(key, cube.tet_ref[t]);
-      if (fresh || it->second == cube.tet_ref[t]) continue;
-      cube.triangles.insert(cube.triangles.end(), f.begin(), f.end());
-      cube.tri_ref.push_back(10);
-      cube.tri_tag.push_back(0);
-    }
+  const Mesh cube = test::with_regions(
+      unit_cube(4), [](const Vec3& c) { return c[0] < 0.5 && c[1] < 0.5 ? 2 : 1; });
   TetMesh m = tet_mesh(cube);
   const auto pieces = split_planar_pieces(m, 45.0, std::sqrt(3.0));
   ASSERT_EQ(pieces.size(), 1u);
-  EXPECT_EQ(pieces.begin()->second, 10);
+  EXPECT_EQ(pieces.begin()->second, 12);
   const auto planes = planes_by_ref(m);
-  EXPECT_EQ(planes.at(10).size(), 1u);
+  EXPECT_EQ(planes.at(12).size(), 1u);
   EXPECT_EQ(planes.at(pieces.begin()->first).size(), 1u);
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     if (m.fbdy[s] && m.tadj[s] != kNoId) {
