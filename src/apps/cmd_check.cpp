@@ -61,7 +61,7 @@ std::string issue_line(const CheckIssue& i, int dim) {
     s += " ";
     s += std::to_string(i.example + 1);
     if (i.local_face >= 0) {
-      s += " face ";
+      s += i.entity == EntityKind::kTet ? " face " : " edge ";
       s += std::to_string(i.local_face + 1);
     }
     s += where;
@@ -106,6 +106,12 @@ void run_check(const std::string& path) {
               mesh.num_triangles(), mesh.num_tets(), mesh.num_edges());
   for (const CheckIssue& i : report.issues) std::printf("%s\n", issue_line(i, mesh.dim).c_str());
   if (!crossing.empty()) std::printf("%s\n", crossing.c_str());
+  for (const CheckIssue& i : report.notes)
+    std::printf("  note, %s\n", issue_line(i, mesh.dim).substr(2).c_str());
+  if (!report.notes.empty())
+    std::printf(
+        "  (a surface of several regions: edges where they meet are on 3 or more triangles, and an "
+        "interface may face either region)\n");
   std::fflush(stdout);
   if (!valid) throw ExitStatus{1};
 }
@@ -116,7 +122,8 @@ void register_check(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "check",
       "Check a mesh (ids, orientation, conformity, boundary; surfaces: crossing triangles): exit 0 "
-      "valid, 1 invalid, 2 unreadable. Ids in the report are 1-based, as in Medit files");
+      "valid, 1 invalid, 2 unreadable. Ids in the report are 1-based, as in Medit files. A "
+      "surface may bound several regions (edges on 3 or more triangles, noted, valid)");
   auto path = std::make_shared<std::string>();
   cmd->add_option("file", *path, "Mesh file (.mesh, .meshb, .msh)")->required();
   cmd->callback([path] { run_check(*path); });

@@ -206,6 +206,8 @@ const char* to_string(CheckCategory category) {
       return "listed entity not in the elements";
     case CheckCategory::kDuplicateBoundaryEntity:
       return "entity listed twice";
+    case CheckCategory::kRegionsMeet:
+      return "edges on 3 or more triangles (where regions meet)";
   }
   return "unknown";
 }
@@ -216,8 +218,9 @@ std::size_t CheckReport::count(CheckCategory category) const {
 }
 
 const CheckIssue* CheckReport::find(CheckCategory category) const {
-  for (const CheckIssue& issue : issues)
-    if (issue.category == category) return &issue;
+  for (const auto* list : {&issues, &notes})
+    for (const CheckIssue& issue : *list)
+      if (issue.category == category) return &issue;
   return nullptr;
 }
 

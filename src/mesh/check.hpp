@@ -31,6 +31,8 @@ enum class CheckCategory {
   kMissingBoundary,          // a boundary face (edge in 2D) of the elements not listed
   kOrphanEntity,             // a listed triangle (edge) that is no face (edge) of any element
   kDuplicateBoundaryEntity,  // a triangle or edge listed twice
+  kRegionsMeet,  // surface: an edge on 3 or more triangles, where the regions of a surface of
+                 // several regions meet (a note, not an issue: `riemesh mesh` takes it)
 };
 
 /// Relative tolerance of the measure test: an element is degenerate when its signed measure is
@@ -52,8 +54,11 @@ struct CheckIssue {
 
 struct CheckReport {
   std::vector<CheckIssue> issues;  // in CheckCategory order, one per category present
+  /// Found but valid: edges where regions meet on a surface (kRegionsMeet) and, on such a
+  /// surface, kInconsistentOrientation (an interface may face either way).
+  std::vector<CheckIssue> notes;
   bool valid() const { return issues.empty(); }
-  /// The number of entities with that problem (0 when absent).
+  /// The number of entities with that problem, among the issues or the notes (0 when absent).
   std::size_t count(CheckCategory category) const;
   const CheckIssue* find(CheckCategory category) const;
 };

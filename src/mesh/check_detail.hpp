@@ -36,7 +36,12 @@ class Collector {
   bool has(CheckCategory c) const { return issues_.count(c) != 0; }
   CheckReport report() const {
     CheckReport r;
-    for (const auto& [c, issue] : issues_) r.issues.push_back(issue);
+    const bool regions_meet = has(CheckCategory::kRegionsMeet);
+    for (const auto& [c, issue] : issues_) {
+      const bool note = c == CheckCategory::kRegionsMeet ||
+                        (regions_meet && c == CheckCategory::kInconsistentOrientation);
+      (note ? r.notes : r.issues).push_back(issue);
+    }
     return r;
   }
 

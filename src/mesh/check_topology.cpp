@@ -43,14 +43,16 @@ bool is_nonmanifold(const Adjacency& adj, Id face) {
   return std::binary_search(adj.nonmanifold_faces.begin(), adj.nonmanifold_faces.end(), face);
 }
 
-void check_nonmanifold(const Adjacency& adj, const Distinct& d, Collector& col) {
+/// Faces on more than two elements. On a surface those are edges where regions meet (a wall
+/// inside a box, the interface of two solids), reported as kRegionsMeet.
+void check_nonmanifold(const Adjacency& adj, const Distinct& d, bool surface, Collector& col) {
   const int k = adj.verts_per_simplex;
+  const auto category = surface ? CheckCategory::kRegionsMeet : CheckCategory::kNonManifoldFace;
   std::set<std::vector<Id>> seen;  // the few non-manifold faces, counted once each
   for (Id f : adj.nonmanifold_faces) {
     const auto fv = face_vertices(d.verts, k, f / k, f % k);
     if (seen.insert(sorted(fv)).second)
-      col.add(CheckCategory::kNonManifoldFace, k == 4 ? EntityKind::kTet : EntityKind::kTriangle,
-              d.id(f / k), fv, f % k);
+      col.add(category, k == 4 ? EntityKind::kTet : EntityKind::kTriangle, d.id(f / k), fv, f % k);
   }
 }
 
@@ -185,7 +187,7 @@ void check_topology(const Mesh& m, const Elements& el, const std::vector<Id>& ke
                     Collector& col) {
   const Distinct d = distinct_elements(el, kept);
   const Adjacency adj = build_adjacency(d.verts, el.k, m.num_vertices());
-  check_nonmanifold(adj, d, col);
+  check_nonmanifold(adj, d, m.kind() == MeshKind::kSurface, col);
   switch (m.kind()) {
     case MeshKind::kVolume:
       check_volume_boundary(m, adj, d, col);

@@ -44,6 +44,16 @@ if [ $code -eq 1 ] && [[ "$out" == *"INVALID"* ]] &&
 else
   ko "check-surface-crossing: $code $out"
 fi
+# gmsh's two boxes listed as one surface (tests/data): their 20 shared edges are on 3 triangles,
+# where the regions meet: noted, valid (riemesh mesh takes it).
+two_boxes="$(dirname "$0")/../data/two_boxes_gmsh.mesh"
+out=$("$R" check "$two_boxes"); code=$?
+if [ $code -eq 0 ] && [[ "$out" == *": valid, surface"* ]] &&
+  [[ "$out" == *"note, edges on 3 or more triangles (where regions meet): 20 (first: triangle "* ]]; then
+  ok check-surface-of-two-regions
+else
+  ko "check-surface-of-two-regions: $code $out"
+fi
 
 # --- stats --json on two right triangles ------------------------------------------------------
 # Areas ½ each; Euclidean mean ratio 4√3·½/(1+1+2) = √3/2 (bin [0.8, 0.9)). With M = diag(4, 1):

@@ -305,7 +305,35 @@ TEST(Check, SurfaceOrientation) {
   EXPECT_GE(check_mesh(z).count(C::kZeroMeasureElement), 1u);
 }
 
+TEST(Check, SurfaceOfTwoRegions) {
+  // Two tets' surfaces sharing the triangle (0, 1, 2), listed once: its 3 edges are on 3
+  // triangles each. A surface of two regions: valid, the meeting edges noted.
+  Mesh m;
+  m.dim = 3;
+  m.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.2, 0.2, 1, 0.2, 0.2, -1};
+  m.vert_ref.assign(5, 0);
+  // Region above (apex 3) faces out; the interface (0, 2, 1) faces down, out of it; below
+  // (apex 4) its other faces face out.
+  m.triangles = {0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3, 0, 4, 1, 1, 4, 2, 2, 4, 0};
+  m.tri_ref.assign(7, 1);
+  m.tri_tag.assign(7, 0);
+  const CheckReport r = check_mesh(m);
+  EXPECT_TRUE(r.valid()) << describe(r);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_EQ(r.notes[0].category, C::kRegionsMeet);
+  EXPECT_EQ(r.count(C::kRegionsMeet), 3u);
+  // An outer triangle of the region below turned: its edges to vertex 4 are traversed the same
+  // way by both triangles, noted (`riemesh mesh` takes such a surface), still valid.
+  Mesh turned = m;
+  std::swap(turned.triangles[3 * 4 + 1], turned.triangles[3 * 4 + 2]);
+  const CheckReport t = check_mesh(turned);
+  EXPECT_TRUE(t.valid()) << describe(t);
+  EXPECT_EQ(t.count(C::kInconsistentOrientation), 2u);
+  // The same turn on a surface of one region is an issue (SurfaceOrientation); so is an edge
+  // on 3 elements of a planar mesh or of a volume (NonManifoldFace).
+}
+
 TEST(Check, CategoryNames) {
-  for (int c = 0; c <= static_cast<int>(C::kDuplicateBoundaryEntity); ++c)
+  for (int c = 0; c <= static_cast<int>(C::kRegionsMeet); ++c)
     EXPECT_STRNE(to_string(static_cast<C>(c)), "unknown");
 }
