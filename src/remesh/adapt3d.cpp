@@ -470,8 +470,9 @@ bool keep_locality(Remesh3dContext& ctx, std::size_t renumber_after, SweepMemos&
 }
 
 /// The longest edge, in the metric, of the listed faces kept as given or on curved interfaces
-/// between subdomains (closed ones are remeshed, but coarse facets far from their smooth
-/// surface may refuse their splits) or, with `outer`, of all listed faces; 0 when there is none.
+/// between subdomains (remeshed when their faces form a manifold surface, but coarse facets far
+/// from their smooth surface may refuse their splits) or, with `outer`, of all listed faces; 0
+/// when there is none.
 double longest_kept_edge(const Remesh3dContext& ctx, bool outer) {
   const TetMesh& m = ctx.mesh();
   double longest = 0.0;
@@ -654,9 +655,10 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
     else
       std::snprintf(note, sizeof note,
                     "curved interfaces between subdomains keep edges up to %.3g long in the "
-                    "metric (3D remeshing refines planar interfaces and closed curved ones "
-                    "touching no other surface, within --hausd of their facets; others are kept "
-                    "as given): the tets along them cannot follow the sizes",
+                    "metric (3D remeshing refines them within --hausd of their facets, but keeps "
+                    "as given those with three faces of one ref at an edge, and the lines where "
+                    "one meets two planes or a kept interface): the tets along them cannot "
+                    "follow the sizes",
                     l);
     result.report.notes.push_back(note);
   }

@@ -30,10 +30,16 @@ bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to)
     const auto has = [&](std::int32_t p) { return std::find(refs, refs + n, p) != refs + n; };
     return n >= 2 && has(p0) && has(p1);
   }
+  // A rim vertex (remesh3d_context.hpp: the rebuilt curved patch p0 meets the planar p1, with
+  // 2 or 3 faces on the rim): along the rim, an edge on both.
+  if (k == VertexKind::kCurve && m.surface && m.surface->curved(p0) && !m.surface->curved(p1)) {
+    const auto has = [&](std::int32_t p) { return std::find(refs, refs + n, p) != refs + n; };
+    return has(p0) && has(p1);
+  }
   if (n != 2) return false;
   if (k == VertexKind::kPlanar) return refs[0] == p0 && refs[1] == p0;
-  // (curved patches meeting a planar or kept interface are fixed; a closed curved interface is
-  // on the reconstruction: m.surface)
+  // (curved patches meeting a kept interface are fixed; a rebuilt curved interface is on the
+  // reconstruction: m.surface)
   if (interface && !(m.surface && m.surface->curved(refs[0]) && m.surface->curved(refs[1])))
     return false;
   if (k == VertexKind::kSurface) return refs[0] == p0 && refs[1] == p0;

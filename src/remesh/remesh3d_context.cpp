@@ -80,18 +80,18 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
       background_(take_points(input), std::move(input.tets), std::move(metrics), options.interp,
                   tet_neighbours(mesh_)),
       constant_(same_metric<3>(background_.metrics())) {
-  if (!options.keep_surface && options.detect_angles) {
-    const double diag = diagonal(mesh_);
-    pieces_ = split_planar_pieces(mesh_, options.angle_deg, kFlatness * diag);
-  }
+  flat_tol_ = kFlatness * diagonal(mesh_);
+  if (!options.keep_surface && options.detect_angles)
+    pieces_ = split_planar_pieces(mesh_, options.angle_deg, flat_tol_);
   find_planes();
   std::vector<std::int32_t> curved;
-  // Curved patches are reconstructed from their listed faces (an interface's once), outer
-  // patches and closed curved interfaces (a sphere in a box); other curved interfaces are kept
-  // as given (a ref only on interfaces was taken for a curved patch with an empty surface:
-  // every gmsh multi-volume mesh was refused).
+  // Curved patches are reconstructed from their listed faces (an interface's once): outer
+  // patches and curved interfaces whose faces form a manifold surface (a sphere in a box, a
+  // cylinder through a box: its rims are feature lines, see classify_vertices); other curved
+  // interfaces are kept as given (a ref only on interfaces was taken for a curved patch with an
+  // empty surface: every gmsh multi-volume mesh was refused).
   for (const auto& [ref, pl] : planes_)
-    if (!pl.planar && (pl.outer || closed_interface(ref))) curved.push_back(ref);
+    if (!pl.planar && (pl.outer || rebuildable_interface(ref))) curved.push_back(ref);
   if (!options.keep_surface && !curved.empty())
     boundary_ = std::make_unique<Boundary3d>(mesh_, std::move(curved), options),
     mesh_.surface = boundary_.get();
@@ -155,34 +155,23 @@ bool Remesh3dContext::kept_interface(std::int32_t ref) const {
          !(boundary_ && boundary_->curved(ref));
 }
 
-bool Remesh3dContext::closed_interface(std::int32_t ref) const {
+bool Remesh3dContext::rebuildable_interface(std::int32_t ref) const {
   const auto it = planes_.find(ref);
   if (it == planes_.end() || it->second.outer || !it->second.inner) return false;
   const TetMesh& m = mesh_;
   std::vector<std::pair<Id, Id>> edges;
-  std::vector<Id> mine, others;
   for (std::size_t s = 0; s < m.fbdy.size(); ++s) {
     const Id t = static_cast<Id>(s / 4), r = m.tadj[s];
-    if (!m.fbdy[s] || !m.tet_alive(t) || (r != kNoId && r < static_cast<Id>(s))) continue;
+    if (!m.fbdy[s] || !m.tet_alive(t) || r < static_cast<Id>(s) || m.face_ref(s) != ref) continue;
     const int i = static_cast<int>(s % 4);
     const Id f[3] = {m.tv[4 * t + kTetFace[i][0]], m.tv[4 * t + kTetFace[i][1]],
                      m.tv[4 * t + kTetFace[i][2]]};
-    if (m.face_ref(s) != ref) {
-      others.insert(others.end(), f, f + 3);
-      continue;
-    }
-    mine.insert(mine.end(), f, f + 3);
     for (int k = 0; k < 3; ++k)
       edges.push_back({std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3])});
   }
   std::sort(edges.begin(), edges.end());
-  for (std::size_t k = 0; k < edges.size(); k += 2)
-    if (k + 1 >= edges.size() || edges[k] != edges[k + 1] ||
-        (k + 2 < edges.size() && edges[k + 2] == edges[k]))
-      return false;
-  std::sort(others.begin(), others.end());
-  for (const Id v : mine)
-    if (std::binary_search(others.begin(), others.end(), v)) return false;
+  for (std::size_t k = 0; k + 2 < edges.size(); ++k)
+    if (edges[k] == edges[k + 2]) return false;  // an edge on 3 of its faces
   return true;
 }
 
@@ -222,12 +211,23 @@ bool Remesh3dContext::classify_vertices() {
       ++c;
     }
   }
+  std::vector<bool> rim_corner(nv, false);
   for (std::size_t v = 0; v < nv; ++v) {
     VertexKind k = VertexKind::kFixed;
     const std::int32_t* r = &refs[kMostRefs * v];
     std::int32_t r1 = 0, r2 = 0;
+    const bool tagged = m.vtag[v] & (kTagCorner | kTagRequired);
+    if (!tagged && !fixed[v] && inner[v] && rim(r, count[v], r1, r2)) {
+      // The rim of a rebuilt curved patch on coplanar planar ones, an interface among them: on
+      // the reconstruction's feature line (its corners fixed), in the plane (constrain).
+      k = boundary_->kind(static_cast<Id>(v));
+      rim_corner[v] = k == VertexKind::kFixed;
+      if (k == VertexKind::kCurve) m.vplane[2 * v] = r1, m.vplane[2 * v + 1] = r2;
+      m.vkind[v] = k == VertexKind::kCurve ? k : VertexKind::kFixed;
+      continue;
+    }
     // A curved patch meeting an interface its reconstruction does not hold.
-    if ((m.vtag[v] & (kTagCorner | kTagRequired)) || fixed[v] || (off_surface[v] && curved[v]) ||
+    if (tagged || fixed[v] || (off_surface[v] && curved[v]) ||
         (count[v] > 2 && !(inner[v] && interface_line(r, count[v], r1, r2)))) {
       k = VertexKind::kFixed;
     } else if (count[v] > 2) {  // where a planar interface meets coplanar outer patches
@@ -282,7 +282,7 @@ bool Remesh3dContext::classify_vertices() {
   bool froze = false;
   for (std::size_t v = 0; v < nv; ++v) {
     if (m.vkind[v] != VertexKind::kFixed || !inner[v] || !(fixed[v] || curved[v]) ||
-        (m.vtag[v] & (kTagCorner | kTagRequired)))
+        rim_corner[v] || (m.vtag[v] & (kTagCorner | kTagRequired)))
       continue;
     for (int c = 0; c < std::min(count[v], kMostRefs); ++c) {
       const auto it = planes_.find(refs[kMostRefs * v + c]);
@@ -318,6 +318,25 @@ bool Remesh3dContext::interface_line(const std::int32_t* r, int n, std::int32_t&
   return false;
 }
 
+bool Remesh3dContext::rim(const std::int32_t* r, int n, std::int32_t& curved,
+                          std::int32_t& flat) const {
+  if (!boundary_ || n < 2 || n > 4) return false;
+  int nc = 0, nf = 0;
+  for (int k = 0; k < n; ++k) {
+    if (boundary_->curved(r[k])) {
+      if (nc++ == 0) curved = r[k];
+    } else if (const Plane* pl = plane(r[k])) {
+      if (nf++ == 0)
+        flat = r[k];
+      else if (std::abs(dot(pl->n, plane(flat)->n)) < 1.0 - kPlaneNormal)
+        return false;  // two planes: the rim would be on their line
+    } else {
+      return false;  // a kept interface
+    }
+  }
+  return nc > 0 && nf > 0;
+}
+
 bool Remesh3dContext::ridge_direction(std::int32_t r1, std::int32_t r2, Vec3& d) const {
   const Plane *p1 = plane(r1), *p2 = plane(r2);
   if (!p1 || !p2) return false;
@@ -341,11 +360,15 @@ bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
   out.kind = VertexKind::kInterior;
   out.plane[0] = out.plane[1] = 0;
   if (interface && n == 2 && boundary_ && boundary_->curved(refs[0]) &&
-      boundary_->curved(refs[1])) {  // on a closed curved interface: on its reconstruction
+      boundary_->curved(refs[1])) {  // on a rebuilt curved interface: on its reconstruction
     if (options_.keep_surface) return false;
     const bool line = boundary_->feature_edge(mesh_, a, b, refs[0], refs[1]);
     out.kind = line ? VertexKind::kCurve : VertexKind::kSurface;
     out.plane[0] = std::min(refs[0], refs[1]), out.plane[1] = std::max(refs[0], refs[1]);
+  } else if (std::int32_t rc = 0, rp = 0; interface && rim(refs, n, rc, rp)) {
+    if (options_.keep_surface) return false;  // a rebuilt curved patch's rim on a plane
+    out.kind = VertexKind::kCurve;
+    out.plane[0] = rc, out.plane[1] = rp;
   } else if (interface) {  // on a planar interface (its faces once), or where it meets others
     if (options_.keep_surface) return false;
     std::int32_t d[4];
@@ -390,7 +413,11 @@ bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
   const Vec3 ab = mesh_.xyz[b] - mesh_.xyz[a];
   const double t = split_fraction(length(mesh_.metric[a], ab), length(mesh_.metric[b], ab));
   out.p = mesh_.xyz[a] + t * ab;
-  if (on_curved_boundary(out.kind)) out.p = boundary_->place(out.kind, out.p);
+  if (on_curved_boundary(out.kind)) {
+    out.p = boundary_->place(out.kind, out.p);
+    if (out.kind == VertexKind::kCurve && !on_rim_plane(out.plane[0], out.plane[1], out.p))
+      return false;
+  }
   out.metric = metric_for(out.p, a);
   return true;
 }
@@ -480,6 +507,12 @@ bool Remesh3dContext::constrain(Id v, Vec3& p) const {
     p = boundary_->place(k, p);
   }
   return true;
+}
+
+bool Remesh3dContext::on_rim_plane(std::int32_t r1, std::int32_t r2, const Vec3& p) const {
+  const Plane* pl = plane(r1);
+  if (!pl) pl = plane(r2);
+  return !pl || std::abs(dot(pl->n, p) - pl->d) <= flat_tol_;
 }
 
 }  // namespace riemesh

@@ -91,13 +91,23 @@ class Remesh3dContext {
     bool inner = false;  ///< some face of the ref is an interface (between two tets)
   };
   void find_planes();
-  /// Whether `ref` is a curved interface on its own: on interface faces only, which form a
-  /// closed surface (each edge on two of them) touching no other listed face (an inclusion).
-  bool closed_interface(std::int32_t ref) const;
+  /// Whether `ref` is a curved interface the reconstruction can hold: on interface faces only,
+  /// no edge on more than two of them (a manifold surface, closed or with rims on other
+  /// patches).
+  bool rebuildable_interface(std::int32_t ref) const;
   /// The vertices' kinds; true when it found planar interfaces to keep as given (made
   /// non-planar: classify again).
   bool classify_vertices();
   const Plane* plane(std::int32_t ref) const;
+  /// The refs r[0..n) at a vertex or edge are rebuilt curved patches (boundary_) and coplanar
+  /// planar patches, at least one of each: the rim of a curved patch on a plane (a cylinder
+  /// through a box, an inclusion's side meeting its planar caps). True with one of each.
+  bool rim(const std::int32_t* r, int n, std::int32_t& curved, std::int32_t& flat) const;
+  /// Whether p, placed on a feature line for a vertex where a curved patch meets the planar
+  /// patch r1 or r2, is in that plane (within flat_tol_): the reconstructed rim of a planar
+  /// patch is in its plane within rounding; a point far from it was placed on another line
+  /// (the top rim of a cylinder for a vertex of the bottom one).
+  bool on_rim_plane(std::int32_t r1, std::int32_t r2, const Vec3& p) const;
   /// The direction of the line where planar patches r1 < r2 meet: their normals' cross product,
   /// or for coplanar patches the direction of their straight common boundary; false if none.
   bool ridge_direction(std::int32_t r1, std::int32_t r2, Vec3& d) const;
@@ -122,6 +132,7 @@ class Remesh3dContext {
   std::vector<std::int32_t> edge_refs_;
   std::vector<Id> hint_;  // per vertex: a background tet near it
   std::size_t num_input_vertices_ = 0;
+  double flat_tol_ = 0.0;  // kFlatness x the bounding box's diagonal (plane_fit.hpp)
   bool has_interfaces_ = false;
   mutable Id last_found_ = kNoId;
   std::unique_ptr<Boundary3d> boundary_;  // the curved patches (null: none, or kept)

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <string>
 
 #include "curved_test_meshes.hpp"
+#include "io/mesh_file.hpp"
 #include "mesh/adjacency.hpp"
 #include "mesh/check.hpp"
 #include "mesh/distance.hpp"
@@ -48,6 +50,31 @@ std::size_t count_side_vertices(const Mesh& m) {
 }
 
 double worst_quality(const Adapt3dResult& r) { return r.report.passes.back().q_min; }
+
+/// The listed triangles of ref `ref` as a surface (the vertices all kept).
+Mesh faces_of_ref(const Mesh& m, std::int32_t ref) {
+  Mesh s;
+  s.dim = 3;
+  s.coords = m.coords;
+  s.vert_ref.assign(m.num_vertices(), 0);
+  s.vert_tag.assign(m.num_vertices(), 0);
+  for (std::size_t f = 0; f < m.num_triangles(); ++f)
+    if (m.tri_ref[f] == ref) {
+      s.triangles.insert(s.triangles.end(), &m.triangles[3 * f], &m.triangles[3 * f + 3]);
+      s.tri_ref.push_back(ref);
+    }
+  return s;
+}
+
+/// The longest edge of the triangles of s.
+double longest_edge(const Mesh& s) {
+  double longest = 0.0;
+  for (std::size_t f = 0; f < s.num_triangles(); ++f)
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, norm(point(s, s.triangles[3 * f + k]) -
+                                       point(s, s.triangles[3 * f + (k + 1) % 3])));
+  return longest;
+}
 
 /// The fraction of the output's tets below quality 0.1 in the metric it followed (the mean of
 /// their vertices' metrics).
@@ -226,19 +253,7 @@ Mesh ball_in_ball(int n) {
 // interface both ways, the faces listed between the two regions, no note.
 TEST(Adapt3dCurved, ClosedCurvedInterfaceIsRemeshed) {
   Mesh in = ball_in_ball(8);
-  const auto interface = [](const Mesh& m) {
-    Mesh s;
-    s.dim = 3;
-    s.coords = m.coords;
-    s.vert_ref.assign(m.num_vertices(), 0);
-    s.vert_tag.assign(m.num_vertices(), 0);
-    for (std::size_t f = 0; f < m.num_triangles(); ++f)
-      if (m.tri_ref[f] == 12) {
-        s.triangles.insert(s.triangles.end(), &m.triangles[3 * f], &m.triangles[3 * f + 3]);
-        s.tri_ref.push_back(12);
-      }
-    return s;
-  };
+  const auto interface = [](const Mesh& m) { return faces_of_ref(m, 12); };
   const Mesh before = interface(in);
   ASSERT_EQ(before.num_triangles(), 6u * 4 * 4 * 2);
   Adapt3dOptions o;
@@ -251,15 +266,49 @@ TEST(Adapt3dCurved, ClosedCurvedInterfaceIsRemeshed) {
   const Mesh after = interface(r.mesh);
   EXPECT_GT(after.num_triangles(), 4 * before.num_triangles());
   EXPECT_LT(hausdorff_distance(before, after, DistanceOptions{}).two_sided(), o.hausd);
-  double longest = 0.0;
-  for (std::size_t f = 0; f < after.num_triangles(); ++f)
-    for (int k = 0; k < 3; ++k)
-      longest = std::max(longest, norm(point(after, after.triangles[3 * f + k]) -
-                                       point(after, after.triangles[3 * f + (k + 1) % 3])));
-  EXPECT_LT(longest, 0.08 * 1.8);
+  EXPECT_LT(longest_edge(after), 0.08 * 1.8);
   for (const std::string& n : r.report.notes)
     EXPECT_EQ(n.find("interfaces between subdomains"), std::string::npos) << n;
   EXPECT_GT(worst_quality(r), 0.3);
+}
+
+TEST(Adapt3dCurved, CurvedInterfaceWithRimsOnPlanesIsRemeshed) {
+  // gmsh's cylinder of radius 0.4 through a box (tests/data/cylinder_through_box.geo): the
+  // cylinder's side, ref 7, is a curved interface whose rims lie on the top and bottom faces
+  // (z = ±1), there split into a disc (refs 8, 9) and the rest (12, 14). Kept as given before
+  // (the note: edges up to 3.06 long, 128 triangles); now remeshed on its reconstruction, the
+  // rims on their feature lines and exactly in the planes.
+  const Mesh in = read_mesh(std::string(RIEMESH_TEST_DATA) + "/cylinder_through_box.mesh");
+  const Mesh before = faces_of_ref(in, 7);
+  ASSERT_EQ(before.num_triangles(), 128u);
+  Adapt3dOptions o;
+  o.hausd = 0.01;
+  const Adapt3dResult r =
+      adapt3d(in, std::vector<SymMat3>(in.num_vertices(), isotropic_metric<3>(0.15)), o);
+  const CheckReport check = check_mesh(r.mesh);
+  EXPECT_TRUE(check.valid()) << (check.issues.empty() ? "" : to_string(check.issues[0].category));
+  const Mesh after = faces_of_ref(r.mesh, 7);
+  EXPECT_GT(after.num_triangles(), 3 * before.num_triangles());
+  EXPECT_LT(hausdorff_distance(before, after, DistanceOptions{}).two_sided(), o.hausd);
+  EXPECT_LT(longest_edge(after), 0.15 * 1.8);
+  // The rims: every vertex of the side within 1e-6 of z = ±1 is there within rounding (the
+  // reconstructed rim of a planar patch is in its plane), and on a disc.
+  std::vector<int> on_disc(r.mesh.num_vertices(), 0);
+  for (std::size_t f = 0; f < r.mesh.num_triangles(); ++f)
+    if (r.mesh.tri_ref[f] == 8 || r.mesh.tri_ref[f] == 9)
+      for (int k = 0; k < 3; ++k) on_disc[r.mesh.triangles[3 * f + k]] = 1;
+  int rim = 0;
+  for (const Id v : after.triangles) {
+    const double z = point(r.mesh, v)[2];
+    if (std::abs(std::abs(z) - 1.0) > 1e-6) continue;
+    EXPECT_NEAR(std::abs(z), 1.0, 1e-12);
+    EXPECT_TRUE(on_disc[v]);
+    ++rim;
+  }
+  EXPECT_GT(rim, 3 * 2 * 16);  // (each rim vertex counted on its triangles)
+  for (const std::string& n : r.report.notes)
+    EXPECT_EQ(n.find("interfaces between subdomains"), std::string::npos) << n;
+  EXPECT_GT(worst_quality(r), 0.4);
 }
 
 TEST(Adapt3dCurved, PlanarCubeUnchanged) {
