@@ -206,6 +206,10 @@ Vec3 Boundary3d::place(VertexKind kind, const Vec3& p) const {
   return geo_->on_surface(p, kNoId).point;
 }
 
+bool Boundary3d::chord_instead(const Vec3& placed) const {
+  return geo_->distance(placed) >= 0.8 * kLift * hausd_;
+}
+
 bool Boundary3d::accepts(const std::vector<Tri3>& old_t, const std::vector<Tri3>& kept,
                          const std::vector<Tri3>& new_t, const SymMat3& metric) const {
   double old_worst = 1.0, new_worst = 1.0;

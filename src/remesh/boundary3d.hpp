@@ -52,6 +52,11 @@ class Boundary3d {
   bool feature_edge(const TetMesh& m, Id a, Id b, std::int32_t r0, std::int32_t r1) const;
   /// p placed on the reconstruction (kSurface) or on the feature lines (kCurve).
   Vec3 place(VertexKind kind, const Vec3& p) const;
+  /// Whether a split refused at `placed` (placed on the reconstruction) may go to its point on
+  /// the edge instead: when `placed` is near the limit of the lift from the input polyhedron (at
+  /// least 0.8 of it): the input's facets are there further from their smooth surface than
+  /// hausd allows to follow (coarse facets).
+  bool chord_instead(const Vec3& placed) const;
   /// The Hausdorff and normal checks of an operation replacing the boundary triangles old_t
   /// (all of them) by new_t, kept[i] (an old triangle) becoming new_t[i]; triangle qualities
   /// in `metric` (the operation's: a unit mesh of an anisotropic metric oblique to the surface

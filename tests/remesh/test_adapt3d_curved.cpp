@@ -239,6 +239,27 @@ TEST(Adapt3dCurved, BallWithinHausd) {
   EXPECT_GT(worst_quality(r), 0.2);
 }
 
+TEST(Adapt3dCurved, CoarseFacetsSplitOnTheirEdgesWithinHausd) {
+  // The coarse ball's facets (16 round the equator) lie further from the sphere than --hausd
+  // 0.002: the reconstruction's point of a split is lifted to the limit, its halves left hausd
+  // or its tets inverted, and edges stayed unsplit (longest 0.239 for size 0.1, q min 0.418).
+  // The split then takes the point on the edge.
+  const Mesh ball = test::unit_ball(4);
+  Adapt3dOptions o;
+  o.hausd = 0.002;
+  const double h = 0.1;
+  const Adapt3dResult r =
+      adapt3d(ball, std::vector<SymMat3>(ball.num_vertices(), isotropic_metric<3>(h)), o);
+  const CheckReport check = check_mesh(r.mesh);
+  EXPECT_TRUE(check.valid()) << (check.issues.empty() ? "" : to_string(check.issues[0].category));
+  const Mesh before = faces_of_ref(ball, 1), after = faces_of_ref(r.mesh, 1);
+  EXPECT_LT(hausdorff_distance(before, after, DistanceOptions{}).two_sided(), o.hausd);
+  std::printf("coarse ball, hausd 0.002: longest boundary edge %.3f, q min %.3f\n",
+              longest_edge(after), worst_quality(r));
+  EXPECT_LT(longest_edge(after), 1.6 * h);
+  EXPECT_GT(worst_quality(r), 0.4);
+}
+
 /// The unit ball unit_ball(n) with the tets inside radius 0.5 (a sphere of cube shells when n
 /// is a multiple of 4) of tet ref 2, the faces between them and the rest listed with ref 12.
 Mesh ball_in_ball(int n) {
