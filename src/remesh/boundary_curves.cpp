@@ -180,13 +180,20 @@ void require_no_overlap(const Mesh& mesh, const std::vector<FeatureEdge>& fes, I
     }
 }
 
-/// Corner flags: tags, junctions, ref or side changes, sharp turns.
+/// Corner flags: tags, ends of required edges, junctions, ref or side changes, sharp turns.
 std::vector<std::uint8_t> find_corners(const Mesh& mesh, const CurveOptions& opt,
                                        const std::vector<FeatureEdge>& fes, const Sides& sides,
                                        const std::vector<Id>& off, const std::vector<Id>& list) {
   const std::size_t nv = mesh.num_vertices();
   const double cos_max = std::cos(opt.angle_deg * std::numbers::pi / 180.0);
   std::vector<std::uint8_t> corner(nv, 0);
+  // A required edge is kept as given, its ends too: they never move, and no collapse removes
+  // them (splits already refused the edge; collapses merged 12 required edges into 4 and slid
+  // their ends along curved boundaries: QA hunt 5 F4).
+  for (const FeatureEdge& f : fes)
+    if (f.input_edge != kNoId && static_cast<std::size_t>(f.input_edge) < mesh.edge_tag.size() &&
+        (mesh.edge_tag[f.input_edge] & kTagRequired))
+      corner[f.v0] = corner[f.v1] = 1;
   for (std::size_t vi = 0; vi < nv; ++vi) {
     const auto v = static_cast<Id>(vi);
     const Id deg = off[vi + 1] - off[vi];
@@ -195,7 +202,7 @@ std::vector<std::uint8_t> find_corners(const Mesh& mesh, const CurveOptions& opt
                        std::span<const Id>(list).subspan(static_cast<std::size_t>(off[vi]),
                                                          static_cast<std::size_t>(deg)));
     const std::uint8_t tag = vi < mesh.vert_tag.size() ? mesh.vert_tag[vi] : 0;
-    if (deg != 2 || (tag & (kTagCorner | kTagRequired))) {
+    if (corner[vi] || deg != 2 || (tag & (kTagCorner | kTagRequired))) {
       corner[vi] = 1;
       continue;
     }

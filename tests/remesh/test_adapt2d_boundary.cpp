@@ -36,3 +36,38 @@ TEST(Adapt2dBoundary, NacaWithinHausdAndCornersKept) {
     if (r.mesh.vert_tag[v] & kTagCorner) out_corners.insert({r.mesh.coords[2 * v], r.mesh.coords[2 * v + 1]});
   EXPECT_GE(out_corners.size(), 1u);
 }
+
+TEST(Adapt2dBoundary, RequiredEdgesKeptAsGiven) {
+  // Every third listed edge of the airfoil domain required: at a
+  // size far coarser and far finer than the input, each is an output edge between its input
+  // ends, at their exact places, tagged required. Collapses merged them (12 into 4 on a square)
+  // and slid their ends along the curve (QA hunt 5 F4).
+  Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/2d/naca0012.mesh");
+  in.edge_tag.assign(in.num_edges(), 0);
+  std::set<std::pair<std::pair<double, double>, std::pair<double, double>>> required;
+  const auto xy = [](const Mesh& m, Id v) {
+    return std::pair{m.coords[2 * static_cast<std::size_t>(v)],
+                     m.coords[2 * static_cast<std::size_t>(v) + 1]};
+  };
+  const auto key = [&](const Mesh& m, std::size_t e) {
+    const auto a = xy(m, m.edges[2 * e]), b = xy(m, m.edges[2 * e + 1]);
+    return a < b ? std::pair{a, b} : std::pair{b, a};
+  };
+  for (std::size_t e = 0; e < in.num_edges(); e += 3) {
+    in.edge_tag[e] = kTagRequired;
+    required.insert(key(in, e));
+  }
+  double xmin = 1e300, xmax = -1e300;
+  for (std::size_t v = 0; v < in.num_vertices(); ++v)
+    xmin = std::min(xmin, in.coords[2 * v]), xmax = std::max(xmax, in.coords[2 * v]);
+  for (const double h : {(xmax - xmin) / 4.0, (xmax - xmin) / 80.0}) {
+    Adapt2dOptions o;
+    const std::vector<SymMat2> met(in.num_vertices(), SymMat2{{1 / (h * h), 0.0, 1 / (h * h)}});
+    const Adapt2dResult r = adapt2d(in, met, o);
+    EXPECT_TRUE(check_mesh(r.mesh).valid()) << h;
+    std::set<std::pair<std::pair<double, double>, std::pair<double, double>>> out;
+    for (std::size_t e = 0; e < r.mesh.num_edges(); ++e)
+      if (r.mesh.edge_tag[e] & kTagRequired) out.insert(key(r.mesh, e));
+    EXPECT_EQ(out, required) << "size " << h;
+  }
+}
