@@ -112,7 +112,7 @@ Vec2 guarded(const Vec2& high, const Vec2& safe, double limit) {
 
 Loc locate(const BoundaryCurve& c, double s) {
   const int n = c.num_edges();
-  RIEMESH_CHECK(n > 0);
+  RIEMESH_CHECK(n > 0 && std::isfinite(s));  // (a NaN parameter indexed far out of the curve)
   if (!c.closed) {
     s = std::clamp(s, 0.0, static_cast<double>(n));
     const int k = std::min(static_cast<int>(s), n - 1);

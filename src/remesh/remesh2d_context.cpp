@@ -238,6 +238,9 @@ bool Remesh2dContext::smoothing_target(Id v, NewVertex& out, double min_move,
   if (!(a1 > 0.0 && a2 > 0.0)) return false;
   // Metric length per unit arc on each side; balance the two metric lengths.
   const double d1 = edge_length(mesh_, prev, v) / a1, d2 = edge_length(mesh_, v, next) / a2;
+  // (Sizes 1e7 times the domain's make both lengths 0: the fraction was NaN, and so the curve
+  // parameter, which crashed the curve's evaluation: QA hunt 5 F1.)
+  if (!(d1 + d2 > 0.0) || !std::isfinite(d1 + d2)) return false;
   const double snew = param_at_fraction(curve, sp, sn, d2 / (d1 + d2));
   // Sliding along the curve lengthens one of the two chords: keep both within hausd.
   if (options_.hausd > 0.0 && (chord_deviation(curve, sp, snew) > options_.hausd ||

@@ -71,3 +71,16 @@ TEST(Adapt2dBoundary, RequiredEdgesKeptAsGiven) {
     EXPECT_EQ(out, required) << "size " << h;
   }
 }
+
+TEST(Adapt2dBoundary, SizesFarBeyondTheDomain) {
+  // Sizes 1e7 and 1e10 times the domain: the boundary's metric lengths underflowed to 0 and a
+  // curve parameter became NaN, which crashed the curve's evaluation (SIGSEGV; QA hunt 5 F1).
+  // The result is the coarsest mesh the boundary and --hausd allow.
+  const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/2d/naca0012.mesh");
+  for (const double h : {1e7, 1e10}) {
+    const std::vector<SymMat2> met(in.num_vertices(), SymMat2{{1 / (h * h), 0.0, 1 / (h * h)}});
+    const Adapt2dResult r = adapt2d(in, met, Adapt2dOptions{});
+    EXPECT_TRUE(check_mesh(r.mesh).valid()) << h;
+    EXPECT_LT(r.mesh.num_triangles(), in.num_triangles() / 10) << h;
+  }
+}
