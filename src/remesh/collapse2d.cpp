@@ -70,7 +70,8 @@ Outcome shape_check(const TriMesh& m, const Ball& bfrom, Id from, Id to,
     const Id a = m.tv[3 * t + (i + 1) % 3], b = m.tv[3 * t + (i + 2) % 3];
     if (a == to || b == to) continue;  // removed with the edge
     const double old_area = signed_area(m.xy[from], m.xy[a], m.xy[b]);
-    if (!(signed_area(pt, m.xy[a], m.xy[b]) > 1e-9 * old_area)) return Outcome::kRejectedGeometry;
+    if (!(signed_area(pt, m.xy[a], m.xy[b]) > 1e-9 * old_area) || !fair_area(pt, m.xy[a], m.xy[b]))
+      return Outcome::kRejectedGeometry;
     if (tri_quality(m, to, a, b) < floor) return Outcome::kRejectedQuality;
   }
   return Outcome::kApplied;

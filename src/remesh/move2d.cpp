@@ -19,7 +19,8 @@ Outcome move_vertex(TriMesh& m, Id v, const Vec2& p, const SymMat2& metric, doub
     const int i = vertex_index(m, t, v);
     const Id a = m.tv[3 * t + (i + 1) % 3], b = m.tv[3 * t + (i + 2) % 3];
     const double old_area = signed_area(m.xy[v], m.xy[a], m.xy[b]);
-    if (!(signed_area(p, m.xy[a], m.xy[b]) > 1e-6 * old_area)) return Outcome::kRejectedGeometry;
+    if (!(signed_area(p, m.xy[a], m.xy[b]) > 1e-6 * old_area) || !fair_area(p, m.xy[a], m.xy[b]))
+      return Outcome::kRejectedGeometry;
     if (worst == nullptr) before = std::min(before, tri_quality(m, t));
     const SymMat2 mm = tri_metric(metric, nullptr, m.metric[a], log_of(m.log_metric, a),
                                   m.metric[b], log_of(m.log_metric, b));

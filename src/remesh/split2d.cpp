@@ -42,7 +42,9 @@ bool side_ok(const TriMesh& m, Id t, int i, const NewVertex& nv, double min_qual
   const Vec2 &pa = m.xy[a], &pb = m.xy[b], &pc = m.xy[c];
   // Relative area test: each half must keep a fair share of the original triangle's area scale.
   const double ref = std::abs(signed_area(pa, pb, pc)) * 1e-9;
-  if (!(signed_area(pc, pa, nv.p) > ref && signed_area(pc, nv.p, pb) > ref)) return false;
+  if (!(signed_area(pc, pa, nv.p) > ref && signed_area(pc, nv.p, pb) > ref) ||
+      !fair_area(pc, pa, nv.p) || !fair_area(pc, nv.p, pb))
+    return false;
   if (min_quality <= 0.0) return true;
   const SymMat2 m1 = tri_metric(m.metric[c], log_of(m.log_metric, c), m.metric[a],
                                 log_of(m.log_metric, a), nv.metric, nullptr);

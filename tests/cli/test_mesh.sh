@@ -145,6 +145,23 @@ expect_error_matching mesh-keep-boundary-hausd "\-\-keep-boundary and \-\-hausd 
 "$R" mesh "$TMP/sq.mesh" -o "$TMP/sq_out.mesh" --hsiz 0.05 --keep-boundary 2>&1 >/dev/null |
   grep -q "note: .*sq.mesh: the boundary edges are 1 long on average, 20 times --hsiz; kept as given" &&
   ok mesh-keep-boundary-coarse-noted || ko mesh-keep-boundary-coarse-noted
+# Kept boundary edges far longer than the sizes (a square of 4 edges a side, --hmax 0.05, or
+# --keep-boundary at --hsiz 0.1): vertices crept onto the kept edges over the passes, flat
+# triangles that check calls INVALID, exit 0 (QA hunt 5 F2). Valid now.
+{ printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n16\n'
+  for k in 0 1 2 3; do echo "$(awk "BEGIN{print $k/4}") 0 0"; done
+  for k in 0 1 2 3; do echo "1 $(awk "BEGIN{print $k/4}") 0"; done
+  for k in 4 3 2 1; do echo "$(awk "BEGIN{print $k/4}") 1 0"; done
+  for k in 4 3 2 1; do echo "0 $(awk "BEGIN{print $k/4}") 0"; done
+  printf 'Edges\n16\n'
+  for k in $(seq 1 16); do echo "$k $((k % 16 + 1)) 1"; done
+  echo End; } >"$TMP/sq4.mesh"
+for opts in "--hmax 0.05" "--hsiz 0.1 --keep-boundary"; do
+  # shellcheck disable=SC2086
+  if "$R" mesh "$TMP/sq4.mesh" -o "$TMP/sq4_out.mesh" $opts -q 2>/dev/null &&
+     "$R" check "$TMP/sq4_out.mesh" >/dev/null; then ok "mesh-long-kept-edges-valid ($opts)"
+  else ko "mesh-long-kept-edges-valid ($opts): $("$R" check "$TMP/sq4_out.mesh" | tail -1)"; fi
+done
 # A star polygon whose sharp spike (17.5 degrees) sits next to a gentle turn (37 degrees, no
 # corner): the smooth reconstruction at --hsiz 0.05 crossed the spike's edge and the domain was
 # refused naming edges the user never saw; it is now cut along straight edges, with a note.
