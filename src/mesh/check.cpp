@@ -196,6 +196,8 @@ const char* to_string(CheckCategory category) {
       return "non-manifold face";
     case CheckCategory::kInconsistentOrientation:
       return "inconsistent orientation";
+    case CheckCategory::kOverlappingElements:
+      return "overlapping elements (the mesh folds over an edge)";
     case CheckCategory::kOpenBoundary:
       return "open boundary";
     case CheckCategory::kNonManifoldBoundary:

@@ -22,6 +22,8 @@ enum class CheckCategory {
   kDuplicateElement,         // an element with the same vertex set as an earlier one
   kNonManifoldFace,          // a face (edge in 2D / on surfaces) shared by more than two elements
   kInconsistentOrientation,  // surface: two neighbours traverse their common edge the same way
+  kOverlappingElements,      // planar: two positive neighbours traverse their common edge the
+                             // same way (the mesh folds over itself there)
   kOpenBoundary,             // volume: a boundary edge on one boundary face only; edges-only
                              // mesh: a vertex on one edge
   kNonManifoldBoundary,      // volume: boundary edge on > 2 boundary faces; 2D: a boundary

@@ -70,6 +70,27 @@ void check_surface_orientation(const Adjacency& adj, const Distinct& d, Collecto
     }
 }
 
+/// Planar meshes: two counter-clockwise neighbours traverse their common edge the same way only
+/// where one lies over the other (a fold; clockwise ones are reported as inverted).
+void check_planar_folds(const Mesh& m, const Adjacency& adj, const Distinct& d, Collector& col) {
+  const auto ccw = [&](std::size_t e) {
+    const Id* v = &d.verts[3 * e];
+    const auto p = [&](int k) { return &m.coords[2 * static_cast<std::size_t>(v[k])]; };
+    return (p(1)[0] - p(0)[0]) * (p(2)[1] - p(0)[1]) - (p(1)[1] - p(0)[1]) * (p(2)[0] - p(0)[0]) >
+           0.0;
+  };
+  for (std::size_t e = 0; e < adj.num_elements(); ++e)
+    for (int i = 0; i < 3; ++i) {
+      const Id n = adj.elem2elem[3 * e + i];
+      if (n == kNoId || static_cast<std::size_t>(n) < e) continue;
+      const Id p = d.verts[3 * e + kTriEdge[i][0]], q = d.verts[3 * e + kTriEdge[i][1]];
+      const int lp = local_index(&d.verts[3 * n], 3, p), lq = local_index(&d.verts[3 * n], 3, q);
+      if (lp != (lq + 1) % 3 && ccw(e) && ccw(static_cast<std::size_t>(n)))
+        col.add(CheckCategory::kOverlappingElements, EntityKind::kTriangle, d.id(e),
+                std::vector<Id>{p, q}, i);
+    }
+}
+
 /// Listed edges must be edges of the elements, listed once; returns how often each is listed.
 std::vector<int> check_listed_edges(const Mesh& m, const Adjacency& adj, Collector& col) {
   std::vector<int> listed(adj.num_edges(), 0);
@@ -193,6 +214,7 @@ void check_topology(const Mesh& m, const Elements& el, const std::vector<Id>& ke
       check_volume_boundary(m, adj, d, col);
       break;
     case MeshKind::kPlanar:
+      check_planar_folds(m, adj, d, col);
       check_planar_boundary(m, adj, d, col);
       break;
     case MeshKind::kSurface:

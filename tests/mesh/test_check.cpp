@@ -305,6 +305,28 @@ TEST(Check, SurfaceOrientation) {
   EXPECT_GE(check_mesh(z).count(C::kZeroMeasureElement), 1u);
 }
 
+TEST(Check, PlanarFold) {
+  // The unit square as (0, 1, 2) and (0, 2, 3), and a third counter-clockwise triangle
+  // (0, 1, 3) lying over both: edges 0-1 and 3-0 are traversed the same way by two triangles.
+  // Called valid before (total area 1.5; QA hunt 5 F7).
+  Mesh m;
+  m.dim = 2;
+  m.coords = {0, 0, 1, 0, 1, 1, 0, 1};
+  m.vert_ref.assign(4, 0);
+  m.triangles = {0, 1, 2, 0, 2, 3, 0, 1, 3};
+  m.tri_ref = {1, 1, 2};
+  m.edges = {0, 1, 1, 2, 2, 3, 3, 0, 1, 3};
+  m.edge_ref.assign(5, 1);
+  m.edge_tag.assign(5, 0);
+  const CheckReport r = check_mesh(m);
+  EXPECT_EQ(r.count(C::kOverlappingElements), 2u) << describe(r);
+  EXPECT_FALSE(r.valid());
+  // Without the third triangle: valid (the listed diagonal is then an orphan, dropped here).
+  m.triangles.resize(6), m.tri_ref.resize(2), m.edges.resize(8), m.edge_ref.resize(4),
+      m.edge_tag.resize(4);
+  EXPECT_TRUE(check_mesh(m).valid()) << describe(check_mesh(m));
+}
+
 TEST(Check, SurfaceOfTwoRegions) {
   // Two tets' surfaces sharing the triangle (0, 1, 2), listed once: its 3 edges are on 3
   // triangles each. A surface of two regions: valid, the meeting edges noted.
