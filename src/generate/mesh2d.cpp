@@ -324,9 +324,25 @@ Mesh2dResult mesh_domain2d_impl(const Mesh& boundary, const Mesh2dOptions& optio
   Mesh& start = domain.mesh;
   // Field points on the boundary-only triangulation, before any tag meant for adapt2d.
   const FieldPointStats field_points = insert_field_points2d(start, metrics, options.adapt.interp);
-  bool given_required = false;
-  for (const auto tag : start.edge_tag) given_required |= (tag & kTagRequired) != 0;
-  for (const auto tag : start.vert_tag) given_required |= (tag & kTagRequired) != 0;
+  // The required entities given, by place (adapt2d renumbers): the tags added below for a kept
+  // boundary are taken off again, theirs kept (one RequiredVertices entry left every boundary
+  // vertex and edge required and a corner in the output: QA hunt 5 F5).
+  using Point = std::pair<double, double>;
+  const auto point = [](const Mesh& m, Id v) {
+    return Point{m.coords[2 * static_cast<std::size_t>(v)],
+                 m.coords[2 * static_cast<std::size_t>(v) + 1]};
+  };
+  const auto edge_key = [&](const Mesh& m, std::size_t e) {
+    const Point a = point(m, m.edges[2 * e]), b = point(m, m.edges[2 * e + 1]);
+    return a < b ? std::pair{a, b} : std::pair{b, a};
+  };
+  std::set<Point> required_vertices;
+  std::set<std::pair<Point, Point>> required_edges;
+  for (std::size_t v = 0; v < start.vert_tag.size(); ++v)
+    if (start.vert_tag[v] & kTagRequired)
+      required_vertices.insert(point(start, static_cast<Id>(v)));
+  for (std::size_t e = 0; e < start.edge_tag.size(); ++e)
+    if (start.edge_tag[e] & kTagRequired) required_edges.insert(edge_key(start, e));
   if (options.keep_boundary) {
     for (auto& tag : start.edge_tag) tag |= kTagRequired;
     for (std::size_t e = 0; e < start.num_edges(); ++e)
@@ -336,10 +352,15 @@ Mesh2dResult mesh_domain2d_impl(const Mesh& boundary, const Mesh2dOptions& optio
   Adapt2dResult adapted = adapt2d(std::move(start), std::move(metrics), options.adapt, on_pass);
   Mesh2dResult out;
   out.mesh = std::move(adapted.mesh);
-  if (!given_required) {  // the tags added above were for adapt2d only
-    for (auto& tag : out.mesh.edge_tag) tag &= static_cast<std::uint8_t>(~kTagRequired);
-    for (auto& tag : out.mesh.vert_tag) tag &= static_cast<std::uint8_t>(~kTagRequired);
-    if (options.keep_boundary) keep_real_corners(boundary, options.adapt, out.mesh);
+  if (options.keep_boundary) {  // the tags added above were for adapt2d only
+    Mesh& m = out.mesh;
+    for (std::size_t e = 0; e < m.edge_tag.size(); ++e)
+      if (!required_edges.count(edge_key(m, e)))
+        m.edge_tag[e] &= static_cast<std::uint8_t>(~kTagRequired);
+    for (std::size_t v = 0; v < m.vert_tag.size(); ++v)
+      if (!required_vertices.count(point(m, static_cast<Id>(v))))
+        m.vert_tag[v] &= static_cast<std::uint8_t>(~kTagRequired);
+    keep_real_corners(boundary, options.adapt, m);
   }
   out.metrics = std::move(adapted.metrics);
   out.report = std::move(adapted.report);

@@ -162,6 +162,20 @@ for opts in "--hmax 0.05" "--hsiz 0.1 --keep-boundary"; do
      "$R" check "$TMP/sq4_out.mesh" >/dev/null; then ok "mesh-long-kept-edges-valid ($opts)"
   else ko "mesh-long-kept-edges-valid ($opts): $("$R" check "$TMP/sq4_out.mesh" | tail -1)"; fi
 done
+# One RequiredVertices entry in a 40-gon: only it is required in the output (every boundary
+# vertex and edge came out required and a corner, and a later adapt kept the polygon: QA hunt 5
+# F5).
+{ printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n40\n'
+  awk 'BEGIN{for(k=0;k<40;k++) printf "%.17g %.17g 0\n", cos(2*3.141592653589793*k/40), sin(2*3.141592653589793*k/40)}'
+  printf 'Edges\n40\n'
+  for k in $(seq 1 40); do echo "$k $((k % 40 + 1)) 1"; done
+  printf 'RequiredVertices\n1\n11\nEnd\n'; } >"$TMP/circle_req.mesh"
+"$R" mesh "$TMP/circle_req.mesh" -o "$TMP/circle_req_out.mesh" -q
+count_of() { awk -v k="$1" '$1 == k {getline; print $1; f = 1} END {if (!f) print 0}' "$2"; }
+if [ "$(count_of RequiredVertices "$TMP/circle_req_out.mesh")" = 1 ] &&
+   [ "$(count_of RequiredEdges "$TMP/circle_req_out.mesh")" = 0 ] &&
+   [ "$(count_of Corners "$TMP/circle_req_out.mesh")" -le 1 ]; then ok mesh-one-required-vertex-only
+else ko "mesh-one-required-vertex-only: $(grep -A1 -E '^(Corners|Required)' "$TMP/circle_req_out.mesh" | tr '\n' ' ')"; fi
 # A star polygon whose sharp spike (17.5 degrees) sits next to a gentle turn (37 degrees, no
 # corner): the smooth reconstruction at --hsiz 0.05 crossed the spike's edge and the domain was
 # refused naming edges the user never saw; it is now cut along straight edges, with a note.
