@@ -63,6 +63,16 @@ Mesh load_surface(const std::string& path) {
     m.coords = std::move(xyz);
     m.dim = 3;
   }
+  // Squared distances between coordinates near 1e308 overflow: the distances were inf and the
+  // percentages -nan (QA hunt 5 F13). The bound of `riemesh mesh` for surfaces.
+  for (std::size_t i = 0; i < m.coords.size(); ++i)
+    if (!(std::abs(m.coords[i]) <= 1e150)) {
+      char what[160];
+      std::snprintf(what, sizeof what,
+                    ": vertex %zu: coordinate %g is out of range (at most 1e150 in magnitude)",
+                    i / 3 + 1, m.coords[i]);
+      throw InputError(path + what);
+    }
   return m;
 }
 

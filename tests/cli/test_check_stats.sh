@@ -68,6 +68,10 @@ check_json() {  # NAME PYTHON-BOOLEAN-EXPRESSION-ON-j
 }
 [ "$(printf '%s\n' "$json" | wc -l)" -eq 1 ] && ok stats-json-one-line || ko stats-json-one-line
 check_json stats-keys 'set(j) == {"file","dim","kind","valid","counts","refs","measure","quality","metric"}'
+# A triangle of coordinates near 1e308: its measure overflows; null, not `inf` or `-nan` (not JSON).
+printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n3\n0 0 0 0\n1e308 0 0 0\n0 1e308 0 0\nTriangles\n1\n1 2 3 0\nEnd\n' >"$TMP/huge.mesh"
+"$R" stats "$TMP/huge.mesh" --json | /usr/bin/python3 -c "import json,sys; json.load(sys.stdin)" &&
+  ok stats-json-overflow-is-null || ko stats-json-overflow-is-null
 check_json stats-kind 'j["dim"] == 2 and j["kind"] == "planar" and j["valid"] is True'
 check_json stats-counts 'j["counts"] == {"vertices":4,"edges":5,"triangles":2,"tetrahedra":0,"boundary_edges":4,"boundary_triangles":0,"corners":0,"ridges":0,"required_vertices":0}'
 check_json stats-refs 'j["refs"] == {"vertices":[1],"edges":[1,2,3,4],"triangles":[1,2],"tetrahedra":[]}'

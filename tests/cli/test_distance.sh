@@ -63,4 +63,8 @@ check_json planar-lifted "j['a_to_b']['max'] >= 0.25 and j['b_to_a']['max'] > 1"
 printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n2\n0 0 0 0\n1 0 1 0\nEdges\n1\n1 2 1\nEnd\n' >"$TMP/edge.mesh"
 expect_error distance-no-triangles distance "$TMP/a.mesh" "$TMP/edge.mesh"
 expect_error distance-samples distance "$TMP/a.mesh" "$TMP/b.mesh" --samples 0
+# Coordinates near 1e308: the distances overflowed (inf, -nan%, exit 0); refused by place.
+printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n3\n0 0 0 0\n1e308 0 0 0\n0 1e308 0 0\nTriangles\n1\n1 2 3 0\nEnd\n' >"$TMP/huge.mesh"
+expect_error_matching distance-huge-coordinates "huge.mesh: vertex 2: coordinate 1e+308 is out of range" \
+  distance "$TMP/huge.mesh" "$TMP/a.mesh"
 exit $fail
