@@ -89,4 +89,13 @@ grep -q "SolAtTetrahedra" "$TMP/th.sol" && ok tets-section || ko tets-section
 "$R" transfer -h | grep -q "SolAtTriangles" && ok help-documents-p0 || ko help-documents-p0
 expect_error p0-on-vertex-file transfer "$D/lshape.mesh" "$D/lshape.sol" "$TMP/a.mesh" --p0 -o "$TMP/x.sol"
 expect_no_file p0-no-output "$TMP/x.sol"
+# Meshes of different kinds, and a degenerate old mesh: the errors name the files (they named
+# neither: QA hunt 5 F14).
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n1\n0 0 0\nEnd\n' >"$TMP/empty.mesh"
+expect_error_matching transfer-kinds-named "lshape.mesh is a planar triangle mesh and .*empty.mesh a mesh without elements" \
+  transfer "$D/lshape.mesh" "$D/lshape.sol" "$TMP/empty.mesh" -o "$TMP/x.sol"
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n3\n0 0 0\n1 0 0\n2 0 0\nTriangles\n1\n1 2 3 0\nEnd\n' >"$TMP/flat.mesh"
+printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n3\n1 1\n1\n2\n3\nEnd\n' >"$TMP/flat.sol"
+expect_error_matching transfer-degenerate-old-named "flat.mesh: background mesh: simplex 1 has zero measure" \
+  transfer "$TMP/flat.mesh" "$TMP/flat.sol" "$D/lshape.mesh" -o "$TMP/x.sol"
 exit $fail
