@@ -1,6 +1,7 @@
 #include "generate/field_points2d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -36,6 +37,15 @@ double metric_incircle(const double* a, const double* b, const double* c, const 
   return lift(ax, ay) * (bx * cy - cx * by) + lift(bx, by) * (cx * ay - ax * cy) +
          lift(cx, cy) * (ax * by - bx * ay);
 }
+
+/// An edge whose ends' metric lengths differ by more than this is steep: its candidates are
+/// placed along the metric interpolated on it (Refiner::steep_candidates).
+constexpr double kSteepRatio = 16.0;
+
+/// The largest ratio of the metric lengths at the ends of a piece of a steep edge, and the
+/// deepest bisection (pieces of 2⁻³⁰ of the edge).
+constexpr double kPieceRatio = 1.1;
+constexpr int kMaxPieceDepth = 30;
 
 struct Candidate {
   double x, y;
@@ -82,15 +92,24 @@ class Refiner {
   Id to(Id h) const { return tri_[3 * (h / 3) + (h % 3 + 2) % 3]; }
   const double* pt(Id v) const { return &xy_[2 * static_cast<std::size_t>(v)]; }
 
-  /// Candidates at unit metric spacing on the edges longer than √2 (each edge once).
+  /// Candidates at unit metric spacing on the edges longer than √2 (each edge once). The length
+  /// is the mean of the ends' metric lengths, the points at equal steps; on a steep edge (its
+  /// ends' lengths more than kSteepRatio apart) it is the length in the metric interpolated
+  /// along it, the points at unit steps of that length (steep_candidates).
   std::vector<Candidate> candidates(InterpScheme scheme) const {
     std::vector<Candidate> out;
+    std::vector<std::array<double, 2>> nodes;
     for (std::size_t h = 0; h < tri_.size(); ++h) {
       const Id g = nbr_[h];
       if (locked_[h] || (g != kNoId && g < static_cast<Id>(h))) continue;
       const Id a = from(static_cast<Id>(h)), b = to(static_cast<Id>(h));
       const double dx = pt(b)[0] - pt(a)[0], dy = pt(b)[1] - pt(a)[1];
-      const double len = 0.5 * (metric_length(metrics_[a], dx, dy) + metric_length(metrics_[b], dx, dy));
+      const double la = metric_length(metrics_[a], dx, dy), lb = metric_length(metrics_[b], dx, dy);
+      if (std::max(la, lb) > kSteepRatio * std::min(la, lb)) {
+        steep_candidates(scheme, static_cast<Id>(h), la, lb, nodes, out);
+        continue;
+      }
+      const double len = 0.5 * (la + lb);
       if (!(len > std::sqrt(2.0))) continue;
       const int n = std::max(2, static_cast<int>(std::lround(len)));
       for (int k = 1; k < n; ++k) {
@@ -111,6 +130,14 @@ class Refiner {
     // The cavity in the candidate's metric (anisotropic Delaunay), unless it is isotropic (the
     // Euclidean test decides the same, exactly); a metric cavity that p does not see whole
     // (the mesh is not Delaunay in that metric) gives way to the Euclidean one.
+    // t's vertices and locked edges are on the border of any cavity grown from it: a candidate
+    // too close to them (the test below) is refused before the cavity is searched, with the
+    // same answer (between a fine and a coarse boundary, cavities of hundreds of needles).
+    for (int s = 0; s < 3; ++s) {
+      const Id v = tri_[3 * t + s], h = 3 * t + s;
+      if (metric_length(c.metric, pt(v)[0] - p[0], pt(v)[1] - p[1]) < std::sqrt(0.5)) return false;
+      if (locked_[h] && distance_to_edge(c.metric, p, from(h), to(h)) < 0.5) return false;
+    }
     const bool isotropic = c.metric.c[1] == 0.0 && c.metric.c[0] == c.metric.c[2];
     if (!find_cavity(t, p, isotropic ? nullptr : &c.metric)) return false;
     if (!star_shaped(p) && (isotropic || !find_cavity(t, p, nullptr) || !star_shaped(p)))
@@ -152,6 +179,57 @@ class Refiner {
   }
 
  private:
+  /// The candidates of the steep half-edge h (its ends' metric lengths la, lb): the edge's
+  /// length in the metric interpolated along it, by bisection of the parameter until the lengths
+  /// at the ends of each piece are within kPieceRatio (trapezoids on the pieces), and the points
+  /// at equal steps of that length, n = round(length) pieces as on the other edges. The mean of
+  /// the ends' lengths counts an edge from a fine boundary (size h) to a coarse one as d / 2h
+  /// long, where the interpolated sizes make it log(ratio)-like: a circle of N edges inside a
+  /// square of 4 gave N²/8 candidates at equal steps, every one too close to the circle or the
+  /// corner in its own metric (hunt 5, F3: 1.9 M for N = 3000, 26 s).
+  void steep_candidates(InterpScheme scheme, Id h, double la, double lb,
+                        std::vector<std::array<double, 2>>& nodes,
+                        std::vector<Candidate>& out) const {
+    const Id a = from(h), b = to(h);
+    const double dx = pt(b)[0] - pt(a)[0], dy = pt(b)[1] - pt(a)[1];
+    const auto length = [&](double t) {
+      return metric_length(interpolate<2>(scheme, metrics_[a], metrics_[b], t), dx, dy);
+    };
+    nodes.assign(1, {0.0, la});  // (t, metric length of the edge at t), t increasing
+    // Depth-first bisection; the stack holds the right ends still to reach.
+    std::array<std::array<double, 2>, kMaxPieceDepth + 1> stack;
+    int top = 0;
+    stack[0] = {1.0, lb};
+    while (top >= 0) {
+      const std::array<double, 2> lo = nodes.back(), hi = stack[top];
+      const double big = std::max(lo[1], hi[1]), small = std::min(lo[1], hi[1]);
+      if (top < kMaxPieceDepth && big > kPieceRatio * small) {
+        const double t = 0.5 * (lo[0] + hi[0]);
+        stack[++top] = {t, length(t)};
+      } else {
+        nodes.push_back(hi);
+        --top;
+      }
+    }
+    std::vector<double> sum(nodes.size(), 0.0);
+    for (std::size_t k = 1; k < nodes.size(); ++k)
+      sum[k] = sum[k - 1] + (nodes[k][0] - nodes[k - 1][0]) * 0.5 * (nodes[k][1] + nodes[k - 1][1]);
+    const double len = sum.back();
+    if (!(len > std::sqrt(2.0)) || !std::isfinite(len)) return;
+    const int n = std::max(2, static_cast<int>(std::lround(len)));
+    std::size_t piece = 1;
+    for (int k = 1; k < n; ++k) {
+      const double s = len * k / n;
+      while (piece + 1 < nodes.size() && sum[piece] < s) ++piece;
+      const double w = sum[piece] > sum[piece - 1]
+                           ? std::clamp((s - sum[piece - 1]) / (sum[piece] - sum[piece - 1]), 0.0, 1.0)
+                           : 0.0;
+      const double t = nodes[piece - 1][0] + w * (nodes[piece][0] - nodes[piece - 1][0]);
+      out.push_back({pt(a)[0] + t * dx, pt(a)[1] + t * dy,
+                     interpolate<2>(scheme, metrics_[a], metrics_[b], t), static_cast<Id>(h / 3)});
+    }
+  }
+
   struct Border {
     Id a, b, outside;
     std::uint8_t locked;

@@ -166,3 +166,41 @@ TEST(FieldPoints2d, FewLongEdgesAreRefinedInTheirNeighbourhoodOnly) {
   for (std::size_t v = nv; v < m.num_vertices(); ++v)  // the new points in the patch's reach
     EXPECT_LT(std::hypot(m.coords[2 * v] - 0.5, m.coords[2 * v + 1] - 0.5), 0.2);
 }
+
+TEST(FieldPoints2d, FineHoleInACoarseSquareGivesFewCandidates) {
+  // The unit square as 4 edges around a circle of radius 0.2 in 800 edges (hunt 5, F3), sizes the
+  // mean length of the boundary edges at each vertex, interpolated linearly as `riemesh mesh`
+  // does: the ~800 edges of the fan from the circle to the square's corners are about d / 2h =
+  // 95 long by the mean of their ends' lengths, d / h · log(ratio)-like = 2 to 3 in the sizes
+  // interpolated along them. At equal steps of the former, 136 k candidates, every one too close
+  // to the circle or a corner (1.1 s here, 26 s for 3000 edges); along the latter, a few per edge.
+  const int n = 800;
+  Mesh b;
+  b.dim = 2;
+  b.coords = {0, 0, 1, 0, 1, 1, 0, 1};
+  for (Id i = 0; i < 4; ++i) b.edges.insert(b.edges.end(), {i, (i + 1) % 4});
+  for (int k = 0; k < n; ++k) {
+    const double a = -2 * std::numbers::pi * k / n;  // clockwise: a hole
+    b.coords.insert(b.coords.end(), {0.5 + 0.2 * std::cos(a), 0.5 + 0.2 * std::sin(a)});
+    b.edges.insert(b.edges.end(), {4 + k, 4 + (k + 1) % n});
+  }
+  b.edge_ref.assign(b.num_edges(), 1);
+  Mesh m = triangulate_domain2d(b, {}).mesh;
+  ASSERT_EQ(m.num_vertices(), std::size_t(n + 4));
+  std::vector<double> sum(m.num_vertices(), 0.0);
+  for (std::size_t e = 0; e < m.num_edges(); ++e) {
+    const Id p = m.edges[2 * e], q = m.edges[2 * e + 1];
+    const double l = std::hypot(m.coords[2 * q] - m.coords[2 * p], m.coords[2 * q + 1] - m.coords[2 * p + 1]);
+    sum[p] += 0.5 * l, sum[q] += 0.5 * l;  // every vertex is on two edges
+  }
+  std::vector<SymMat2> metrics;
+  for (const double h : sum) metrics.push_back(isotropic_metric<2>(h));
+  const std::size_t nt0 = m.num_triangles();
+  const FieldPointStats s = insert_field_points2d(m, metrics, InterpScheme::kIsoLinear);
+  EXPECT_LT(s.inserted + s.rejected, 4 * nt0);
+  EXPECT_EQ(m.num_vertices(), std::size_t(n + 4) + s.inserted);
+  EXPECT_TRUE(check_mesh(m).valid());
+  EXPECT_NEAR(area(m), 1.0 - std::numbers::pi * 0.04 * std::sin(2 * std::numbers::pi / n) /
+                                 (2 * std::numbers::pi / n),
+              1e-9);
+}
