@@ -56,18 +56,26 @@ void check_nonmanifold(const Adjacency& adj, const Distinct& d, bool surface, Co
   }
 }
 
-/// Surfaces: a neighbour must traverse the common edge the other way (edge q -> p for p -> q).
-void check_surface_orientation(const Adjacency& adj, const Distinct& d, Collector& col) {
+/// Calls f(e, i, n, p, q) for each pair of neighbouring triangles e < n that traverse their
+/// common edge p -> q (edge i of e) the same way.
+template <class F>
+void for_edges_traversed_alike(const Adjacency& adj, const Distinct& d, F f) {
   for (std::size_t e = 0; e < adj.num_elements(); ++e)
     for (int i = 0; i < 3; ++i) {
       const Id n = adj.elem2elem[3 * e + i];
       if (n == kNoId || static_cast<std::size_t>(n) < e) continue;
       const Id p = d.verts[3 * e + kTriEdge[i][0]], q = d.verts[3 * e + kTriEdge[i][1]];
       const int lp = local_index(&d.verts[3 * n], 3, p), lq = local_index(&d.verts[3 * n], 3, q);
-      if (lp != (lq + 1) % 3)
-        col.add(CheckCategory::kInconsistentOrientation, EntityKind::kTriangle, d.id(e),
-                std::vector<Id>{p, q}, i);
+      if (lp != (lq + 1) % 3) f(e, i, static_cast<std::size_t>(n), p, q);
     }
+}
+
+/// Surfaces: a neighbour must traverse the common edge the other way (edge q -> p for p -> q).
+void check_surface_orientation(const Adjacency& adj, const Distinct& d, Collector& col) {
+  for_edges_traversed_alike(adj, d, [&](std::size_t e, int i, std::size_t, Id p, Id q) {
+    col.add(CheckCategory::kInconsistentOrientation, EntityKind::kTriangle, d.id(e),
+            std::vector<Id>{p, q}, i);
+  });
 }
 
 /// Planar meshes: two counter-clockwise neighbours traverse their common edge the same way only
@@ -79,16 +87,11 @@ void check_planar_folds(const Mesh& m, const Adjacency& adj, const Distinct& d, 
     return (p(1)[0] - p(0)[0]) * (p(2)[1] - p(0)[1]) - (p(1)[1] - p(0)[1]) * (p(2)[0] - p(0)[0]) >
            0.0;
   };
-  for (std::size_t e = 0; e < adj.num_elements(); ++e)
-    for (int i = 0; i < 3; ++i) {
-      const Id n = adj.elem2elem[3 * e + i];
-      if (n == kNoId || static_cast<std::size_t>(n) < e) continue;
-      const Id p = d.verts[3 * e + kTriEdge[i][0]], q = d.verts[3 * e + kTriEdge[i][1]];
-      const int lp = local_index(&d.verts[3 * n], 3, p), lq = local_index(&d.verts[3 * n], 3, q);
-      if (lp != (lq + 1) % 3 && ccw(e) && ccw(static_cast<std::size_t>(n)))
-        col.add(CheckCategory::kOverlappingElements, EntityKind::kTriangle, d.id(e),
-                std::vector<Id>{p, q}, i);
-    }
+  for_edges_traversed_alike(adj, d, [&](std::size_t e, int i, std::size_t n, Id p, Id q) {
+    if (ccw(e) && ccw(n))
+      col.add(CheckCategory::kOverlappingElements, EntityKind::kTriangle, d.id(e),
+              std::vector<Id>{p, q}, i);
+  });
 }
 
 /// Listed edges must be edges of the elements, listed once; returns how often each is listed.
