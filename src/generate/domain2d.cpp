@@ -285,15 +285,26 @@ Domain2d triangulate_domain2d(const Mesh& in, std::span<const double> hole_point
 Mesh extract_boundary2d(const Mesh& mesh) {
   if (mesh.dim != 2) throw InputError("the boundary of a planar mesh needs Dimension 2");
   // Directed edges of the triangles, turned counter-clockwise: the triangle is on their left.
-  std::unordered_map<std::uint64_t, std::pair<int, std::pair<Id, Id>>> sides;
+  // Per edge: how many triangles, the last one's direction, and whether their refs differ (an
+  // interface between subdomains).
+  struct Side {
+    int count = 0;
+    std::pair<Id, Id> directed{kNoId, kNoId};
+    std::int32_t ref = 0;
+    bool interface = false;
+  };
+  std::unordered_map<std::uint64_t, Side> sides;
   for (std::size_t tri = 0; tri < mesh.num_triangles(); ++tri) {
     Id v[3] = {mesh.triangles[3 * tri], mesh.triangles[3 * tri + 1], mesh.triangles[3 * tri + 2]};
     if (orient2d(&mesh.coords[2 * v[0]], &mesh.coords[2 * v[1]], &mesh.coords[2 * v[2]]) < 0)
       std::swap(v[1], v[2]);
+    const std::int32_t ref = mesh.tri_ref.size() == mesh.num_triangles() ? mesh.tri_ref[tri] : 0;
     for (int s = 0; s < 3; ++s) {
-      auto& e = sides[edge_key(v[s], v[(s + 1) % 3])];
-      ++e.first;
-      e.second = {v[s], v[(s + 1) % 3]};
+      Side& e = sides[edge_key(v[s], v[(s + 1) % 3])];
+      e.interface = e.interface || (e.count > 0 && e.ref != ref);
+      e.ref = ref;
+      ++e.count;
+      e.directed = {v[s], v[(s + 1) % 3]};
     }
   }
   Mesh b;
@@ -309,7 +320,9 @@ Mesh extract_boundary2d(const Mesh& mesh) {
         throw InputError(msg);
       }
       const auto it = sides.find(edge_key(x, y));
-      if (it != sides.end() && it->second.first == 1) x = it->second.second.first, y = it->second.second.second;
+      if (it != sides.end() && it->second.count == 1)
+        x = it->second.directed.first, y = it->second.directed.second;
+      if (it != sides.end()) it->second.interface = false;  // listed
       edges.insert(edges.end(), {x, y});
       b.edge_ref.push_back(mesh.edge_ref.size() == mesh.num_edges() ? mesh.edge_ref[e] : 0);
       b.edge_tag.push_back(mesh.edge_tag.size() == mesh.num_edges() ? mesh.edge_tag[e] : std::uint8_t{kTagNone});
@@ -317,13 +330,25 @@ Mesh extract_boundary2d(const Mesh& mesh) {
   } else {
     std::vector<std::pair<Id, Id>> found;
     for (const auto& [key, side] : sides)
-      if (side.first == 1) found.push_back(side.second);
+      if (side.count == 1) found.push_back(side.directed);
     std::sort(found.begin(), found.end());  // deterministic, whatever the hash order
     for (const auto& [x, y] : found) {
       edges.insert(edges.end(), {x, y});
       b.edge_ref.push_back(1);
       b.edge_tag.push_back(kTagNone);
     }
+  }
+  // Interfaces between subdomains that are not listed (adapt keeps and writes them with ref 0;
+  // they were dropped, and the domain meshed from the boundary lost its regions: QA hunt 5 F10).
+  std::vector<std::pair<Id, Id>> interfaces;
+  for (const auto& [key, side] : sides)
+    if (side.count == 2 && side.interface)
+      interfaces.push_back(std::minmax(side.directed.first, side.directed.second));
+  std::sort(interfaces.begin(), interfaces.end());  // deterministic, whatever the hash order
+  for (const auto& [x, y] : interfaces) {
+    edges.insert(edges.end(), {x, y});
+    b.edge_ref.push_back(0);
+    b.edge_tag.push_back(kTagNone);
   }
   std::vector<Id> new_id(mesh.num_vertices(), kNoId);
   for (const Id v : edges) new_id[v] = 0;

@@ -49,4 +49,12 @@ cmp -s "$SHARED/data/2d/aile.mesh" "$TMP/keep.mesh" && ok convert-keeps-old-outp
 "$R" convert "$SHARED/data/vol/bunny_vol.mesh" "$TMP/h.mesh" --hilbert > /dev/null &&
   "$R" check "$TMP/h.mesh" > /dev/null && "$R" convert "$SHARED/data/vol/bunny_vol.mesh" "$TMP/p.mesh" > /dev/null &&
   ! cmp -s "$TMP/h.mesh" "$TMP/p.mesh" && ok hilbert || ko hilbert
+# --boundary keeps an interface between subdomains that is not listed (the unit square's two
+# triangles of refs 1 and 2, only the four sides listed): it was dropped, and the domain meshed
+# from the boundary lost a region (QA hunt 5 F10).
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\nTriangles\n2\n1 2 3 1\n1 3 4 2\nEdges\n4\n1 2 1\n2 3 1\n3 4 1\n4 1 1\nEnd\n' >"$TMP/two_refs.mesh"
+"$R" convert --boundary "$TMP/two_refs.mesh" "$TMP/two_refs_b.mesh" >/dev/null &&
+  [ "$(awk '$1 == "Edges" {getline; print $1}' "$TMP/two_refs_b.mesh")" = 5 ] &&
+  "$R" mesh "$TMP/two_refs_b.mesh" -o "$TMP/two_refs_m.mesh" 2>&1 | grep -q "2 regions" &&
+  ok convert-boundary-keeps-interfaces || ko convert-boundary-keeps-interfaces
 exit $fail
