@@ -1,5 +1,9 @@
 #include "apps/mesh_args.hpp"
 
+#include <cstdio>
+#include <string>
+#include <vector>
+
 #include "core/error.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
@@ -8,7 +12,21 @@
 
 namespace riemesh::cli {
 
-Mesh load_mesh(const std::string& path) { return read_mesh(path); }
+Mesh load_mesh(const std::string& path) {
+  std::vector<std::string> unknown;
+  Mesh mesh = read_mesh(path, &unknown);
+  // A misspelt keyword (`Triangle`) dropped its section without a word: named here (the
+  // FreeFem/BAMG and libMeshb keywords riemesh skips knowingly are not).
+  if (!unknown.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < unknown.size() && k < 3; ++k) list += (k ? ", " : "") + unknown[k];
+    if (unknown.size() > 3) list += ", ...";
+    std::fprintf(stderr, "riemesh: note: %s: %zu unknown keyword%s skipped with %s data: %s\n",
+                 path.c_str(), unknown.size(), unknown.size() > 1 ? "s" : "",
+                 unknown.size() > 1 ? "their" : "its", list.c_str());
+  }
+  return mesh;
+}
 
 std::vector<double> load_metric(const std::string& path, const Mesh& mesh) {
   std::vector<Field> fields = read_sol(path, mesh);

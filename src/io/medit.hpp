@@ -8,6 +8,7 @@
 // per cell block). Malformed input throws InputError with one line: file, keyword, and line
 // (ASCII) or byte offset (binary).
 #include <string>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -17,6 +18,10 @@ struct MeditReadOptions {
   /// Read a `Dimension 3` file whose z are all 0 and that has no tetrahedra, normals or tangents
   /// as a planar mesh (dim 2): Gmsh writes 2D meshes that way.
   bool planar_as_2d = true;
+  /// When given (ASCII files), receives "NAME (line N)" for each keyword skipped that is neither
+  /// read nor known from libMeshb or FreeFem/BAMG: a misspelt `Triangle` dropped its section
+  /// without a word (QA hunt 5 F8).
+  std::vector<std::string>* unknown_keywords = nullptr;
 };
 
 struct MeditWriteOptions {

@@ -74,6 +74,7 @@ void read_pairs(AsciiMeditReader& in, std::string_view kw, int code, std::vector
 Mesh read_medit_ascii(const std::string& path, std::string_view text,
                       const MeditReadOptions& options) {
   AsciiMeditReader in(path, text);
+  in.report_unknown(options.unknown_keywords);
   MeshAssembler out;
   Mesh& m = out.mesh;
   std::string_view kw;

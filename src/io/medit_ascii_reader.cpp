@@ -96,6 +96,8 @@ void AsciiMeditReader::skip_section(std::string_view name) {
     return;
   }
   // Unknown layout (FreeFem/BAMG keywords, Identifier, Geometry ...): skip to the next word.
+  if (unknown_ && !known_skipped_keyword(name))
+    unknown_->push_back(std::string(name) + " (line " + std::to_string(in_.line()) + ")");
   while (true) {
     const std::string_view t = in_.peek();
     if (t.empty() || is_word(t)) return;

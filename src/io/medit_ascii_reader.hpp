@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "io/medit_detail.hpp"
 #include "io/text_scanner.hpp"
@@ -43,6 +44,8 @@ class AsciiMeditReader {
   Locator locator(std::size_t tokens_per_entry) const;
   /// Skips the data of a keyword the caller does not use.
   void skip_section(std::string_view name);
+  /// Where skip_section reports the unknown keywords it skips ("NAME (line N)"), or null.
+  void report_unknown(std::vector<std::string>* out) { unknown_ = out; }
   [[noreturn]] void fail_here(std::string_view keyword, const std::string& what) const {
     fail(where(), keyword, what);
   }
@@ -56,6 +59,7 @@ class AsciiMeditReader {
   std::string last_;  // the last keyword, for messages about what follows a section
   int version_ = 0;
   int dim_ = 0;
+  std::vector<std::string>* unknown_ = nullptr;
 };
 
 }  // namespace riemesh::medit_detail

@@ -106,6 +106,63 @@ const char* skipped_keyword(int code, int& ints) {
   return nullptr;
 }
 
+bool known_skipped_keyword(std::string_view name) {
+  static constexpr std::string_view kKnown[] = {"Identifier",
+                                                "Geometry",
+                                                "VertexOnGeometricVertex",
+                                                "VertexOnGeometricEdge",
+                                                "EdgeOnGeometricEdge",
+                                                "SubDomain",
+                                                "SubDomainFromMesh",
+                                                "SubDomainFromGeom",
+                                                "CrackedEdges",
+                                                "MaximalAngleOfCorner",
+                                                "AngleOfCornerBound",
+                                                "hVertices",
+                                                "MetricAtVertices",
+                                                "VertexOnSupportEdge",
+                                                "VertexOnSupportTriangle",
+                                                "VertexOnSupportTetrahedron",
+                                                "Cracks",
+                                                "EquivalentEdges",
+                                                "VertexOnGeometricFace",
+                                                "EdgeOnGeometricFace",
+                                                "RequiredVerticesGeom",
+                                                "Boundingbox",
+                                                "Time",
+                                                "Iterations",
+                                                "SolAtVertices",
+                                                "SolAtEdges",
+                                                "SolAtTriangles",
+                                                "SolAtTetrahedra",
+                                                "Reference",
+                                                "Quadrilaterals",
+                                                "Prisms",
+                                                "Hexahedra",
+                                                "Pyramids",
+                                                "Polygons",
+                                                "Polyhedra",
+                                                "Curvatures",
+                                                "CornersGeom",
+                                                "RidgesGeom",
+                                                "TangentAtEdges",
+                                                "NormalAtTriangleVertices",
+                                                "NormalAtQuadrilateralVertices",
+                                                "AngleOfCornerBound",
+                                                "RequiredQuadrilaterals",
+                                                "RequiredTetrahedra",
+                                                "RequiredHexahedra",
+                                                "VerticesOnGeometricVertices",
+                                                "VerticesOnGeometricEdges",
+                                                "VerticesOnGeometricTriangles",
+                                                "EdgesOnGeometricEdges",
+                                                "TrianglesOnGeometricTriangles",
+                                                "Dimension"};
+  for (const std::string_view k : kKnown)
+    if (io_detail::iequals(name, k)) return true;
+  return skipped_keyword_ints(name) > 0;
+}
+
 bool holds_elements(std::string_view name) {
   return !io_detail::iequals(name, "RequiredQuadrilaterals");
 }

@@ -66,6 +66,9 @@ int skipped_keyword_ints(std::string_view name);
 /// The name of the skipped element keyword of that code and its integers per entry; nullptr
 /// (ints unchanged) if the code is not one of them.
 const char* skipped_keyword(int code, int& ints);
+/// True for the keywords of libMeshb and of FreeFem/BAMG's dialect that Riemesh skips knowingly
+/// (Identifier, Geometry, VertexOnGeometricEdge, ...).
+bool known_skipped_keyword(std::string_view name);
 /// False for the skipped keywords that list no elements (RequiredQuadrilaterals).
 bool holds_elements(std::string_view name);
 /// "N elements of a kind riemesh does not read (...)": why a skipped element section is refused

@@ -25,11 +25,14 @@ MeshFormat mesh_format(const std::string& path) {
   throw InputError(what);
 }
 
-Mesh read_mesh(const std::string& path) {
+Mesh read_mesh(const std::string& path, std::vector<std::string>* unknown_keywords) {
   switch (mesh_format(path)) {
     case MeshFormat::kMedit:
-    case MeshFormat::kMeditBinary:
-      return read_medit(path);
+    case MeshFormat::kMeditBinary: {
+      MeditReadOptions options;
+      options.unknown_keywords = unknown_keywords;
+      return read_medit(path, options);
+    }
     case MeshFormat::kGmsh:
       return read_gmsh(path);
     case MeshFormat::kVtu:

@@ -3,6 +3,7 @@
 // the format: .mesh / .meshb (Medit), .msh (Gmsh 4.1 written; 4.1 and 2.2 read), .vtu (VTK,
 // write only). Medit files carry no fields (see io/sol.hpp); .msh and .vtu files carry them.
 #include <string>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -23,7 +24,9 @@ struct MeshWriteOptions {
 
 /// Reads a .mesh, .meshb or .msh file. Throws InputError for a .vtu file (not read) or another
 /// extension, and for malformed input.
-Mesh read_mesh(const std::string& path);
+/// `unknown_keywords`, when given, receives the unknown keywords of an ASCII Medit file
+/// (MeditReadOptions::unknown_keywords).
+Mesh read_mesh(const std::string& path, std::vector<std::string>* unknown_keywords = nullptr);
 
 /// Writes a .mesh, .meshb, .msh or .vtu file, atomically.
 void write_mesh(const Mesh& mesh, const std::string& path, const MeshWriteOptions& options = {});

@@ -55,6 +55,15 @@ else
   ko "check-surface-of-two-regions: $code $out"
 fi
 
+# A misspelt keyword (`Triangle`) skipped its section without a word (QA hunt 5 F8): a note
+# names it and its line; FreeFem's dialect keywords (Identifier, Geometry, ...) stay silent.
+sed 's/^Triangles/Triangle/' "$SHARED/data/2d/naca0012.mesh" >"$TMP/misspelt.mesh"
+err=$("$R" check "$TMP/misspelt.mesh" 2>&1 >/dev/null)
+[[ "$err" == *"misspelt.mesh: 1 unknown keyword skipped with its data: Triangle (line "* ]] &&
+  ok check-unknown-keyword-noted || ko "check-unknown-keyword-noted: $err"
+err=$("$R" check "$SHARED/data/dialects/aile_freefem.mesh" 2>&1 >/dev/null)
+[ -z "$err" ] && ok check-freefem-keywords-silent || ko "check-freefem-keywords-silent: $err"
+
 # --- stats --json on two right triangles ------------------------------------------------------
 # Areas ½ each; Euclidean mean ratio 4√3·½/(1+1+2) = √3/2 (bin [0.8, 0.9)). With M = diag(4, 1):
 # lengths 2 (x edges), 1 (y edges), √5 (diagonal) -> 2 of 5 in [1/√2, √2]; histogram bins
