@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/medit_detail.hpp"
@@ -253,23 +255,33 @@ bool make_planar(Mesh& mesh) {
   }
   // Gmsh orients a 2D mesh as its curve loops: all counter-clockwise, or all clockwise (a loop
   // given clockwise), which is the same mesh mirrored and is read turned over (it was called
-  // inverted by `check` and turned over by `convert` only). Triangles of both orientations are
-  // no planar mesh but a surface that lies in z = 0: it stays one.
-  std::size_t ccw = 0, cw = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); t += 3) {
-    const double* a = &xy[2 * static_cast<std::size_t>(mesh.triangles[t])];
-    const double* b = &xy[2 * static_cast<std::size_t>(mesh.triangles[t + 1])];
-    const double* c = &xy[2 * static_cast<std::size_t>(mesh.triangles[t + 2])];
+  // inverted by `check` and turned over by `convert` only), or, with several surfaces, each
+  // surface (triangle ref) its own way: its clockwise ones are turned over too (such a mesh
+  // was read as a surface lying in z = 0 and adapted as one, a 3D output: QA hunt 5 F11).
+  // Triangles of both orientations within one ref are no planar mesh but a surface that lies
+  // in z = 0: it stays one.
+  const std::size_t nt = mesh.num_triangles();
+  const bool refs = mesh.tri_ref.size() == nt;
+  std::map<std::int32_t, std::pair<std::size_t, std::size_t>> by_ref;  // ref -> (ccw, cw)
+  std::vector<std::uint8_t> clockwise(nt, 0);
+  std::size_t cw = 0;
+  for (std::size_t t = 0; t < nt; ++t) {
+    const double* a = &xy[2 * static_cast<std::size_t>(mesh.triangles[3 * t])];
+    const double* b = &xy[2 * static_cast<std::size_t>(mesh.triangles[3 * t + 1])];
+    const double* c = &xy[2 * static_cast<std::size_t>(mesh.triangles[3 * t + 2])];
     const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    ccw += area2 > 0.0, cw += area2 < 0.0;
+    auto& n = by_ref[refs ? mesh.tri_ref[t] : 0];
+    n.first += area2 > 0.0, n.second += area2 < 0.0;
+    clockwise[t] = area2 < 0.0;
+    cw += clockwise[t];
   }
-  if (ccw > 0 && cw > 0) return false;
-  if (cw > 0) {
-    for (std::size_t t = 0; t < mesh.triangles.size(); t += 3)
-      std::swap(mesh.triangles[t + 1], mesh.triangles[t + 2]);
+  for (const auto& [ref, n] : by_ref)
+    if (n.first > 0 && n.second > 0) return false;
+  for (std::size_t t = 0; t < nt; ++t)
+    if (clockwise[t]) std::swap(mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2]);
+  if (cw == nt && cw > 0)  // (all turned: the edges with them, as the domain's boundary)
     for (std::size_t e = 0; e < mesh.edges.size(); e += 2)
       std::swap(mesh.edges[e], mesh.edges[e + 1]);
-  }
   mesh.coords = std::move(xy);
   mesh.dim = 2;
   return true;

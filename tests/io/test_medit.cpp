@@ -172,6 +172,12 @@ TEST(Medit, PlanarAsTwoD) {
   const Mesh mixed = read_medit(dir.file("mixed.mesh"));
   EXPECT_EQ(mixed.dim, 3);
   EXPECT_EQ(mixed.triangles, (std::vector<Id>{0, 2, 1, 0, 2, 3}));
+  // Each ref its own way (Gmsh's mesh of two surfaces, one loop given clockwise): planar, the
+  // clockwise ref turned over (it was a surface in z = 0, adapted as one: QA hunt 5 F11).
+  test::write_text(dir.file("by_ref.mesh"), square + "Triangles 2\n1 3 2 1\n1 3 4 2\n");
+  const Mesh by_ref = read_medit(dir.file("by_ref.mesh"));
+  EXPECT_EQ(by_ref.dim, 2);
+  EXPECT_EQ(by_ref.triangles, (std::vector<Id>{0, 1, 2, 0, 2, 3}));
 }
 
 TEST(Medit, AsciiDialects) {
