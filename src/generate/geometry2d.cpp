@@ -1,6 +1,7 @@
 #include "generate/geometry2d.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -50,6 +51,20 @@ class BoundaryBuilder {
       for (const int id : p.ids) curve_ref_.emplace(id, p.tag);  // the first group wins
     for (const GeoPhysical& p : g.physical_surfaces)
       for (const int id : p.ids) surface_ref_.emplace(id, p.tag);
+    // An entity in no group takes its id, unless a group's tag is that id: then a ref above
+    // every tag and id (two squares, one in Physical Surface(1), the other surface 1 in none,
+    // were both ref 1, one region for the user: QA hunt 5 F6).
+    const auto apart = [](const auto& entities, std::map<int, int>& refs,
+                          const std::vector<GeoPhysical>& groups) {
+      std::set<int> tags;
+      int next = 0;
+      for (const GeoPhysical& p : groups) tags.insert(p.tag), next = std::max(next, p.tag);
+      for (const auto& e : entities) next = std::max(next, e.id);
+      for (const auto& e : entities)
+        if (!refs.count(e.id) && tags.count(e.id) && next < INT_MAX) refs.emplace(e.id, ++next);
+    };
+    apart(g.curves, curve_ref_, g.physical_curves);
+    apart(g.surfaces, surface_ref_, g.physical_surfaces);
     double lo[2] = {0, 0}, hi[2] = {0, 0};
     for (std::size_t i = 0; i < g.points.size(); ++i) {
       const double xy[2] = {g.points[i].x, g.points[i].y};

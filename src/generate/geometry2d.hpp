@@ -11,7 +11,8 @@
 // signed area of the meshed loop), the orientation mesh_domain2d reads: a curve between two
 // surfaces is then given in both directions (an interface), a hole no surface fills stays a hole.
 // Refs: an edge takes the tag of the first Physical Curve holding its curve, else the curve's
-// id; the triangles of a surface the tag of the first Physical Surface holding it, else its id.
+// id; the triangles of a surface the tag of the first Physical Surface holding it, else its id
+// — unless a group of that dimension has that tag: then a ref above every tag and id.
 #include <string>
 #include <vector>
 

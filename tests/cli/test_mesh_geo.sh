@@ -126,4 +126,26 @@ GEO
 sed 's/Plane Surface(1)={1};/Plane Surface(1)={1,2};/' "$TMP/inside.geo" >"$TMP/island.geo"
 "$R" mesh "$TMP/island.geo" -o "$TMP/o8.mesh" -q && "$R" check "$TMP/o8.mesh" >/dev/null &&
   ok geo-island || ko geo-island
+# Two squares, only the second in Physical Surface(1), whose tag is the first's id; curve 2 (the
+# interface) in no group, Physical Curve(2) holding others: both pairs came out as one ref (QA
+# hunt 5 F6). The unnamed ones now take refs above every tag and id.
+cat >"$TMP/collide.geo" <<'GEO'
+lc = 0.2;
+Point(1) = {0, 0, 0, lc}; Point(2) = {1, 0, 0, lc}; Point(3) = {2, 0, 0, lc};
+Point(4) = {2, 1, 0, lc}; Point(5) = {1, 1, 0, lc}; Point(6) = {0, 1, 0, lc};
+Line(1) = {1, 2}; Line(2) = {2, 5}; Line(3) = {5, 6}; Line(4) = {6, 1};
+Line(5) = {2, 3}; Line(6) = {3, 4}; Line(7) = {4, 5};
+Curve Loop(1) = {1, 2, 3, 4}; Curve Loop(2) = {5, 6, 7, -2};
+Plane Surface(1) = {1}; Plane Surface(2) = {2};
+Physical Curve(2) = {5, 6, 7};
+Physical Surface(1) = {2};
+GEO
+"$R" mesh "$TMP/collide.geo" -o "$TMP/collide.mesh" -q &&
+  /usr/bin/python3 - "$TMP/collide.mesh" <<'PY' && ok geo-unnamed-refs-apart || ko geo-unnamed-refs-apart
+import sys
+t = open(sys.argv[1]).read().split()
+i = t.index('Triangles'); n = int(t[i + 1]); tri = {int(t[i + 2 + 4 * k + 3]) for k in range(n)}
+j = t.index('Edges'); m = int(t[j + 1]); edg = {int(t[j + 2 + 3 * k + 2]) for k in range(m)}
+sys.exit(0 if tri == {1, 3} and edg == {1, 2, 3, 4, 8} else 1)
+PY
 exit $fail
