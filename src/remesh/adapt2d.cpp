@@ -55,9 +55,6 @@ constexpr double kPoorBall = 0.55;
 // Rounds of the relocations after the passes (each stops the loop when it moved nothing).
 // Same variants, with 0.55: one round 0.450, two 0.462, three 0.455 (one variant at 0.27).
 constexpr int kRelocationRounds = 2;
-// The smallest --hausd, relative to the domain's bounding-box diagonal
-// (require_hausd_above_roundoff).
-constexpr double kSmallestHausd = 1e-9;
 
 std::string num(double v) {
   char buf[32];

@@ -21,6 +21,10 @@
 
 namespace riemesh {
 
+/// The smallest --hausd, relative to the domain's bounding-box diagonal: below it adapt2d
+/// refuses the run (chords that close ask for millions of boundary vertices).
+inline constexpr double kSmallestHausd = 1e-9;
+
 struct Adapt2dOptions {
   double hmin = 0.0;                                         ///< smallest size (0: none)
   double hmax = std::numeric_limits<double>::infinity();     ///< largest size (inf: none)

@@ -176,6 +176,11 @@ if [ "$(count_of RequiredVertices "$TMP/circle_req_out.mesh")" = 1 ] &&
    [ "$(count_of RequiredEdges "$TMP/circle_req_out.mesh")" = 0 ] &&
    [ "$(count_of Corners "$TMP/circle_req_out.mesh")" -le 1 ]; then ok mesh-one-required-vertex-only
 else ko "mesh-one-required-vertex-only: $(grep -A1 -E '^(Corners|Required)' "$TMP/circle_req_out.mesh" | tr '\n' ' ')"; fi
+# A square 1e12 across, its boundary kept (no size field): the default --hausd 0.01, below 1e-9
+# of the domain, refused it with an error about an option not given (QA hunt 5 F9).
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1e12 0 0\n1e12 1e12 0\n0 1e12 0\nEdges\n4\n1 2 1\n2 3 1\n3 4 1\n4 1 1\nEnd\n' >"$TMP/huge_sq.mesh"
+"$R" mesh "$TMP/huge_sq.mesh" -o "$TMP/huge_sq_out.mesh" -q && "$R" check "$TMP/huge_sq_out.mesh" >/dev/null &&
+  ok mesh-huge-domain-kept-boundary || ko mesh-huge-domain-kept-boundary
 # A star polygon whose sharp spike (17.5 degrees) sits next to a gentle turn (37 degrees, no
 # corner): the smooth reconstruction at --hsiz 0.05 crossed the spike's edge and the domain was
 # refused naming edges the user never saw; it is now cut along straight edges, with a note.
