@@ -138,10 +138,6 @@ bool known_skipped_keyword(std::string_view name) {
                                                 "SolAtTriangles",
                                                 "SolAtTetrahedra",
                                                 "Reference",
-                                                "Quadrilaterals",
-                                                "Prisms",
-                                                "Hexahedra",
-                                                "Pyramids",
                                                 "Polygons",
                                                 "Polyhedra",
                                                 "Curvatures",
@@ -150,19 +146,16 @@ bool known_skipped_keyword(std::string_view name) {
                                                 "TangentAtEdges",
                                                 "NormalAtTriangleVertices",
                                                 "NormalAtQuadrilateralVertices",
-                                                "AngleOfCornerBound",
-                                                "RequiredQuadrilaterals",
                                                 "RequiredTetrahedra",
                                                 "RequiredHexahedra",
                                                 "VerticesOnGeometricVertices",
                                                 "VerticesOnGeometricEdges",
                                                 "VerticesOnGeometricTriangles",
                                                 "EdgesOnGeometricEdges",
-                                                "TrianglesOnGeometricTriangles",
-                                                "Dimension"};
+                                                "TrianglesOnGeometricTriangles"};
   for (const std::string_view k : kKnown)
     if (io_detail::iequals(name, k)) return true;
-  return skipped_keyword_ints(name) > 0;
+  return skipped_keyword_ints(name) > 0;  // (element keywords: Quadrilaterals, Prisms, ...)
 }
 
 bool holds_elements(std::string_view name) {
