@@ -329,7 +329,7 @@ TEST(BoundaryRecovery3d, SharedSurfacesAreRecovered) {
 }
 
 TEST(BoundaryRecovery3d, Deterministic) {
-  const Mesh s = read_mesh(std::string(RIEMESH_SHARED_DATA) + "/surf/rotor.mesh");
+  const Mesh s = read_mesh(RIEMESH_SHARED_DATA "/surf/rotor.mesh");
   const RecoveredVolume a = recover_volume(s), b = recover_volume(s);
   EXPECT_EQ(a.volume.coords, b.volume.coords);
   EXPECT_EQ(a.volume.tets, b.volume.tets);
@@ -379,7 +379,7 @@ TEST(BoundaryRecovery3d, SteinerPointsForFlatTetsAreCounted) {
   // face, inside the volume, holds nearly cocircular quads whose flat tets the recovery breaks up
   // with Steiner points. They were reported with "0 faces and 0 edges missing" and no reason:
   // each one is counted as such now.
-  const Mesh s = read_mesh(std::string(RIEMESH_TEST_DATA) + "/two_boxes_gmsh.mesh");
+  const Mesh s = read_mesh(RIEMESH_TEST_DATA "/two_boxes_gmsh.mesh");
   const RecoveredVolume r = recover_volume(s);
   EXPECT_EQ(r.stats.missing_faces, 0u);
   EXPECT_EQ(r.stats.missing_edges, 0u);
@@ -404,7 +404,7 @@ TEST(BoundaryRecovery3d, InterfaceOfMixedOrientationIsTaken) {
   // separates the two boxes whichever way each triangle faces: it was refused ("cannot bound a
   // volume: inconsistent orientation"); taken now, the edges counted. On a surface of one region
   // (no edge on three triangles) it is still refused.
-  Mesh s = read_mesh(std::string(RIEMESH_TEST_DATA) + "/two_boxes_gmsh.mesh");
+  Mesh s = read_mesh(RIEMESH_TEST_DATA "/two_boxes_gmsh.mesh");
   int turned = 0;
   for (std::size_t t = 0; t < s.num_triangles(); ++t) {
     bool shared = true;
@@ -442,9 +442,9 @@ TEST(BoundaryRecovery3d, InterfaceOfMixedOrientationIsTaken) {
   EXPECT_EQ(inward, 0u);
   EXPECT_GT(outward, 0u);
   EXPECT_TRUE(plus_x == 0 || minus_x == 0) << plus_x << " " << minus_x;
-  EXPECT_EQ(recover_volume(read_mesh(std::string(RIEMESH_TEST_DATA) + "/two_boxes_gmsh.mesh"))
-                .stats.inconsistent_edges,
-            0u);
+  EXPECT_EQ(
+      recover_volume(read_mesh(RIEMESH_TEST_DATA "/two_boxes_gmsh.mesh")).stats.inconsistent_edges,
+      0u);
 }
 
 }  // namespace riemesh

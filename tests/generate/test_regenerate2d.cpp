@@ -134,7 +134,7 @@ TEST(Regenerate2d, AnUnlistedInterfaceComesFromTheTriangleRefs) {
 }
 
 TEST(Regenerate2d, CurvedBoundaryWithinHausd) {
-  const Mesh in = read_mesh(std::string(RIEMESH_SHARED_DATA) + "/2d/naca0012.mesh");
+  const Mesh in = read_mesh(RIEMESH_SHARED_DATA "/2d/naca0012.mesh");
   double xmin = 1e300, xmax = -1e300;
   for (std::size_t v = 0; v < in.num_vertices(); ++v)
     xmin = std::min(xmin, in.coords[2 * v]), xmax = std::max(xmax, in.coords[2 * v]);

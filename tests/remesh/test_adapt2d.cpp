@@ -411,7 +411,7 @@ std::vector<SymMat2> tilted_field(const Mesh& in, double hn0) {
 // after its second pass with every edge still 4-12 long (the band at 0% both times).
 TEST(Adapt2d, PassesGoOnWhileMuchChanges) {
   // gmsh's unit square at lc 0.05 (tests/data/square_gmsh.geo): unstructured.
-  const Mesh in = read_medit(std::string(RIEMESH_TEST_DATA) + "/square_gmsh.mesh");
+  const Mesh in = read_medit(RIEMESH_TEST_DATA "/square_gmsh.mesh");
   Adapt2dOptions o;
   o.hgrad = 0.0;
   const Adapt2dResult r = adapt2d(in, tilted_field(in, 3e-4), o);
@@ -448,7 +448,7 @@ TEST(Adapt2d, HausdBelowRoundoffIsRefused) {
 // triangles: before, passes at 0.89, 3.15, 1.22, 1.05 ... 1.04 of it (7 passes); now 0.23, 1.07,
 // 1.02, 1.01 ... 1.01 (6 passes).
 TEST(Adapt2d, CoarseStartInAnAnisotropicFieldDoesNotOvershoot) {
-  const Mesh in = read_medit(std::string(RIEMESH_TEST_DATA) + "/square_gmsh.mesh");
+  const Mesh in = read_medit(RIEMESH_TEST_DATA "/square_gmsh.mesh");
   const double target = 4.0 / std::sqrt(3.0) * std::log(2.0) / (3e-4 * 0.1);
   Adapt2dOptions o;
   o.hgrad = 0.0;

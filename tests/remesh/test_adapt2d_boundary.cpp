@@ -15,7 +15,7 @@
 using namespace riemesh;
 
 TEST(Adapt2dBoundary, NacaWithinHausdAndCornersKept) {
-  const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/2d/naca0012.mesh");
+  const Mesh in = read_medit(RIEMESH_SHARED_DATA "/2d/naca0012.mesh");
   // A uniform size (1/50 of the domain's width) refines the airfoil and coarsens the far field.
   double xmin = 1e300, xmax = -1e300;
   for (std::size_t v = 0; v < in.num_vertices(); ++v)
@@ -42,7 +42,7 @@ TEST(Adapt2dBoundary, RequiredEdgesKeptAsGiven) {
   // size far coarser and far finer than the input, each is an output edge between its input
   // ends, at their exact places, tagged required. Collapses merged them (12 into 4 on a square)
   // and slid their ends along the curve (QA hunt 5 F4).
-  Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/2d/naca0012.mesh");
+  Mesh in = read_medit(RIEMESH_SHARED_DATA "/2d/naca0012.mesh");
   in.edge_tag.assign(in.num_edges(), 0);
   std::set<std::pair<std::pair<double, double>, std::pair<double, double>>> required;
   const auto xy = [](const Mesh& m, Id v) {
@@ -76,7 +76,7 @@ TEST(Adapt2dBoundary, SizesFarBeyondTheDomain) {
   // Sizes 1e7 and 1e10 times the domain: the boundary's metric lengths underflowed to 0 and a
   // curve parameter became NaN, which crashed the curve's evaluation (SIGSEGV; QA hunt 5 F1).
   // The result is the coarsest mesh the boundary and --hausd allow.
-  const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/2d/naca0012.mesh");
+  const Mesh in = read_medit(RIEMESH_SHARED_DATA "/2d/naca0012.mesh");
   for (const double h : {1e7, 1e10}) {
     const std::vector<SymMat2> met(in.num_vertices(), SymMat2{{1 / (h * h), 0.0, 1 / (h * h)}});
     const Adapt2dResult r = adapt2d(in, met, Adapt2dOptions{});

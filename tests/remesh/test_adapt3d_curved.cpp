@@ -299,7 +299,7 @@ TEST(Adapt3dCurved, CurvedInterfaceWithRimsOnPlanesIsRemeshed) {
   // (z = ±1), there split into a disc (refs 8, 9) and the rest (12, 14). Kept as given before
   // (the note: edges up to 3.06 long, 128 triangles); now remeshed on its reconstruction, the
   // rims on their feature lines and exactly in the planes.
-  const Mesh in = read_mesh(std::string(RIEMESH_TEST_DATA) + "/cylinder_through_box.mesh");
+  const Mesh in = read_mesh(RIEMESH_TEST_DATA "/cylinder_through_box.mesh");
   const Mesh before = faces_of_ref(in, 7);
   ASSERT_EQ(before.num_triangles(), 128u);
   Adapt3dOptions o;

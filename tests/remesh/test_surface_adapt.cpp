@@ -209,7 +209,7 @@ TEST(SurfaceAdapt, CoarseInputStaysWithinHausdBetweenCheckPoints) {
   // at the order-4 lattice of each input triangle only, and a dense sampling (order 16) found
   // input points 1.24 hausd from the output. The lattice is now as fine as the output's sizes
   // ask (SurfaceProjection::lattice_orders): 0.997 hausd.
-  const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/surf/rotor.mesh");
+  const Mesh in = read_medit(RIEMESH_SHARED_DATA "/surf/rotor.mesh");
   SurfaceAdaptOptions o;
   o.hausd = 0.0005 * bounding_box_diagonal(in);
   const Mesh out = adapt_surface(in, o);
@@ -279,7 +279,7 @@ TEST(SurfaceAdapt, CubeKeepsCornersRidgesAndRefs) {
 }
 
 TEST(SurfaceAdapt, FandiskRidgesStayWithinHausd) {
-  const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/surf/fandisk.mesh");
+  const Mesh in = read_medit(RIEMESH_SHARED_DATA "/surf/fandisk.mesh");
   SurfaceAdaptOptions o;
   o.hausd = 0.002 * bounding_box_diagonal(in);  // 0.2% of the diagonal, as in PEERS.md
   const Outcome r = run(in, o);
@@ -336,7 +336,7 @@ TEST(SurfaceAdapt, RotorRefinedAtTheFineSettingDoesNotSelfIntersect) {
   // PEERS.md's second setting (0.05%) on the coarse rotor (1,200 triangles -> ~10 k), isotropic
   // and anisotropic: many nearly coplanar neighbours, where a floating-point intersection test
   // reported 8 and 7 crossing pairs that exact arithmetic refutes (test_self_intersection.cpp).
-  const Mesh in = read_medit(std::string(RIEMESH_SHARED_DATA) + "/surf/rotor.mesh");
+  const Mesh in = read_medit(RIEMESH_SHARED_DATA "/surf/rotor.mesh");
   for (const bool aniso : {false, true}) {
     SurfaceAdaptOptions o;
     o.hausd = 0.0005 * bounding_box_diagonal(in);

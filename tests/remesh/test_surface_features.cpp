@@ -183,7 +183,7 @@ TEST(SurfaceFeatures, OpenBoundariesAreFeatureLines) {
 }
 
 TEST(SurfaceFeatures, Fandisk) {
-  const Mesh m = read_medit(std::string(RIEMESH_SHARED_DATA) + "/surf/fandisk.mesh");
+  const Mesh m = read_medit(RIEMESH_SHARED_DATA "/surf/fandisk.mesh");
   const Adjacency adj = build_adjacency(m);
   const SurfaceFeatures f = detect_features(m, adj, {});
   // SOURCES.md: "dihedral>45deg edges 706" (scripts/surfcheck.py, independent of this code).

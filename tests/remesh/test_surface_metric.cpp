@@ -109,7 +109,7 @@ TEST(SurfaceMetric, FeatureLineSize) {
 }
 
 TEST(SurfaceMetric, GradationOnTheBunny) {
-  const Mesh m = read_medit(std::string(RIEMESH_SHARED_DATA) + "/surf/bunny.mesh");
+  const Mesh m = read_medit(RIEMESH_SHARED_DATA "/surf/bunny.mesh");
   const Adjacency adj = build_adjacency(m);
   const SurfaceFeatures f = detect_features(m, adj, {});
   const auto curv = vertex_curvatures(m, adj, f, surface_sectors(m, adj, f));

@@ -169,7 +169,7 @@ TEST(SurfaceReconstruction, CappedCylinderRimsStaySharpAndRound) {
 }
 
 TEST(SurfaceReconstruction, FandiskHasNoCracksAndInterpolates) {
-  const auto b = analyse(read_medit(std::string(RIEMESH_SHARED_DATA) + "/surf/fandisk.mesh"));
+  const auto b = analyse(read_medit(RIEMESH_SHARED_DATA "/surf/fandisk.mesh"));
   const SurfaceReconstruction rec(b->mesh, b->adj, b->features, b->sectors);
   const Mesh& m = b->mesh;
   for (std::size_t t = 0; t < m.num_triangles(); ++t) {
