@@ -19,7 +19,12 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", riemesh::version());
   app.require_subcommand(1);
   std::vector<std::string> args(argv + 1, argv + argc);
-  riemesh::cli::translate_mmg_spellings(args);
+  try {
+    riemesh::cli::translate_mmg_spellings(args);
+  } catch (const riemesh::InputError& e) {
+    std::fprintf(stderr, "riemesh: error: %s\n", e.what());
+    return 2;
+  }
   // The subcommands, in the order of `riemesh -h`. When the first argument names one, only that
   // one is set up (CLI11 builds every option of every subcommand: ~1 ms of a 0.05 s run).
   struct Command {

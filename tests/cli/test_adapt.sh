@@ -67,6 +67,18 @@ expect_error complexity-alone adapt "$D/formats/lshape.mesh" --hsiz 0.1 --comple
 # MMG spellings, a uniform size on the NACA domain.
 "$R" adapt -in "$D/2d/naca0012.mesh" -hsiz 2 -out "$TMP/n.meshb" -v 0 2>/dev/null &&
   "$R" check "$TMP/n.meshb" >/dev/null && ok mmg-spellings || ko mmg-spellings
+# MMG options Riemesh lacks, and single-dash words beginning with -h (CLI11 read them as -h: the
+# help on stdout, exit 0, nothing done).
+expect_error_matching mmg-hgradreq "MMG option -hgradreq is not supported" \
+  adapt -in "$D/2d/naca0012.mesh" -hsiz 2 -hgradreq 2 -out "$TMP/g1.mesh"
+expect_no_file mmg-hgradreq-no-output "$TMP/g1.mesh"
+expect_error_matching mmg-ls "MMG option -ls" adapt "$D/2d/naca0012.mesh" -ls 0 -o "$TMP/g1.mesh"
+expect_error_matching hausd-equals "unknown option -hausd=0.01" \
+  adapt "$D/2d/naca0012.mesh" -hsiz 2 -hausd=0.01 -o "$TMP/g1.mesh"
+expect_error_matching convert-hilbert "unknown option -hilbert" \
+  convert "$D/2d/naca0012.mesh" "$TMP/g1.meshb" -hilbert
+expect_no_file convert-hilbert-no-output "$TMP/g1.meshb"
+"$R" check "$D/2d/naca0012.mesh" -h >/dev/null && ok short-help-still-works || ko short-help-still-works
 
 # --optim keeps the sizes of the lake mesh (60 km wide: --hausd 0.1 km): vertex count within 20%.
 "$R" adapt "$D/2d/lac-leman.mesh" --optim --hausd 0.1 -o "$TMP/lake.mesh" -q && ok optim || ko optim
