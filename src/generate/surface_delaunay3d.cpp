@@ -12,6 +12,7 @@
 #include "core/predicates.hpp"
 #include "generate/volume_regions3d.hpp"
 #include "mesh/adjacency.hpp"
+#include "mesh/check.hpp"
 
 namespace riemesh {
 
@@ -127,6 +128,11 @@ std::size_t require_closed_surface(const Mesh& s) {
       first_twice = "triangles " + std::to_string(faces[k].second + 1) + " and " +
                     std::to_string(faces[k + 1].second + 1);
   if (twice) throw_defect("triangles listed twice (same three vertices)", twice, first_twice);
+  // A seam not merged (a vertex and its copy) also leaves edges on one triangle: named as what
+  // it is, not as holes.
+  if (const CoincidentVertices same = find_coincident_vertices(s); same.pairs > 0)
+    throw_defect("pairs of vertices at the same place", same.pairs,
+                 edge_name(same.first_a, same.first_b));
   // Edges on more than two triangles are where regions meet (a wall inside a box, the interface
   // of two solids listed once): allowed; their orientation says nothing (an interface faces away
   // from one of its regions, into the other). Edges on two triangles must be traversed both ways

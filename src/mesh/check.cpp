@@ -259,4 +259,42 @@ CheckReport check_mesh(const Mesh& m) {
   return col.report();
 }
 
+CoincidentVertices find_coincident_vertices(const Mesh& m) {
+  CoincidentVertices r;
+  const std::size_t nv = m.num_vertices(), dim = m.dim;
+  if (dim != 2 && dim != 3) return r;
+  std::vector<char> used(nv, 0);
+  for (const std::vector<Id>* list : {&m.tets, &m.triangles, &m.edges})
+    for (const Id v : *list)
+      if (v >= 0 && static_cast<std::size_t>(v) < nv) used[static_cast<std::size_t>(v)] = 1;
+  const auto xyz = [&](Id v) {
+    return std::span<const double>(&m.coords[dim * static_cast<std::size_t>(v)], dim);
+  };
+  std::vector<Id> ids;  // NaN coordinates left out: they would break the sort's order
+  for (std::size_t v = 0; v < nv; ++v) {
+    const auto p = xyz(static_cast<Id>(v));
+    if (used[v] && std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); }))
+      ids.push_back(static_cast<Id>(v));
+  }
+  const auto less = [&](Id a, Id b) {
+    const auto pa = xyz(a), pb = xyz(b);
+    return std::lexicographical_compare(pa.begin(), pa.end(), pb.begin(), pb.end()) ||
+           (std::equal(pa.begin(), pa.end(), pb.begin()) && a < b);
+  };
+  std::sort(ids.begin(), ids.end(), less);
+  std::size_t run = 0;  // the first of the current run of equal points: its smallest id
+  for (std::size_t k = 1; k < ids.size(); ++k) {
+    const auto pa = xyz(ids[k - 1]), pb = xyz(ids[k]);
+    if (!std::equal(pa.begin(), pa.end(), pb.begin())) {
+      run = k;
+      continue;
+    }
+    ++r.pairs;
+    const Id a = ids[run], b = ids[k];
+    if (r.first_a == kNoId || a < r.first_a || (a == r.first_a && b < r.first_b))
+      r.first_a = a, r.first_b = b;
+  }
+  return r;
+}
+
 }  // namespace riemesh

@@ -71,4 +71,12 @@ const char* to_string(CheckCategory category);
 /// Checks a planar, surface or volume mesh (see CheckCategory for what is checked).
 CheckReport check_mesh(const Mesh& mesh);
 
+/// Vertices of the elements (tets, triangles, edges) at exactly the same coordinates: a seam
+/// not merged. `first_a` < `first_b` is the pair with the smallest ids (kNoId when none).
+struct CoincidentVertices {
+  std::size_t pairs = 0;  ///< vertices at the place of an earlier one (a triple counts 2)
+  Id first_a = kNoId, first_b = kNoId;
+};
+CoincidentVertices find_coincident_vertices(const Mesh& mesh);
+
 }  // namespace riemesh

@@ -11,6 +11,7 @@
 #include "mesh/distance.hpp"
 #include "remesh/surface_adapt_detail.hpp"
 #include "remesh/surface_curvature.hpp"
+#include "remesh/surface_input.hpp"
 #include "remesh/surface_metric.hpp"
 
 namespace riemesh {
@@ -210,6 +211,7 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
   if (!options.metric.empty() && options.metric.size() != input.num_vertices())
     throw InputError("adapt_surface: the metric needs one tensor per input vertex");
   require_no_duplicate_triangles(input);
+  require_adaptable_surface(input);
   require_computable_scale(input);
   // The metric from the projection's own analysis (features and curvature computed once).
   const SurfaceProjection geo(

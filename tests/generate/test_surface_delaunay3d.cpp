@@ -262,6 +262,20 @@ TEST(SurfaceDelaunay3d, DefectsAreNamed) {
                 "1 triangles listed twice (same three vertices) (first: triangles 1 and "),
             std::string::npos)
       << message(twice);
+  // A seam not merged: triangle 1's first vertex replaced by a copy at the same place. Its two
+  // edges there bound one triangle each, but the defect is named as what it is (was: "holes").
+  Mesh seam = good;
+  const Id v0 = seam.triangles[0];
+  seam.coords.insert(seam.coords.end(), seam.coords.begin() + 3 * v0,
+                     seam.coords.begin() + 3 * v0 + 3);
+  seam.vert_ref.push_back(0);
+  seam.vert_tag.push_back(0);
+  seam.triangles[0] = static_cast<Id>(seam.num_vertices() - 1);
+  EXPECT_NE(message(seam).find("1 pairs of vertices at the same place (first: vertices " +
+                               std::to_string(v0 + 1) + " and " +
+                               std::to_string(seam.num_vertices()) + ")"),
+            std::string::npos)
+      << message(seam);
   Mesh none;
   EXPECT_NE(message(none).find("no triangles"), std::string::npos);
   // A tetrahedron whose bottom face is split at the middle of an edge, that edge's other side

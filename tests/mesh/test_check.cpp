@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "mesh/adjacency.hpp"
@@ -358,4 +359,26 @@ TEST(Check, SurfaceOfTwoRegions) {
 TEST(Check, CategoryNames) {
   for (int c = 0; c <= static_cast<int>(C::kRegionsMeet); ++c)
     EXPECT_STRNE(to_string(static_cast<C>(c)), "unknown");
+}
+
+TEST(Check, CoincidentVerticesOfTheElementsAreFound) {
+  Mesh m = unit_square(2, 2);  // 9 vertices, none at the same place
+  EXPECT_EQ(find_coincident_vertices(m).pairs, 0u);
+  EXPECT_EQ(find_coincident_vertices(m).first_a, kNoId);
+  // Copies of vertices 5 and 2 (9 at 5's place, 10 and 11 at 2's place) and a NaN (12), used by
+  // nothing at first.
+  for (const Id v : {5, 2, 2})
+    m.coords.insert(m.coords.end(), {m.coords[2 * v], m.coords[2 * v + 1]});
+  m.coords.insert(m.coords.end(), {std::nan(""), 0.5});
+  m.vert_ref.resize(13, 0);
+  m.vert_tag.resize(13, 0);
+  EXPECT_EQ(find_coincident_vertices(m).pairs, 0u);
+  // 10, 11 and the NaN on edges; 9 stays unused.
+  m.edges.insert(m.edges.end(), {10, 11, 12, 4});
+  m.edge_ref.insert(m.edge_ref.end(), {1, 1});
+  m.edge_tag.insert(m.edge_tag.end(), {0, 0});
+  const CoincidentVertices c = find_coincident_vertices(m);
+  EXPECT_EQ(c.pairs, 2u);  // 2, 10 and 11 at one place: two pairs
+  EXPECT_EQ(c.first_a, 2);
+  EXPECT_EQ(c.first_b, 10);
 }
