@@ -6,6 +6,7 @@
 #include "apps/commands.hpp"
 #include "apps/mesh_args.hpp"
 #include "generate/domain2d.hpp"
+#include "io/atomic_file.hpp"
 #include "io/mesh_file.hpp"
 #include "mesh/hilbert.hpp"
 
@@ -24,6 +25,7 @@ void run_convert(const ConvertArgs& a) {
   // the binary Medit file; it was accepted and ignored).
   if (mesh_format(a.out) != MeshFormat::kGmsh && a.binary)
     throw InputError("--binary applies to .msh output (for binary Medit, write .meshb)");
+  require_writable(a.out);
   Mesh mesh = load_mesh(a.in);
   if (a.boundary) mesh = extract_boundary2d(mesh);
   if (a.hilbert) renumber_hilbert(mesh);

@@ -8,6 +8,7 @@
 #include "apps/commands.hpp"
 #include "apps/mesh_args.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/sol.hpp"
 #include "mesh/adjacency.hpp"
 #include "remesh/surface_curvature.hpp"
@@ -26,6 +27,7 @@ struct GeometricArgs {
 void run_geometric(GeometricArgs& a) {
   if (!a.opt.anisotropic && a.opt.beta_fraction != SurfaceMetricOptions{}.beta_fraction)
     throw InputError("--beta applies to --aniso (the isotropic metric has no anisotropy)");
+  require_writable(a.output);
   const Mesh mesh = load_mesh(a.mesh);
   require_measurable(mesh, a.mesh);
   if (mesh.kind() != MeshKind::kSurface)

@@ -106,6 +106,7 @@ void run_hessian(const HessianArgs& a, const Mesh& mesh, const Field& u) {
 
 void hessian(HessianArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o M.sol");
+  require_writable(a.output);
   a.opt.norm = parse_norm(a.norm);
   a.opt.validate();
   require_hgrad(a.hgrad);
@@ -254,6 +255,7 @@ void combine(CombineArgs& a) {
   require_hgrad(a.hgrad);
   if (a.mode == "lp") return combine_spacetime(a);
   if (a.mode != "intersect") throw InputError("--mode must be intersect or lp, got '" + a.mode + "'");
+  require_writable(a.output);
   // The lp options were accepted and ignored in intersect mode, even contradicting ones.
   const HessianMetricOptions defaults;
   const char* lp_only = a.norm != "2"                             ? "--norm"

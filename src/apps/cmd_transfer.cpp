@@ -10,6 +10,7 @@
 #include "apps/json.hpp"
 #include "apps/mesh_args.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/sol.hpp"
 #include "remesh/transfer.hpp"
 
@@ -63,6 +64,7 @@ auto on_old_mesh(const TransferArgs& a, F f) {
 
 void run(const TransferArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o NEW.sol");
+  require_writable(a.output);
   const Mesh from = load_mesh(a.old_mesh);
   require_measurable(from, a.old_mesh);
   const Mesh to = load_mesh(a.new_mesh);

@@ -118,7 +118,16 @@ void require_writable(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
     throw InputError(path + ": is a folder, not a file name for the output");
-  AtomicFile probe(path);  // creates a temporary beside the target; removed, uncommitted
+  try {
+    AtomicFile probe(path);  // creates a temporary beside the target; removed, uncommitted
+  } catch (const InputError& e) {
+    // Said of the output, not of the temporary the probe made ("cannot create temporary file
+    // x.mesh.tmp-wnq771: No such file or directory"): the system's reason, after the last ": ".
+    const std::string what = e.what();
+    const std::size_t at = what.rfind(": ");
+    throw InputError(path + ": cannot write the output there" +
+                     (at == std::string::npos ? std::string() : " (" + what.substr(at + 2) + ")"));
+  }
 }
 
 OutputBatch::~OutputBatch() {

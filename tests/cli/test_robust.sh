@@ -18,6 +18,19 @@ expect_no_file convert-unwritable-no-temporary "$TMP/file/o.mesh"
 expect_error render-unwritable render "$AILE" -o "$TMP/taken.svg"
 expect_error hessian-unwritable metric hessian "$LSHAPE" "$D/formats/lshape.sol" --complexity 100 \
   -o "$TMP/taken.sol"
+# The commands that found out after the work (14 s of meshing the rotor's volume), with a message
+# about a temporary file: now before it, naming the output.
+expect_error_matching mesh-unwritable "^riemesh: error: $TMP/taken.mesh: is a folder, not a file name" \
+  mesh "$D/surf/rotor.mesh" -o "$TMP/taken.mesh"
+expect_error_matching mesh-missing-folder \
+  "^riemesh: error: /nonexistent/o.mesh: cannot write the output there (No such file or directory)$" \
+  mesh "$D/surf/rotor.mesh" -o /nonexistent/o.mesh
+expect_error_matching geometric-unwritable "taken.sol: is a folder" \
+  metric geometric "$D/surf/rotor.mesh" -o "$TMP/taken.sol"
+expect_error_matching combine-unwritable "taken.sol: is a folder" \
+  metric combine "$LSHAPE" "$MET" "$MET" -o "$TMP/taken.sol"
+expect_error_matching transfer-unwritable "taken.sol: is a folder" \
+  transfer "$LSHAPE" "$D/formats/lshape.sol" "$LSHAPE" -o "$TMP/taken.sol"
 
 # A metric asking for more vertices than ids hold: one tensor of 1e308 crashed adapt (SIGSEGV), a
 # complexity of 1e12 ran for hours. Now refused at once.
@@ -124,7 +137,7 @@ mkdir -p "$TMP/dd.msh"
 expect_error_matching folder-input "dd.msh: is a folder, not a file" check "$TMP/dd.msh"
 expect_error_matching render-output-extension "^riemesh: error: $TMP/o.jpg: unknown image extension" \
   render "$AILE" -o "$TMP/o.jpg"
-expect_error_matching loop-plot-folder "^riemesh: error: /nonexistent-folder/x.png: cannot create" \
+expect_error_matching loop-plot-folder "^riemesh: error: /nonexistent-folder/x.png: cannot write the output there (No such file or directory)" \
   loop --complexities 1000 --plot /nonexistent-folder/x.png
 # A 3D mesh of Edges only: named, with the real problem (it said "no size field").
 printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n2\n0 0 0 0\n1 0 0 0\nEdges\n1\n1 2 0\nEnd\n' >"$TMP/eo.mesh"
