@@ -43,6 +43,7 @@ void run_adapt_surface(const SurfaceAdaptArgs& args, const Mesh& mesh) {
                    "moves (%.2f s)\n",
                    label, c.vertices, c.triangles, c.splits, c.collapses, c.swaps, c.moves, t);
     };
+  options.validate();  // option errors named by the option, not prefixed with the mesh's name
   SurfaceAdaptReport r;
   const Mesh out = naming_file(args.input, [&] { return adapt_surface(mesh, options, &r); });
   // Transferred before anything is written: a failure leaves no file.

@@ -27,9 +27,17 @@ struct GeometricArgs {
 void run_geometric(GeometricArgs& a) {
   if (!a.opt.anisotropic && a.opt.beta_fraction != SurfaceMetricOptions{}.beta_fraction)
     throw InputError("--beta applies to --aniso (the isotropic metric has no anisotropy)");
+  // The options' ranges before the mesh, named by the options (the errors came out of the
+  // library prefixed with the mesh's name: "rotor.mesh: hmin must be <= hmax").
+  a.opt.validate();
+  a.features.validate();
   require_writable(a.output);
   const Mesh mesh = load_mesh(a.mesh);
   require_measurable(mesh, a.mesh);
+  if (mesh.kind() == MeshKind::kPlanar)  // it said "needs a surface mesh" of a z = 0 surface
+    throw InputError(a.mesh +
+                     ": a planar mesh (Dimension 2, or Dimension 3 with every vertex in z = 0): "
+                     "metric geometric needs a curved surface in 3D");
   if (mesh.kind() != MeshKind::kSurface)
     throw InputError(a.mesh + ": metric geometric needs a surface mesh (3D triangles, no tetrahedra)");
   a.features.detect_angle = !a.nr;
@@ -77,9 +85,10 @@ void register_metric_geometric(CLI::App& metric) {
   cmd->add_option("--hmin", a->opt.hmin, "Smallest size (default: hausd)");
   cmd->add_option("--hmax", a->opt.hmax, "Largest size (default: bounding-box diagonal)");
   cmd->add_option("--hgrad", a->opt.hgrad, "H-shock gradation (0: none)")->capture_default_str();
-  cmd->add_option("--angle,--ar", a->features.angle_deg, "Ridge angle threshold (degrees)")
-      ->capture_default_str();
-  cmd->add_flag("--nr", a->nr, "No ridge detection by angle");
+  auto* angle =
+      cmd->add_option("--angle,--ar", a->features.angle_deg, "Ridge angle threshold (degrees)")
+          ->capture_default_str();
+  cmd->add_flag("--nr", a->nr, "No ridge detection by angle")->excludes(angle);
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->callback([a] { run_geometric(*a); });
 }

@@ -127,8 +127,12 @@ void find_corners(const Mesh& mesh, const Adjacency& adj, double angle, SurfaceF
 }  // namespace
 
 void FeatureOptions::validate() const {
-  if (!(angle_deg > 0.0 && angle_deg < 180.0))
-    throw InputError("feature angle must be in (0, 180) degrees");
+  if (!(angle_deg > 0.0 && angle_deg < 180.0)) {
+    char msg[80];
+    std::snprintf(msg, sizeof msg, "--angle must be in (0, 180) degrees on a surface, got %g",
+                  angle_deg);
+    throw InputError(msg);
+  }
 }
 
 std::vector<Id> feature_neighbours(const Adjacency& adj, const SurfaceFeatures& features) {

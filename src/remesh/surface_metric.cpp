@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <span>
+#include <string>
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
@@ -49,12 +51,24 @@ void principal_sizes(const SymMat3& m, double& smallest, double& largest) {
 }  // namespace
 
 void SurfaceMetricOptions::validate() const {
-  if (!(hausd > 0.0) || !std::isfinite(hausd)) throw InputError("hausd must be > 0");
-  if (hmin > 0.0 && hmax > 0.0 && hmin > hmax) throw InputError("hmin must be <= hmax");
-  if (!std::isfinite(hmin) || !std::isfinite(hmax)) throw InputError("hmin and hmax must be finite");
-  if (hgrad > 0.0 && !(hgrad > 1.0)) throw InputError("hgrad must be > 1 (or <= 0: no gradation)");
+  // Named by the options of `riemesh metric geometric` and `adapt`, with the value (they said
+  // "hmin must be <= hmax", and a negative --hgrad passed as "no gradation").
+  const auto num = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return std::string(text);
+  };
+  if (!(hausd > 0.0) || !std::isfinite(hausd))
+    throw InputError("--hausd must be a distance > 0, got " + num(hausd));
+  if (hmin > 0.0 && hmax > 0.0 && hmin > hmax)
+    throw InputError("--hmin " + num(hmin) + " is larger than --hmax " + num(hmax));
+  if (!std::isfinite(hmin) || !std::isfinite(hmax) || hmin < 0.0 || hmax < 0.0)
+    throw InputError("--hmin and --hmax must be finite sizes >= 0 (0: the default), got " +
+                     num(hmin) + " and " + num(hmax));
+  if (!(hgrad == 0.0 || (hgrad > 1.0 && std::isfinite(hgrad))))
+    throw InputError("--hgrad must be 0 (off) or a ratio > 1, got " + num(hgrad));
   if (!(beta_fraction >= 0.0 && beta_fraction <= 1.0))
-    throw InputError("beta fraction must be in [0, 1]");
+    throw InputError("--beta must be in [0, 1], got " + num(beta_fraction));
 }
 
 double feature_line_size(const Vec3& a, const Vec3& v, const Vec3& b, double hausd) {

@@ -30,14 +30,15 @@ struct SurfaceMetricOptions {
   double hmax = 0.0;    ///< largest size; <= 0: the bounding-box diagonal
   bool anisotropic = false;
   double beta_fraction = 1.0;  ///< in [0, 1]: 0 isotropic, 1 the full anisotropic β (BOOK §1)
-  double hgrad = 1.3;          ///< H-shock gradation threshold (> 1); <= 0: no gradation
+  double hgrad = 1.3;          ///< H-shock gradation threshold (> 1); 0: no gradation
   /// The gradation's H-shock before and after in the report (two sweeps over the edges).
   bool gradation_measures = true;
   /// A user (e.g. physical) metric per vertex, intersected with the geometric one before the
   /// gradation so that the result stays geometric (BOOK.md §1); null or empty: none. Not owned.
   const std::vector<SymMat3>* user_metric = nullptr;
-  /// Throws InputError for hausd <= 0, hmin > hmax (both given), hgrad in (0, 1], or
-  /// beta_fraction outside [0, 1].
+  /// Throws InputError, naming the option and the value, for hausd <= 0, hmin > hmax (both
+  /// given), a negative or infinite hmin or hmax, hgrad neither 0 nor > 1, or beta_fraction
+  /// outside [0, 1].
   void validate() const;
 };
 

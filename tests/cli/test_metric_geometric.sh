@@ -39,4 +39,22 @@ check metric-geometric-iso-inside "all(np.linalg.eigvalsh(np.linalg.inv(np.linal
 expect_error metric-geometric-planar metric geometric "$SHARED/data/2d/aile.mesh" --hausd 0.1 -o "$TMP/x.sol"
 expect_no_file metric-geometric-no-output "$TMP/x.sol"
 expect_error metric-geometric-hausd metric geometric "$IN" --hausd -1 -o "$TMP/y.sol"
+# Option errors named by the option with the value, before the mesh is read (they carried the
+# mesh's name: "rotor.mesh: hmin must be <= hmax"; a negative --hgrad and --angle with --nr passed).
+ROTOR=$SHARED/data/surf/rotor.mesh
+expect_error_matching geometric-hmin-hmax "^riemesh: error: --hmin 1 is larger than --hmax 0.1$" \
+  metric geometric "$ROTOR" -o "$TMP/g.sol" --hmin 1 --hmax 0.1
+expect_error_matching geometric-beta-range "^riemesh: error: --beta must be in \[0, 1\], got 2$" \
+  metric geometric "$ROTOR" -o "$TMP/g.sol" --aniso --beta 2
+expect_error_matching geometric-negative-hgrad "^riemesh: error: --hgrad must be 0 (off) or a ratio > 1, got -5$" \
+  metric geometric "$ROTOR" -o "$TMP/g.sol" --hgrad -5
+expect_error_matching geometric-angle-nr "excludes --nr" \
+  metric geometric "$ROTOR" -o "$TMP/g.sol" --angle 30 --nr
+expect_error_matching surface-angle-zero "^riemesh: error: --angle must be in (0, 180) degrees on a surface, got 0$" \
+  adapt "$ROTOR" -o "$TMP/g.mesh" --angle 0
+expect_no_file geometric-errors-no-output "$TMP/g.sol"
+# A Dimension 3 surface in z = 0 is read as planar: said so (it was told it needs a surface).
+printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n3\n0 0 0 0\n1 0 0 0\n0 1 0 0\nTriangles\n1\n1 2 3 1\nEnd\n' >"$TMP/z0.mesh"
+expect_error_matching geometric-z0 "z0.mesh: a planar mesh (Dimension 2, or Dimension 3 with every vertex in z = 0)" \
+  metric geometric "$TMP/z0.mesh" -o "$TMP/g.sol"
 exit $fail
