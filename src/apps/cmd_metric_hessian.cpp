@@ -3,6 +3,7 @@
 // or the space–time Lp metric of time samples, BOOK.md §8 and metric/spacetime_metric.hpp).
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
@@ -63,6 +64,20 @@ int metric_dim(const Mesh& mesh, const std::string& path) {
 
 /// "inf" (or "infinity") for the L∞ norm, else a number.
 /// Gradation as riemesh adapt does it (physical-space growth, Alauzet 2010), when hgrad > 0.
+/// --complexity given as 0 or less: the library reads 0 as "not given" ("no target: give
+/// --complexity N" was said of --complexity 0).
+CLI::Validator positive_complexity() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        char* end = nullptr;
+        const double x = std::strtod(text.c_str(), &end);
+        return end != text.c_str() && *end == '\0' && x > 0.0
+                   ? std::string()
+                   : "must be a number from 1e-6 to 1e15, got " + text;
+      },
+      "N > 0");
+}
+
 void require_hgrad(double hgrad) {
   if (hgrad != 0.0 && !(hgrad > 1.0)) throw InputError("--hgrad must be 0 (off) or a ratio > 1");
 }
@@ -290,7 +305,9 @@ void register_hessian(CLI::App& metric) {
   cmd->add_option("--recovery", a->recovery, "Hessian recovery: lsq (least squares), l2 (double L2 projection), green")
       ->capture_default_str();
   cmd->add_option("--norm", a->norm, "Norm p of the Lp metric: 1, 2, ... or inf")->capture_default_str();
-  cmd->add_option("--complexity", a->opt.complexity, "Target complexity N (about the vertex count in 2D)");
+  cmd->add_option("--complexity", a->opt.complexity,
+                  "Target complexity N (about the vertex count in 2D)")
+      ->check(positive_complexity());
   cmd->add_option("--tolerance", a->opt.tolerance, "L∞ interpolation error E (with --norm inf): M = c_d |H| / E");
   cmd->add_option("--hmin", a->opt.hmin, "Smallest size");
   cmd->add_option("--hmax", a->opt.hmax, "Largest size");
@@ -316,7 +333,8 @@ void register_combine(CLI::App& metric) {
       ->capture_default_str();
   cmd->add_option("--norm", a->norm, "lp: norm p (finite)")->capture_default_str();
   cmd->add_option("--complexity", a->opt.complexity,
-                  "lp: mean complexity per time step N (N_st = N * sum of time steps)");
+                  "lp: mean complexity per time step N (N_st = N * sum of time steps)")
+      ->check(positive_complexity());
   cmd->add_option("--intervals", a->intervals, "lp: number of sub-intervals (inputs split evenly)")
       ->capture_default_str();
   cmd->add_option("--meshes", a->meshes, "lp: one mesh per sub-interval, comma-separated");

@@ -93,4 +93,7 @@ expect_error metric-as-field metric hessian "$D/lshape.mesh" "$D/lshape_metric.s
 expect_error combine-not-metric metric combine "$D/lshape.sol" --mesh "$D/lshape.mesh" -o "$TMP/x.sol"
 expect_error transfer-size-mismatch transfer "$TMP/a.mesh" "$D/lshape.sol" "$D/lshape.mesh" -o "$TMP/x.sol"
 expect_error transfer-no-output transfer "$D/lshape.mesh" "$TMP/u.sol" "$TMP/a.mesh"
+# --complexity 0 is a value out of range, not "no target" (0 is the library's "not given").
+expect_error_matching hessian-complexity-zero "^riemesh: error: --complexity: must be a number from 1e-6 to 1e15, got 0" \
+  metric hessian "$SHARED/data/formats/lshape.mesh" "$SHARED/data/formats/lshape.sol" --complexity 0 -o "$TMP/c0.sol"
 exit $fail
