@@ -14,9 +14,19 @@ namespace riemesh::cli {
 std::vector<double> parse_numbers(const std::string& text, const std::string& what) {
   std::vector<double> values;
   const char* p = text.c_str();
+  bool comma = false;  // a comma since the last number: an empty item ("100," "1,,2") is refused
   while (*p != '\0') {
-    while (*p == ',' || *p == ' ') ++p;
+    while (*p == ' ') ++p;
+    if (*p == ',') {
+      if (comma || values.empty())
+        throw InputError(what + ": '" + text + "' " +
+                         (values.empty() ? "starts with a comma" : "has two commas in a row"));
+      comma = true;
+      ++p;
+      continue;
+    }
     if (*p == '\0') break;
+    comma = false;
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(p, &end);
@@ -28,6 +38,7 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& wh
     values.push_back(v);
     p = end;
   }
+  if (comma) throw InputError(what + ": '" + text + "' ends with a comma");
   if (values.empty()) throw InputError(what + ": no numbers given");
   return values;
 }

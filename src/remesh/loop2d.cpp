@@ -1,8 +1,9 @@
 #include "remesh/loop2d.hpp"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/error.hpp"
@@ -66,6 +67,19 @@ void LoopOptions::validate() const {
     throw InputError("loop: sizes need 0 < hmin < hmax < inf");
   if (!(aniso_max >= 1.0)) throw InputError("loop: aniso_max must be >= 1");
   if (!(fit_from >= 0.0)) throw InputError("loop: fit_from must be >= 0");
+  // Checked with the rest, before anything is printed (the header came out first), and a fit
+  // range holding fewer than two complexities refused (its slopes printed "nan").
+  const auto num = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return std::string(text);
+  };
+  if (!(hgrad == 0.0 || (hgrad > 1.0 && std::isfinite(hgrad))))
+    throw InputError("--hgrad must be 0 (off) or a ratio > 1, got " + num(hgrad));
+  if (fit_from > 0.0 && std::count_if(complexities.begin(), complexities.end(),
+                                      [this](double n) { return n >= fit_from; }) < 2)
+    throw InputError("--fit-from " + num(fit_from) +
+                     " leaves fewer than two complexities to fit a slope to");
   if (start_cells < 2 || start_cells > 1000)
     throw InputError("loop: start_cells must be in 2..1000, got " + std::to_string(start_cells));
 }

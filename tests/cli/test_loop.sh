@@ -34,4 +34,12 @@ expect_error bad-complexities loop --complexities 100,abc
 expect_error bad-iterations loop --iterations 0
 expect_error bad-plot loop --complexities 100 --plot "$TMP/e.bmp"
 expect_no_file bad-plot-file "$TMP/e.bmp"
+# Checked before anything is printed (the header came first), lists without empty items, a fit
+# range of at least two complexities (the slopes printed "nan").
+expect_error_matching loop-hgrad-before-header "^riemesh: error: --hgrad must be 0 (off) or a ratio > 1, got 0.5$" \
+  loop --complexities 100 --hgrad 0.5
+expect_error_matching loop-trailing-comma "'100,' ends with a comma" loop --complexities 100,
+expect_error_matching loop-double-comma "'100,,200' has two commas in a row" loop --complexities 100,,200
+expect_error_matching loop-fit-from-beyond "^riemesh: error: --fit-from 5000 leaves fewer than two complexities" \
+  loop --complexities 100,200 --fit-from 5000
 exit $fail
