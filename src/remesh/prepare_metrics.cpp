@@ -69,7 +69,7 @@ void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m, 
       (max_vertices < ids ? num(max_vertices) : std::string("the 2^31 - 1 ids hold")) +
       "; finest size " +
       (std::isfinite(d) ? num(std::pow(d, -0.5 / D)) : std::string("~0 (determinant overflows)")) +
-      " near " + where + ") (see --hmin)");
+      " near " + where + "): ask for coarser sizes, or bound them with --hmin");
 }
 
 template void require_reachable_complexity<2>(const Mesh&, std::span<const SymMat2>, double,

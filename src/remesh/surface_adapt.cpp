@@ -73,11 +73,13 @@ void require_reachable_surface(const Mesh& in, const std::vector<SymMat3>& metri
   const double vertices = 1.1547005383792515 * total;
   if (vertices <= kMostSurfaceVertices) return;
   char msg[320];
-  std::snprintf(msg, sizeof msg,
-                "the sizes ask for about %.3g vertices on the surface, more than %g; finest size "
-                "%.3g near (%g, %g, %g) (see --hsiz, --hausd and --hmin)",
-                vertices, kMostSurfaceVertices, unit / std::sqrt(density[finest]),
-                in.coords[3 * finest], in.coords[3 * finest + 1], in.coords[3 * finest + 2]);
+  std::snprintf(
+      msg, sizeof msg,
+      "the sizes ask for about %.3g vertices on the surface, more than %g; finest size "
+      "%.3g near (%g, %g, %g): ask for coarser sizes (a larger --hausd), or bound them with "
+      "--hmin",
+      vertices, kMostSurfaceVertices, unit / std::sqrt(density[finest]), in.coords[3 * finest],
+      in.coords[3 * finest + 1], in.coords[3 * finest + 2]);
   throw InputError(msg);
 }
 

@@ -143,4 +143,8 @@ expect_error_matching loop-plot-folder "^riemesh: error: /nonexistent-folder/x.p
 printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n2\n0 0 0 0\n1 0 0 0\nEdges\n1\n1 2 0\nEnd\n' >"$TMP/eo.mesh"
 expect_error_matching adapt-edges-only "eo.mesh: the mesh has no triangles or tetrahedra to adapt" \
   adapt "$TMP/eo.mesh" -o "$TMP/o.mesh"
+# The size guard's hint names no option the user may not have given (it said "see --hmin" of an
+# --hsiz).
+expect_error_matching size-guard-hint "vertices, more than .*: ask for coarser sizes, or bound them with --hmin$" \
+  adapt "$AILE" --hsiz 1e-6 -o "$TMP/o.mesh"
 exit $fail
