@@ -14,7 +14,7 @@ void require_adaptable_surface(const Mesh& s) {
     throw InputError("vertices " + std::to_string(same.first_a + 1) + " and " +
                      std::to_string(same.first_b + 1) + " are at the same place (" +
                      std::to_string(same.pairs) + (same.pairs == 1 ? " pair" : " pairs") +
-                     "): a seam not merged, which the surface would cross");
+                     "; merge them)");
   const CheckReport report = check_mesh(s);
   for (const CheckIssue& issue : report.issues)  // not the notes: regions meet there
     if (issue.category == CheckCategory::kInconsistentOrientation)

@@ -110,10 +110,19 @@ expect_error_matching surface-hmax-negative "^riemesh: error: --hmax must be" \
   adapt "$IN" --hausd 0.01 --hmax -1 -o "$TMP/x.mesh"
 expect_error_matching surface-interp-unknown "unknown interpolation scheme 'bogus'" \
   adapt "$IN" --hausd 0.01 --interp bogus -o "$TMP/x.mesh"
-# Two vertices of a triangle at one point: named (the error came from the gradation, "edge 0").
+# Two vertices of a triangle at one point: named (the error came from the gradation, "edge 0"),
+# by the input check for vertices at the same place.
 printf "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 1 0\nTriangles\n4\n1 3 2 1\n1 2 4 1\n2 5 4 1\n1 4 3 1\nEnd\n" >"$TMP/same.mesh"
-expect_error_matching surface-coincident-vertices "same.mesh: triangle 3: vertices 5 and 4 are at the same point" \
+expect_error_matching surface-coincident-vertices "same.mesh: vertices 4 and 5 are at the same place (1 pair; merge them)$" \
   adapt "$TMP/same.mesh" --hausd 0.01 -o "$TMP/x.mesh"
 expect_error_matching distance-spacing-inf "^riemesh: error: --spacing: must be a finite length >= 0, got inf" \
   distance "$IN" "$IN" --spacing inf
+# A shell 0.01 thick (two spheres): at --hausd 0.05 the sheets merged into 540 crossing pairs,
+# exit 0; now refused, nothing written. At 0.005 it is adapted, valid.
+SHELL_IN="$(dirname "$0")/../data/thin_shell.mesh"
+expect_error_matching thin-shell-crossing "thin_shell.mesh: the adapted surface crosses itself (.* pairs of triangles, the first near (.*)): parts of the input closer than about --hausd 0.05 were merged; give a smaller --hausd$" \
+  adapt "$SHELL_IN" --hausd 0.05 -o "$TMP/shell.mesh" -q
+expect_no_file thin-shell-crossing-no-output "$TMP/shell.mesh"
+"$R" adapt "$SHELL_IN" --hausd 0.005 -o "$TMP/shell.mesh" -q && "$R" check "$TMP/shell.mesh" >/dev/null &&
+  ok thin-shell-fine-hausd || ko thin-shell-fine-hausd
 exit $fail

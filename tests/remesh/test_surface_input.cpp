@@ -50,8 +50,7 @@ TEST(SurfaceInput, SeamNotMergedIsRefusedAndNamed) {
   s.triangles[0] = static_cast<Id>(s.num_vertices() - 1);
   EXPECT_EQ(refusal(s), "vertices " + std::to_string(v + 1) + " and " +
                             std::to_string(s.num_vertices()) +
-                            " are at the same place (1 pair): a seam not merged, which the "
-                            "surface would cross");
+                            " are at the same place (1 pair; merge them)");
 }
 
 TEST(SurfaceInput, CrossingSheetsAreRefused) {
