@@ -293,6 +293,9 @@ void run(AdaptArgs& a) {
   a.opt.validate();
   if (a.quiet && a.verbosity > 0)
     throw InputError("-v " + std::to_string(a.verbosity) + " and -q contradict");
+  // The default 0.01 was refused on domains over 1e7 across (QA hunt 5 F9): raised there.
+  if (a.hausd_given->count() == 0 && !a.nosurf)
+    a.opt.hausd = defaulted_hausd(mesh, a.verbosity > 0 && !a.quiet);
   if (surface) return run_surface(a, mesh);
   if (sources == 0)
     throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");

@@ -9,6 +9,7 @@
 #include "io/sol.hpp"
 #include "mesh/check.hpp"
 #include "metric/mesh_quality.hpp"
+#include "remesh/adapt2d.hpp"
 
 namespace riemesh::cli {
 
@@ -47,6 +48,16 @@ std::vector<double> load_metric(const std::string& path, const Mesh& mesh) {
     throw InputError(msg);
   }
   return metric->values;
+}
+
+double defaulted_hausd(const Mesh& domain, bool note) {
+  const double hausd = default_hausd(domain);
+  if (note && hausd > Adapt2dOptions{}.hausd)
+    std::fprintf(stderr,
+                 "riemesh: note: --hausd not given: the default %g is below %g of the domain's "
+                 "bounding-box diagonal, raised to %g\n",
+                 Adapt2dOptions{}.hausd, kSmallestHausd, hausd);
+  return hausd;
 }
 
 void require_measurable(const Mesh& mesh, const std::string& path) {

@@ -18,6 +18,10 @@ Mesh load_mesh(const std::string& path);
 /// 1-based) for a wrong count, another kind of field, or a tensor that is not SPD.
 std::vector<double> load_metric(const std::string& path, const Mesh& mesh);
 
+/// The --hausd of a run on `domain` when none was given: default_hausd (0.01, raised to the
+/// smallest allowed on domains over 1e7 across), with a note on stderr when raised and `note`.
+double defaulted_hausd(const Mesh& domain, bool note);
+
 /// Throws InputError naming the file when the mesh's arrays cannot be measured (sizes, ids out
 /// of range, non-finite coordinates): statistics and pictures need that much; `riemesh check`
 /// says more.

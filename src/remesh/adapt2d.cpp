@@ -489,6 +489,10 @@ void Adapt2dOptions::validate() const {
   if (max_passes < 1 || max_passes > 1000) throw InputError("--passes must be in 1..1000");
 }
 
+double default_hausd(const Mesh& domain) {
+  return std::max(Adapt2dOptions{}.hausd, kSmallestHausd * bounding_box_diagonal(domain));
+}
+
 namespace {
 
 /// A --hausd below 1e-9 of the domain's bounding-box diagonal is refused: chords that close to
@@ -498,7 +502,7 @@ void require_hausd_above_roundoff(const Mesh& input, double hausd) {
   if (!(hausd > 0.0)) return;  // 0: no bound
   const double diag = bounding_box_diagonal(input);
   if (hausd >= kSmallestHausd * diag) return;
-  throw InputError("--hausd " + num(hausd) + " is below " + num(kSmallestHausd) +
+  throw InputError("--hausd " + num(hausd) + " as given is below " + num(kSmallestHausd) +
                    " of the domain's size (bounding-box diagonal " + num(diag) +
                    "): give 0 for no bound, or a larger distance");
 }

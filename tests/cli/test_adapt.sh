@@ -75,6 +75,21 @@ nv_out=$("$R" stats "$TMP/lake.mesh" --json | /usr/bin/python3 -c 'import json,s
 /usr/bin/python3 -c "import sys; sys.exit(0 if abs($nv_out-$nv_in) <= 0.2*$nv_in else 1)" &&
   ok "optim-count ($nv_in -> $nv_out)" || ko "optim-count ($nv_in -> $nv_out)"
 
+# A square 1e12 across: the default --hausd 0.01, below 1e-9 of the domain, refused the run about
+# an option not given (QA hunt 5 F9); it is raised to the smallest allowed (a note at -v 1). Given,
+# the same value is still refused, as given.
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1e12 0 0\n1e12 1e12 0\n0 1e12 0\nTriangles\n2\n1 2 3 1\n1 3 4 1\nEnd\n' >"$TMP/huge.mesh"
+for how in "--hsiz 1e11" "--optim"; do
+  "$R" adapt "$TMP/huge.mesh" $how -o "$TMP/huge_out.mesh" -v 1 2>"$TMP/huge_err" >/dev/null &&
+    grep -q "note: --hausd not given: the default 0.01 is below 1e-09 .*raised to 1414.21" "$TMP/huge_err" &&
+    "$R" check "$TMP/huge_out.mesh" >/dev/null && ok "huge-domain-default-hausd $how" ||
+    ko "huge-domain-default-hausd $how: $(tail -1 "$TMP/huge_err")"
+done
+rm -f "$TMP/huge_out.mesh"
+expect_error_matching huge-domain-given-hausd "huge.mesh: --hausd 0.01 as given is below 1e-09" \
+  adapt "$TMP/huge.mesh" --hsiz 1e11 --hausd 0.01 -o "$TMP/huge_out.mesh"
+expect_no_file huge-domain-given-hausd-no-output "$TMP/huge_out.mesh"
+
 # Bad inputs.
 expect_error no-size adapt "$D/2d/aile.mesh" -o "$TMP/x.mesh"
 # Options that were accepted and ignored on planar meshes, or contradict.

@@ -181,6 +181,12 @@ else ko "mesh-one-required-vertex-only: $(grep -A1 -E '^(Corners|Required)' "$TM
 printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1e12 0 0\n1e12 1e12 0\n0 1e12 0\nEdges\n4\n1 2 1\n2 3 1\n3 4 1\n4 1 1\nEnd\n' >"$TMP/huge_sq.mesh"
 "$R" mesh "$TMP/huge_sq.mesh" -o "$TMP/huge_sq_out.mesh" -q && "$R" check "$TMP/huge_sq_out.mesh" >/dev/null &&
   ok mesh-huge-domain-kept-boundary || ko mesh-huge-domain-kept-boundary
+# Its boundary remeshed (--hsiz): the default --hausd is raised to 1e-9 of the domain (QA hunt 5
+# F9: it was refused there too); given, 0.01 is refused as given.
+"$R" mesh "$TMP/huge_sq.mesh" --hsiz 1e11 -o "$TMP/huge_sq_out.mesh" -q && "$R" check "$TMP/huge_sq_out.mesh" >/dev/null &&
+  ok mesh-huge-domain-hsiz || ko mesh-huge-domain-hsiz
+expect_error_matching mesh-huge-domain-given-hausd "\-\-hausd 0.01 as given is below" \
+  mesh "$TMP/huge_sq.mesh" --hsiz 1e11 --hausd 0.01 -o "$TMP/x.mesh"
 # A star polygon whose sharp spike (17.5 degrees) sits next to a gentle turn (37 degrees, no
 # corner): the smooth reconstruction at --hsiz 0.05 crossed the spike's edge and the domain was
 # refused naming edges the user never saw; it is now cut along straight edges, with a note.
