@@ -92,6 +92,13 @@ tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(js
   grep -Eq "^field points: [0-9]+ along edges \([0-9]+ rounds, [0-9]+ too close\)$" &&
   ok "mesh-edge-points-verbose" || ko "mesh-edge-points-verbose"
 expect_error mesh-size-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-6
+# Sizes far beyond the domain give its coarsest mesh (--hsiz 1e100 was refused: "lattice: the
+# metric is not positive definite"); --hmin and --hmax as large too.
+for opt in "--hsiz 1e100" "--hsiz 1e150 --hmax 1e150" "--hmin 1e100" "--hsiz 1 --hmin 1e140"; do
+  "$R" mesh "$SHARED/data/2d/lac-leman.mesh" $opt -o "$TMP/far.mesh" -q >/dev/null &&
+    "$R" check "$TMP/far.mesh" >/dev/null && [ "$(tris "$TMP/far.mesh")" -lt 300 ] &&
+    ok "mesh-far-sizes $opt" || ko "mesh-far-sizes $opt"
+done
 expect_no_file mesh-size-too-small-no-file "$TMP/o7.mesh"
 # Refused before the boundary is cut to the size (1e12 points per edge otherwise).
 expect_error mesh-size-far-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-12
