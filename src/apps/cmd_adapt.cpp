@@ -109,12 +109,23 @@ std::vector<SymMat<D>> metric_from_field(const AdaptArgs& a, const Mesh& mesh) {
   return hessian_metric<D>(mesh, hessians, h);
 }
 
+/// --hsiz as a metric at each of nv vertices. (A size whose metric is too large to compute with,
+/// --hsiz 1e-100, was blamed on vertex 1 of the mesh.)
+template <int D>
+std::vector<SymMat<D>> uniform_metric(double hsiz, std::size_t nv) {
+  const SymMat<D> m = isotropic_metric<D>(hsiz);
+  char what[48];
+  std::snprintf(what, sizeof what, "--hsiz %g", hsiz);
+  require_metric(m, what);
+  return std::vector<SymMat<D>>(nv, m);
+}
+
 /// The metric field for the run: from --metric (tensor, or scalar sizes), --hsiz, --field, or
 /// (--optim) the implied metric of the input mesh.
 std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
   if (!a.metric.empty()) return read_metric_file<2>(a.metric, mesh);
-  if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
+  if (a.hsiz > 0.0) return uniform_metric<2>(a.hsiz, nv);
   if (!a.field.empty()) return metric_from_field<2>(a, mesh);
   return naming_file(a.input, [&] { return implied_metric_of_used(mesh); });
 }
@@ -178,7 +189,7 @@ std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
   if (!a.field.empty()) return metric_from_field<3>(a, mesh);
   if (!a.metric.empty()) return read_metric_file<3>(a.metric, mesh);
-  if (a.hsiz > 0.0) return std::vector<SymMat3>(nv, isotropic_metric<3>(a.hsiz));
+  if (a.hsiz > 0.0) return uniform_metric<3>(a.hsiz, nv);
   return naming_file(a.input, [&] { return implied_metric<3>(mesh.coords, mesh.tets); });
 }
 

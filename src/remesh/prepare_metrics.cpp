@@ -61,14 +61,16 @@ void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m, 
     if (!(det(m[v]) <= det(m[finest]))) finest = v;
   std::string where = "(";
   for (int i = 0; i < D; ++i) where += (i > 0 ? ", " : "") + num(in.coords[D * finest + i]);
+  // Its size from the determinant, or (overflowing: --hsiz 1e-100) the largest eigenvalue.
   const double d = det(m[finest]);
+  const double size =
+      std::isfinite(d) ? std::pow(d, -0.5 / D) : 1.0 / std::sqrt(eigen(m[finest]).values[D - 1]);
   throw InputError(
       "the metric asks for " +
       (std::isfinite(vertices) ? "about " + num(vertices) : std::string("an unbounded number of")) +
       " vertices, more than " +
       (max_vertices < ids ? num(max_vertices) : std::string("the 2^31 - 1 ids hold")) +
-      "; finest size " +
-      (std::isfinite(d) ? num(std::pow(d, -0.5 / D)) : std::string("~0 (determinant overflows)")) +
+      "; finest size " + (size > 0.0 ? num(size) : std::string("~0 (determinant overflows)")) +
       " near " + where + ") (see --hmin)");
 }
 

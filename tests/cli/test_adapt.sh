@@ -135,6 +135,9 @@ expect_error wrong-metric adapt "$D/2d/aile.mesh" --metric "$D/formats/lshape_me
 expect_error missing adapt "$TMP/nope.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
 expect_error volume-field adapt "$D/vol/bunny_vol.mesh" --field "$D/formats/lshape.sol" --complexity 100 -o "$TMP/x.mesh"  # --field is 2D only
 expect_error hgrad adapt "$D/2d/aile.mesh" --hsiz 0.1 --hgrad 0.5 -o "$TMP/x.mesh"
+# A uniform size whose metric overflows names --hsiz (it blamed vertex 1 of the mesh).
+expect_error_matching hsiz-tiny "^riemesh: error: --hsiz 1e-100: metric too large" adapt "$D/2d/aile.mesh" --hsiz 1e-100 -o "$TMP/x.mesh"
+expect_error_matching hsiz-tiny-3d "^riemesh: error: --hsiz 1e-60: metric too large" adapt "$D/vol/bunny_vol.mesh" --hsiz 1e-60 -o "$TMP/x.mesh"
 expect_error hsiz-negative adapt "$D/vol/bunny_vol.mesh" --hsiz -1 -o "$TMP/x.mesh"
 printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nTriangles\n1\n1 2 3 0\nEnd\n' > "$TMP/t.mesh"
 printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n3\n1 3\n1 2 1\n1 0 1\n1 0 1\nEnd\n' > "$TMP/bad.sol"

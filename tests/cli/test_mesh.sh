@@ -92,6 +92,8 @@ tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(js
   grep -Eq "^field points: [0-9]+ along edges \([0-9]+ rounds, [0-9]+ too close\)$" &&
   ok "mesh-edge-points-verbose" || ko "mesh-edge-points-verbose"
 expect_error mesh-size-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-6
+# One whose metric overflows names the size (it said "finest size ~0").
+expect_error_matching mesh-hmax-tiny "finest size 1e-100 near" mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hmax 1e-100
 # Sizes far beyond the domain give its coarsest mesh (--hsiz 1e100 was refused: "lattice: the
 # metric is not positive definite"); --hmin and --hmax as large too.
 for opt in "--hsiz 1e100" "--hsiz 1e150 --hmax 1e150" "--hmin 1e100" "--hsiz 1 --hmin 1e140"; do
