@@ -538,6 +538,7 @@ Adapt2dResult adapt2d_impl(const Mesh& input, std::span<const SymMat2> metrics,
       renumber ? std::span<const SymMat2>(permuted) : metrics;
   // The edge numbering only for the gradation (the rest reads the neighbours and vertex balls).
   Adjacency adjacency = build_face_adjacency(work.triangles, 3, work.num_vertices());
+  require_unfolded(work, adjacency);
   if (options.hgrad > 0.0) add_edges(adjacency, work.triangles);
   std::vector<SymMat2> prepared =
       prepare_metrics<2>(work, adjacency, work_metrics, options, result.report);

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
 #include "core/spd.hpp"
+#include "mesh/check.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
 #include "remesh/simplex_geometry.hpp"
@@ -173,6 +174,24 @@ void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics) {
   for (std::size_t v = 0; v < metrics.size(); ++v)
     if (!is_spd(metrics[v]) || !std::isfinite(det(metrics[v])))
       require_metric(metrics[v], "vertex " + std::to_string(v + 1));
+}
+
+void require_unfolded(const Mesh& in, const Adjacency& adj) {
+  // Edges on three triangles or more (a triangle listed twice, whose copies then "fold" across
+  // a side) are named as such when the remesher reads the triangles.
+  if (!adj.nonmanifold_faces.empty()) return;
+  const std::vector<PlanarFold> folds = planar_folds(in.coords, in.triangles, adj, 1);
+  if (folds.empty()) return;
+  const Id* t = &in.triangles[3 * folds[0].triangle];
+  const auto x = [&](int k, int c) {
+    return in.coords[2 * static_cast<std::size_t>(t[kTriEdge[folds[0].edge][k]]) + c];
+  };
+  char msg[240];
+  std::snprintf(msg, sizeof msg,
+                "the mesh folds over itself at (%g, %g): two counter-clockwise triangles lie on "
+                "the same side of their common edge there (riemesh check: overlapping elements)",
+                0.5 * (x(0, 0) + x(1, 0)), 0.5 * (x(0, 1) + x(1, 1)));
+  throw InputError(msg);
 }
 
 void refuse_edge_refs(const char* what, std::size_t e0, std::size_t e1, std::int32_t r0,

@@ -127,6 +127,13 @@ expect_error_matching dup-triangle "a triangle is listed twice, at (" adapt "$TM
 # one triangle on the other): the remesher made a slit of it, two vertices at one place, exit 0.
 printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n5\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\nTriangles\n3\n1 2 3 1\n1 5 4 1\n5 3 4 1\nEnd\n' >"$TMP/hanging.mesh"
 expect_error_matching hanging-vertex "not conforming at (0.5, 0.5)" adapt "$TMP/hanging.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
+# A folded mesh, each triangle counter-clockwise (the centre of a fan moved below the square, its
+# bottom triangle listed the other way round): accepted, an output of the outline or out of memory.
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n5\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n0.5 -0.5 0\nTriangles\n4\n2 1 5 1\n2 3 5 1\n3 4 5 1\n4 1 5 1\nEnd\n' >"$TMP/folded.mesh"
+for how in "--hsiz 0.2" "--optim"; do
+  expect_error_matching "folded-input $how" "folded.mesh: the mesh folds over itself at (0.25, -0.25)" \
+    adapt "$TMP/folded.mesh" $how -o "$TMP/x.mesh"
+done
 expect_no_file bad-2d-options-no-output "$TMP/x.mesh"
 expect_no_file no-size-file "$TMP/x.mesh"
 expect_error contradiction adapt "$D/2d/aile.mesh" --hsiz 0.1 --metric "$D/formats/lshape_metric.sol" -o "$TMP/x.mesh"
