@@ -249,6 +249,7 @@ void require_outputs(const AdaptArgs& a) {
 
 void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
+  require_verbosity(a.verbosity, a.quiet);
   if (a.hsiz_given->count() > 0) require_size_option("--hsiz", a.hsiz);
   Mesh mesh = read_mesh(a.input);
   // (A mesh of Edges only was told "no size field", or "the mesh has no triangles" with one.)
@@ -302,8 +303,6 @@ void run(AdaptArgs& a) {
   // surfaces too (--hmax -1, --hgrad nan, --interp bogus were taken there).
   a.opt.interp = parse_interp_scheme(a.interp);
   a.opt.validate();
-  if (a.quiet && a.verbosity > 0)
-    throw InputError("-v " + std::to_string(a.verbosity) + " and -q contradict");
   // The default 0.01 was refused on domains over 1e7 across (QA hunt 5 F9): raised there.
   if (a.hausd_given->count() == 0 && !a.nosurf)
     a.opt.hausd = defaulted_hausd(mesh, a.verbosity > 0 && !a.quiet);

@@ -136,6 +136,7 @@ void mesh_geometry(MeshArgs& a) {
 
 void run(MeshArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
+  require_verbosity(a.verbosity, a.quiet);
   if (a.hsiz_given->count() > 0) require_size_option("--hsiz", a.opt.hsiz);
   if (a.opt.hsiz > 0.0 && !a.metric.empty())
     throw InputError("--hsiz and --metric contradict: give one of them");

@@ -91,6 +91,11 @@ tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(js
 "$R" mesh "$TMP/hole.mesh" -o "$TMP/lattice.mesh" -v 1 2>&1 |
   grep -Eq "^field points: [0-9]+ along edges \([0-9]+ rounds, [0-9]+ too close\)$" &&
   ok "mesh-edge-points-verbose" || ko "mesh-edge-points-verbose"
+# Contradicting options: -v 1 and -q were both taken (nothing printed); -v -1 (MMG's silent) and
+# -q agree.
+expect_error_matching mesh-verbose-quiet "\-v 1 and \-q contradict" mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" -v 1 -q
+expect_error_matching mesh3d-verbose-quiet "\-v 2 and \-q contradict" mesh "$SHARED/data/surf/bunny.mesh" -o "$TMP/o7.mesh" -v 2 -q
+"$R" mesh "$TMP/hole.mesh" -o "$TMP/silent.mesh" -v -1 -q >/dev/null && ok mesh-silent-quiet || ko mesh-silent-quiet
 expect_error mesh-size-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-6
 # One whose metric overflows names the size (it said "finest size ~0").
 expect_error_matching mesh-hmax-tiny "finest size 1e-100 near" mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hmax 1e-100
