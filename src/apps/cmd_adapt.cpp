@@ -45,6 +45,7 @@ struct AdaptArgs {
   const CLI::Option* hsiz_given = nullptr;
   const CLI::Option* hausd_given = nullptr;
   const CLI::Option* approach_given = nullptr;
+  std::vector<const CLI::Option*> field_only;  // --field-name, --norm, ... (register_adapt)
 };
 
 /// The implied metric of the mesh at the vertices of its triangles; vertices in no triangle
@@ -274,14 +275,9 @@ void run(AdaptArgs& a) {
     throw InputError("--complexity applies to --field: give the solution with --field F.sol");
   // (They were accepted and ignored, even with values such as --norm abc.)
   if (a.field.empty()) {
-    const char* given = !a.field_name.empty()        ? "--field-name"
-                        : a.norm != "2"              ? "--norm"
-                        : a.recovery != "lsq"        ? "--recovery"
-                        : std::isfinite(a.aniso_max) ? "--aniso-max"
-                                                     : nullptr;
-    if (given)
-      throw InputError(std::string(given) +
-                       " applies to --field: give the solution with --field F.sol");
+    const std::string given = first_given(a.field_only);
+    if (!given.empty())
+      throw InputError(given + " applies to --field: give the solution with --field F.sol");
     if (a.fields.empty() && !a.out_fields.empty())
       throw InputError("--out-fields applies to --fields (or --field): nothing to transfer");
   }
@@ -352,13 +348,17 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--field", a->field,
                   "Solution (.sol): adapt to its Lp-optimal Hessian metric of complexity N and "
                   "transfer it (to --out-fields, default OUT.sol)");
-  cmd->add_option("--field-name", a->field_name, "Scalar field of --field by name or 0-based index");
+  a->field_only.push_back(cmd->add_option("--field-name", a->field_name,
+                                          "Scalar field of --field by name or 0-based index"));
   cmd->add_option("--complexity", a->complexity, "Target complexity N with --field");
-  cmd->add_option("--norm", a->norm, "Lp norm of the metric with --field (1, 2, ..., inf)")
-      ->capture_default_str();
-  cmd->add_option("--recovery", a->recovery, "Hessian recovery with --field: lsq, l2, green")
-      ->capture_default_str();
-  cmd->add_option("--aniso-max", a->aniso_max, "Largest anisotropy ratio with --field");
+  a->field_only.push_back(
+      cmd->add_option("--norm", a->norm, "Lp norm of the metric with --field (1, 2, ..., inf)")
+          ->capture_default_str());
+  a->field_only.push_back(
+      cmd->add_option("--recovery", a->recovery, "Hessian recovery with --field: lsq, l2, green")
+          ->capture_default_str());
+  a->field_only.push_back(
+      cmd->add_option("--aniso-max", a->aniso_max, "Largest anisotropy ratio with --field"));
   cmd->add_option("--fields", a->fields, "Vertex fields (.sol) to transfer to the output (P1)");
   cmd->add_option("--out-fields", a->out_fields, "Where to write the transferred fields (.sol)");
   a->hsiz_given = cmd->add_option(
