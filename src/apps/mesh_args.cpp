@@ -1,9 +1,11 @@
 #include "apps/mesh_args.hpp"
 
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <vector>
 
+#include "apps/field_args.hpp"
 #include "core/error.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
@@ -37,8 +39,19 @@ std::vector<double> load_metric(const std::string& path, const Mesh& mesh) {
       if (metric) throw InputError(path + ": holds several tensor fields, expected one metric");
       metric = &f;
     }
-  if (!metric)
-    throw InputError(path + ": holds no symmetric tensor field (type 3), expected a metric");
+  if (!metric) {
+    // Sizes, one per vertex, are the isotropic metric I/h², as adapt --metric reads them (they
+    // were refused: "no symmetric tensor field").
+    std::vector<double> out;
+    const auto flatten = [&out](const auto& tensors) {
+      for (const auto& m : tensors) out.insert(out.end(), std::begin(m.c), std::end(m.c));
+    };
+    if (mesh.dim == 2)
+      flatten(metric_from_fields<2>(fields, path, mesh.num_vertices()));
+    else
+      flatten(metric_from_fields<3>(fields, path, mesh.num_vertices()));
+    return out;
+  }
   try {
     validate_metric_field(mesh, metric->values);
   } catch (const InputError& e) {

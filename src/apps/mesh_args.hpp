@@ -14,8 +14,9 @@ namespace riemesh::cli {
 Mesh load_mesh(const std::string& path);
 
 /// Reads the single symmetric-tensor field of a .sol/.solb file for `mesh`: one SPD tensor per
-/// vertex, packed in the .sol order. InputError naming the file (and the first bad vertex,
-/// 1-based) for a wrong count, another kind of field, or a tensor that is not SPD.
+/// vertex, packed in the .sol order; or, without one, sizes h (one scalar per vertex) as the
+/// isotropic metric I/h² (read_metric_file). InputError naming the file (and the first bad
+/// vertex, 1-based) for a wrong count, another kind of field, or a tensor that is not SPD.
 std::vector<double> load_metric(const std::string& path, const Mesh& mesh);
 
 /// The --hausd of a run on `domain` when none was given: default_hausd (0.01, raised to the
