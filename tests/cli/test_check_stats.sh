@@ -101,6 +101,14 @@ check_json stats-metric-sizes 'j["metric"]["edge_length"]["min"] == 2 and abs(j[
 [ -n "$json" ] && [ "$(printf '%s' "$json" | sed 's/"file": "[^"]*"//')" = \
   "$("$R" stats --json "$TMP/two.mesh" --metric "$TMP/m4.sol" | sed 's/"file": "[^"]*"//')" ] &&
   ok stats-metric-sizes-as-tensors || ko stats-metric-sizes-as-tensors
+# A subnormal tensor (1e-310) is out of range at its vertex, not "not positive definite" (and
+# "metric at vertex 2: metric ..."); a subnormal off-diagonal is negligible (it gave NaN).
+write_metric "$TMP/sub.sol" 4 "1 0 1" "1e-310 0 1e-310" "1 0 1" "1 0 1"
+expect_error_matching stats-metric-subnormal "sub.sol: vertex 2: metric out of range: a size of 1e+155" \
+  stats "$TMP/two.mesh" --metric "$TMP/sub.sol"
+write_metric "$TMP/sub_off.sol" 4 "1 0 1" "1 1e-310 1" "1 0 1" "1 0 1"
+"$R" stats "$TMP/two.mesh" --metric "$TMP/sub_off.sol" >/dev/null && ok stats-metric-subnormal-off-diagonal ||
+  ko stats-metric-subnormal-off-diagonal
 json=$("$R" stats --json "$TMP/two.mesh")
 check_json stats-no-metric-key '"metric" not in j'
 json=$("$R" stats --json "$TMP/inverted.mesh")
