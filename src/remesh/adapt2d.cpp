@@ -46,6 +46,14 @@ constexpr double kSwapGain = 1e-3;
 // over linear2d's variants (s = 0.095..0.105; 0.683 with 0.1).
 // kSwapsAfterSplit: 8 and unbounded gave the same counts within 0.5%.
 constexpr double kNeedle = 0.1;
+// A split may not leave a triangle on a boundary or interface edge below this quality, or below
+// the one it cuts when that is poorer (as kCurvedSplitFloor in 3D): next to a boundary edge that
+// cannot be split (the reconstructed curve bulges beyond the triangle's apex: a spike's side),
+// the splits of the interior edges along it strung vertices ever closer to it, each pass's
+// triangles flatter (the star20 domain at --hsiz 0.2 --hausd 0.001: quality 0.04, 1e-3, 5e-5,
+// ... 7e-10 after 8 passes, exit 0; QA hunt 5 F12). The PEERS.md cases are unchanged
+// (bench/adapt2d_identical.sh) but linear2d:h0=0.00001, q min 0.694 -> 0.718 after 5 passes.
+constexpr double kSplitFloor = 1e-3;
 constexpr int kSwapsAfterSplit = 16;
 // Balls whose worst quality stays below this after the passes get a quality-driven relocation.
 // polar2d, mean q min of passes 5-8 over 16 variants (s = 0.8..1.15, h0 = 0.0009, 0.0011), with
@@ -216,7 +224,7 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::si
       if (s == kNoId) continue;
       const Id apex = m.tv[s], other_apex = m.tadj[s] == kNoId ? kNoId : m.tv[m.tadj[s]];
       Id created = kNoId;
-      if (split_edge(m, s, ctx.split_point(s), 0.0, &created) == Outcome::kApplied) {
+      if (split_edge(m, s, ctx.split_point(s), kSplitFloor, &created) == Outcome::kApplied) {
         ctx.inherit_hint(created, c.a);
         for (const Id v : {c.a, c.b, apex, created}) changes.mark(v);
         if (other_apex != kNoId) changes.mark(other_apex);
