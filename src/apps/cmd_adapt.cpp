@@ -45,6 +45,7 @@ struct AdaptArgs {
   const CLI::Option* hsiz_given = nullptr;
   const CLI::Option* hausd_given = nullptr;
   const CLI::Option* approach_given = nullptr;
+  std::vector<const CLI::Option*> field_only;  // --field-name, --norm, ... (register_adapt)
 };
 
 /// The implied metric of the mesh at the vertices of its triangles; vertices in no triangle
@@ -109,12 +110,23 @@ std::vector<SymMat<D>> metric_from_field(const AdaptArgs& a, const Mesh& mesh) {
   return hessian_metric<D>(mesh, hessians, h);
 }
 
+/// --hsiz as a metric at each of nv vertices. (A size whose metric is too large to compute with,
+/// --hsiz 1e-100, was blamed on vertex 1 of the mesh.)
+template <int D>
+std::vector<SymMat<D>> uniform_metric(double hsiz, std::size_t nv) {
+  const SymMat<D> m = isotropic_metric<D>(hsiz);
+  char what[48];
+  std::snprintf(what, sizeof what, "--hsiz %g", hsiz);
+  require_metric(m, what);
+  return std::vector<SymMat<D>>(nv, m);
+}
+
 /// The metric field for the run: from --metric (tensor, or scalar sizes), --hsiz, --field, or
 /// (--optim) the implied metric of the input mesh.
 std::vector<SymMat2> load_metric(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
   if (!a.metric.empty()) return read_metric_file<2>(a.metric, mesh);
-  if (a.hsiz > 0.0) return std::vector<SymMat2>(nv, isotropic_metric<2>(a.hsiz));
+  if (a.hsiz > 0.0) return uniform_metric<2>(a.hsiz, nv);
   if (!a.field.empty()) return metric_from_field<2>(a, mesh);
   return naming_file(a.input, [&] { return implied_metric_of_used(mesh); });
 }
@@ -178,7 +190,7 @@ std::vector<SymMat3> load_metric3(const AdaptArgs& a, const Mesh& mesh) {
   const std::size_t nv = mesh.num_vertices();
   if (!a.field.empty()) return metric_from_field<3>(a, mesh);
   if (!a.metric.empty()) return read_metric_file<3>(a.metric, mesh);
-  if (a.hsiz > 0.0) return std::vector<SymMat3>(nv, isotropic_metric<3>(a.hsiz));
+  if (a.hsiz > 0.0) return uniform_metric<3>(a.hsiz, nv);
   return naming_file(a.input, [&] { return implied_metric<3>(mesh.coords, mesh.tets); });
 }
 
@@ -238,6 +250,7 @@ void require_outputs(const AdaptArgs& a) {
 
 void run(AdaptArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
+  require_verbosity(a.verbosity, a.quiet);
   if (a.hsiz_given->count() > 0) require_size_option("--hsiz", a.hsiz);
   Mesh mesh = read_mesh(a.input);
   // (A mesh of Edges only was told "no size field", or "the mesh has no triangles" with one.)
@@ -262,14 +275,9 @@ void run(AdaptArgs& a) {
     throw InputError("--complexity applies to --field: give the solution with --field F.sol");
   // (They were accepted and ignored, even with values such as --norm abc.)
   if (a.field.empty()) {
-    const char* given = !a.field_name.empty()        ? "--field-name"
-                        : a.norm != "2"              ? "--norm"
-                        : a.recovery != "lsq"        ? "--recovery"
-                        : std::isfinite(a.aniso_max) ? "--aniso-max"
-                                                     : nullptr;
-    if (given)
-      throw InputError(std::string(given) +
-                       " applies to --field: give the solution with --field F.sol");
+    const std::string given = first_given(a.field_only);
+    if (!given.empty())
+      throw InputError(given + " applies to --field: give the solution with --field F.sol");
     if (a.fields.empty() && !a.out_fields.empty())
       throw InputError("--out-fields applies to --fields (or --field): nothing to transfer");
   }
@@ -291,8 +299,9 @@ void run(AdaptArgs& a) {
   // surfaces too (--hmax -1, --hgrad nan, --interp bogus were taken there).
   a.opt.interp = parse_interp_scheme(a.interp);
   a.opt.validate();
-  if (a.quiet && a.verbosity > 0)
-    throw InputError("-v " + std::to_string(a.verbosity) + " and -q contradict");
+  // The default 0.01 was refused on domains over 1e7 across (QA hunt 5 F9): raised there.
+  if (a.hausd_given->count() == 0 && !a.nosurf)
+    a.opt.hausd = defaulted_hausd(mesh, a.verbosity > 0 && !a.quiet);
   if (surface) return run_surface(a, mesh);
   if (sources == 0)
     throw InputError("no size field: give --metric M.sol, --hsiz H, --field U.sol --complexity N or --optim");
@@ -339,13 +348,17 @@ void register_adapt(CLI::App& app) {
   cmd->add_option("--field", a->field,
                   "Solution (.sol): adapt to its Lp-optimal Hessian metric of complexity N and "
                   "transfer it (to --out-fields, default OUT.sol)");
-  cmd->add_option("--field-name", a->field_name, "Scalar field of --field by name or 0-based index");
+  a->field_only.push_back(cmd->add_option("--field-name", a->field_name,
+                                          "Scalar field of --field by name or 0-based index"));
   cmd->add_option("--complexity", a->complexity, "Target complexity N with --field");
-  cmd->add_option("--norm", a->norm, "Lp norm of the metric with --field (1, 2, ..., inf)")
-      ->capture_default_str();
-  cmd->add_option("--recovery", a->recovery, "Hessian recovery with --field: lsq, l2, green")
-      ->capture_default_str();
-  cmd->add_option("--aniso-max", a->aniso_max, "Largest anisotropy ratio with --field");
+  a->field_only.push_back(
+      cmd->add_option("--norm", a->norm, "Lp norm of the metric with --field (1, 2, ..., inf)")
+          ->capture_default_str());
+  a->field_only.push_back(
+      cmd->add_option("--recovery", a->recovery, "Hessian recovery with --field: lsq, l2, green")
+          ->capture_default_str());
+  a->field_only.push_back(
+      cmd->add_option("--aniso-max", a->aniso_max, "Largest anisotropy ratio with --field"));
   cmd->add_option("--fields", a->fields, "Vertex fields (.sol) to transfer to the output (P1)");
   cmd->add_option("--out-fields", a->out_fields, "Where to write the transferred fields (.sol)");
   a->hsiz_given = cmd->add_option(

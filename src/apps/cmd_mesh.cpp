@@ -18,10 +18,10 @@
 #include "io/geo.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
-#include "mesh/distance.hpp"
 #include "metric/element.hpp"
 #include "metric/interpolation.hpp"
 #include "metric/metric.hpp"
+#include "remesh/adapt2d.hpp"
 
 namespace riemesh::cli {
 namespace {
@@ -137,6 +137,7 @@ void mesh_geometry(MeshArgs& a) {
 
 void run(MeshArgs& a) {
   if (a.output.empty()) throw InputError("no output file: give -o OUT.mesh");
+  require_verbosity(a.verbosity, a.quiet);
   if (a.hsiz_given->count() > 0) require_size_option("--hsiz", a.opt.hsiz);
   if (a.opt.hsiz > 0.0 && !a.metric.empty())
     throw InputError("--hsiz and --metric contradict: give one of them");
@@ -209,11 +210,12 @@ void run(MeshArgs& a) {
   // finer parts of the boundary), and triangles on those edges could then only be slivers: with
   // a kept boundary the sizes are interpolated, not graded, unless --hgrad says otherwise.
   if (a.opt.keep_boundary && a.hgrad->count() == 0) a.opt.adapt.hgrad = 0.0;
-  // A kept boundary needs no --hausd: the default 0.01, below 1e-9 of a domain beyond 1e7 across,
-  // refused such domains with an error about an option not given (QA hunt 5 F9). No bound then.
-  if (a.opt.keep_boundary && a.hausd->count() == 0 &&
-      a.opt.adapt.hausd < kSmallestHausd * bounding_box_diagonal(domain))
-    a.opt.adapt.hausd = 0.0;
+  // The default 0.01, below 1e-9 of a domain over 1e7 across, refused such domains with an
+  // error about an option not given (QA hunt 5 F9): a kept boundary needs no --hausd (no bound
+  // then), a remeshed one takes the smallest allowed.
+  if (a.hausd->count() == 0 && default_hausd(domain) > a.opt.adapt.hausd)
+    a.opt.adapt.hausd =
+        a.opt.keep_boundary ? 0.0 : defaulted_hausd(domain, a.verbosity > 0 && !a.quiet);
   finish(a, mesh_domain(a, domain));
   // A kept boundary far coarser than --hsiz: each long edge is one triangle's side, whose apex
   // is ~hsiz away: slivers along it (the unit square's edges at --hsiz 0.05: 484 of 1,490

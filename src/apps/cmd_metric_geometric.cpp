@@ -22,10 +22,11 @@ struct GeometricArgs {
   SurfaceMetricOptions opt;
   FeatureOptions features;
   bool nr = false, json = false;
+  const CLI::Option* beta_given = nullptr;
 };
 
 void run_geometric(GeometricArgs& a) {
-  if (!a.opt.anisotropic && a.opt.beta_fraction != SurfaceMetricOptions{}.beta_fraction)
+  if (!a.opt.anisotropic && a.beta_given->count() > 0)
     throw InputError("--beta applies to --aniso (the isotropic metric has no anisotropy)");
   // The options' ranges before the mesh, named by the options (the errors came out of the
   // library prefixed with the mesh's name: "rotor.mesh: hmin must be <= hmax").
@@ -79,9 +80,11 @@ void register_metric_geometric(CLI::App& metric) {
       ->required();
   cmd->add_option("--hausd", a->opt.hausd, "Largest chordal gap (absolute)")->capture_default_str();
   cmd->add_flag("--aniso", a->opt.anisotropic, "Anisotropic metric (principal directions)");
-  cmd->add_option("--beta", a->opt.beta_fraction,
-                  "With --aniso: 0 isotropic .. 1 full anisotropy (same gap in every direction)")
-      ->capture_default_str();
+  a->beta_given =
+      cmd->add_option(
+             "--beta", a->opt.beta_fraction,
+             "With --aniso: 0 isotropic .. 1 full anisotropy (same gap in every direction)")
+          ->capture_default_str();
   cmd->add_option("--hmin", a->opt.hmin, "Smallest size (default: hausd)");
   cmd->add_option("--hmax", a->opt.hmax, "Largest size (default: bounding-box diagonal)");
   cmd->add_option("--hgrad", a->opt.hgrad, "H-shock gradation (0: none)")->capture_default_str();

@@ -40,6 +40,7 @@ struct CombineArgs {
   double hgrad = 0.0;
   bool json = false;
   HessianMetricOptions opt;
+  std::vector<const CLI::Option*> lp_only;  // --norm, --complexity, ... (register_combine)
 };
 
 /// Splits a comma list ("a,b,c"); empty items are errors.
@@ -271,20 +272,10 @@ void combine(CombineArgs& a) {
   if (a.mode == "lp") return combine_spacetime(a);
   if (a.mode != "intersect") throw InputError("--mode must be intersect or lp, got '" + a.mode + "'");
   require_writable(a.output);
-  // The lp options were accepted and ignored in intersect mode, even contradicting ones.
-  const HessianMetricOptions defaults;
-  const char* lp_only = a.norm != "2"                             ? "--norm"
-                        : a.opt.complexity != defaults.complexity ? "--complexity"
-                        : a.intervals != 1                        ? "--intervals"
-                        : !a.meshes.empty()                       ? "--meshes"
-                        : a.time != "max"                         ? "--time"
-                        : !a.lengths.empty()                      ? "--lengths"
-                        : !a.time_steps.empty()                   ? "--time-steps"
-                        : a.opt.hmin != defaults.hmin             ? "--hmin"
-                        : a.opt.hmax != defaults.hmax             ? "--hmax"
-                        : a.opt.aniso_max != defaults.aniso_max   ? "--aniso-max"
-                                                                  : nullptr;
-  if (lp_only) throw InputError(std::string(lp_only) + " applies to --mode lp");
+  // The lp options were accepted and ignored in intersect mode, even contradicting ones (and
+  // given with their default value, until QA hunt 5 F15).
+  const std::string lp_only = first_given(a.lp_only);
+  if (!lp_only.empty()) throw InputError(lp_only + " applies to --mode lp");
   if (a.mesh.empty()) throw InputError("--mesh is required (the mesh the metrics live on)");
   const Mesh mesh = load_mesh(a.mesh);
   require_measurable(mesh, a.mesh);
@@ -331,24 +322,33 @@ void register_combine(CLI::App& metric) {
                   "Output metric (.sol/.solb); --mode lp: one per sub-interval, comma-separated");
   cmd->add_option("--mode", a->mode, "intersect, or lp (space-time Lp metric, BOOK.md §8)")
       ->capture_default_str();
-  cmd->add_option("--norm", a->norm, "lp: norm p (finite)")->capture_default_str();
-  cmd->add_option("--complexity", a->opt.complexity,
-                  "lp: mean complexity per time step N (N_st = N * sum of time steps)")
-      ->check(positive_complexity());
-  cmd->add_option("--intervals", a->intervals, "lp: number of sub-intervals (inputs split evenly)")
-      ->capture_default_str();
-  cmd->add_option("--meshes", a->meshes, "lp: one mesh per sub-interval, comma-separated");
-  cmd->add_option("--time", a->time,
-                  "lp: samples of a sub-interval combined by max (length * intersection of |H|) "
-                  "or integral (trapezoid rule, equally spaced samples, ends included)")
-      ->capture_default_str();
-  cmd->add_option("--lengths", a->lengths, "lp: sub-interval lengths (comma list; default 1/n each)");
-  cmd->add_option("--time-steps", a->time_steps,
-                  "lp: solver time steps per sub-interval (comma list; default: proportional to "
-                  "the lengths, a constant time step)");
-  cmd->add_option("--hmin", a->opt.hmin, "lp: smallest size");
-  cmd->add_option("--hmax", a->opt.hmax, "lp: largest size");
-  cmd->add_option("--aniso-max", a->opt.aniso_max, "lp: largest anisotropy ratio");
+  a->lp_only.push_back(
+      cmd->add_option("--norm", a->norm, "lp: norm p (finite)")->capture_default_str());
+  a->lp_only.push_back(
+      cmd->add_option("--complexity", a->opt.complexity,
+                      "lp: mean complexity per time step N (N_st = N * sum of time steps)")
+          ->check(positive_complexity()));
+  a->lp_only.push_back(cmd->add_option("--intervals", a->intervals,
+                                       "lp: number of sub-intervals (inputs split evenly)")
+                           ->capture_default_str());
+  a->lp_only.push_back(
+      cmd->add_option("--meshes", a->meshes, "lp: one mesh per sub-interval, comma-separated"));
+  a->lp_only.push_back(
+      cmd->add_option(
+             "--time", a->time,
+             "lp: samples of a sub-interval combined by max (length * intersection of |H|) "
+             "or integral (trapezoid rule, equally spaced samples, ends included)")
+          ->capture_default_str());
+  a->lp_only.push_back(cmd->add_option("--lengths", a->lengths,
+                                       "lp: sub-interval lengths (comma list; default 1/n each)"));
+  a->lp_only.push_back(cmd->add_option(
+      "--time-steps", a->time_steps,
+      "lp: solver time steps per sub-interval (comma list; default: proportional to "
+      "the lengths, a constant time step)"));
+  a->lp_only.push_back(cmd->add_option("--hmin", a->opt.hmin, "lp: smallest size"));
+  a->lp_only.push_back(cmd->add_option("--hmax", a->opt.hmax, "lp: largest size"));
+  a->lp_only.push_back(
+      cmd->add_option("--aniso-max", a->opt.aniso_max, "lp: largest anisotropy ratio"));
   cmd->add_option("--hgrad", a->hgrad, "Gradation of the result (0: off)")->capture_default_str();
   cmd->add_flag("--json", a->json, "Print one JSON object (complexity, predicted_vertices, predicted_elements; lp: complexity, interval_complexities)");
   cmd->footer(

@@ -19,6 +19,7 @@ struct UnsteadyArgs {
   std::string combine = "lp", time = "max", recovery = "lsq";
   bool json = false, no_single = false;
   UnsteadyOptions opt;
+  const CLI::Option* time_given = nullptr;
 };
 
 std::string json_number(double v) {
@@ -70,7 +71,7 @@ void run(UnsteadyArgs& a) {
   if (a.time == "max") a.opt.time = TimeCombination::kMax;
   else if (a.time == "integral") a.opt.time = TimeCombination::kIntegral;
   else throw InputError("--time must be max or integral, got '" + a.time + "'");
-  if (a.opt.combine == UnsteadyCombine::kIntersect && a.time != "max")
+  if (a.opt.combine == UnsteadyCombine::kIntersect && a.time_given->count() > 0)
     throw InputError("--time applies to --combine lp (intersect takes every sample's metric)");
   a.opt.single = !a.no_single;
   a.opt.validate();
@@ -136,8 +137,9 @@ void register_unsteady(CLI::App& app) {
                   "lp: space-time Lp metric normalised over all sub-intervals; intersect: the "
                   "samples' Lp metrics (each for N) intersected")
       ->capture_default_str();
-  cmd->add_option("--time", a->time, "lp: samples combined by max (intersection) or integral")
-      ->capture_default_str();
+  a->time_given =
+      cmd->add_option("--time", a->time, "lp: samples combined by max (intersection) or integral")
+          ->capture_default_str();
   cmd->add_option("--norm", a->opt.norm, "p of the Lp metric")->capture_default_str();
   cmd->add_option("--recovery", a->recovery, "Hessian recovery: lsq, l2 or green")
       ->capture_default_str();

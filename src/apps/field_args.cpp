@@ -36,9 +36,13 @@ const Field& select_field(const std::vector<Field>& fields, const std::string& c
 
 template <int D>
 std::vector<SymMat<D>> read_metric_file(const std::string& path, const Mesh& mesh) {
+  return metric_from_fields<D>(read_sol(path, mesh), path, mesh.num_vertices());
+}
+
+template <int D>
+std::vector<SymMat<D>> metric_from_fields(const std::vector<Field>& fields, const std::string& path,
+                                          std::size_t nv) {
   constexpr int kSize = SymMat<D>::kSize;
-  const std::size_t nv = mesh.num_vertices();
-  const std::vector<Field> fields = read_sol(path, mesh);
   // A file of several fields: the first metric was taken without a word (a scalar before a
   // tensor, or the other way round).
   int metrics = 0;
@@ -82,5 +86,9 @@ std::vector<SymMat<D>> read_metric_file(const std::string& path, const Mesh& mes
 
 template std::vector<SymMat2> read_metric_file<2>(const std::string&, const Mesh&);
 template std::vector<SymMat3> read_metric_file<3>(const std::string&, const Mesh&);
+template std::vector<SymMat2> metric_from_fields<2>(const std::vector<Field>&, const std::string&,
+                                                    std::size_t);
+template std::vector<SymMat3> metric_from_fields<3>(const std::vector<Field>&, const std::string&,
+                                                    std::size_t);
 
 }  // namespace riemesh::cli

@@ -1,5 +1,6 @@
 #pragma once
 // Arguments shared by the commands that take a solution field (metric hessian, adapt --field).
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,10 @@ const Field& select_field(const std::vector<Field>& fields, const std::string& c
 /// vertex for a non-SPD tensor or a non-positive size, or when the file has neither kind.
 template <int D>
 std::vector<SymMat<D>> read_metric_file(const std::string& path, const Mesh& mesh);
+
+/// As read_metric_file, from the fields of a .sol file already read for a mesh of nv vertices.
+template <int D>
+std::vector<SymMat<D>> metric_from_fields(const std::vector<Field>& fields, const std::string& path,
+                                          std::size_t nv);
 
 }  // namespace riemesh::cli

@@ -1,14 +1,17 @@
 #include "apps/mesh_args.hpp"
 
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <vector>
 
+#include "apps/field_args.hpp"
 #include "core/error.hpp"
 #include "io/mesh_file.hpp"
 #include "io/sol.hpp"
 #include "mesh/check.hpp"
 #include "metric/mesh_quality.hpp"
+#include "remesh/adapt2d.hpp"
 
 namespace riemesh::cli {
 
@@ -36,8 +39,19 @@ std::vector<double> load_metric(const std::string& path, const Mesh& mesh) {
       if (metric) throw InputError(path + ": holds several tensor fields, expected one metric");
       metric = &f;
     }
-  if (!metric)
-    throw InputError(path + ": holds no symmetric tensor field (type 3), expected a metric");
+  if (!metric) {
+    // Sizes, one per vertex, are the isotropic metric I/h², as adapt --metric reads them (they
+    // were refused: "no symmetric tensor field").
+    std::vector<double> out;
+    const auto flatten = [&out](const auto& tensors) {
+      for (const auto& m : tensors) out.insert(out.end(), std::begin(m.c), std::end(m.c));
+    };
+    if (mesh.dim == 2)
+      flatten(metric_from_fields<2>(fields, path, mesh.num_vertices()));
+    else
+      flatten(metric_from_fields<3>(fields, path, mesh.num_vertices()));
+    return out;
+  }
   try {
     validate_metric_field(mesh, metric->values);
   } catch (const InputError& e) {
@@ -47,6 +61,16 @@ std::vector<double> load_metric(const std::string& path, const Mesh& mesh) {
     throw InputError(msg);
   }
   return metric->values;
+}
+
+double defaulted_hausd(const Mesh& domain, bool note) {
+  const double hausd = default_hausd(domain);
+  if (note && hausd > Adapt2dOptions{}.hausd)
+    std::fprintf(stderr,
+                 "riemesh: note: --hausd not given: the default %g is below %g of the domain's "
+                 "bounding-box diagonal, raised to %g\n",
+                 Adapt2dOptions{}.hausd, kSmallestHausd, hausd);
+  return hausd;
 }
 
 void require_measurable(const Mesh& mesh, const std::string& path) {

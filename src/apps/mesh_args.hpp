@@ -14,9 +14,14 @@ namespace riemesh::cli {
 Mesh load_mesh(const std::string& path);
 
 /// Reads the single symmetric-tensor field of a .sol/.solb file for `mesh`: one SPD tensor per
-/// vertex, packed in the .sol order. InputError naming the file (and the first bad vertex,
-/// 1-based) for a wrong count, another kind of field, or a tensor that is not SPD.
+/// vertex, packed in the .sol order; or, without one, sizes h (one scalar per vertex) as the
+/// isotropic metric I/h² (read_metric_file). InputError naming the file (and the first bad
+/// vertex, 1-based) for a wrong count, another kind of field, or a tensor that is not SPD.
 std::vector<double> load_metric(const std::string& path, const Mesh& mesh);
+
+/// The --hausd of a run on `domain` when none was given: default_hausd (0.01, raised to the
+/// smallest allowed on domains over 1e7 across), with a note on stderr when raised and `note`.
+double defaulted_hausd(const Mesh& domain, bool note);
 
 /// Throws InputError naming the file when the mesh's arrays cannot be measured (sizes, ids out
 /// of range, non-finite coordinates): statistics and pictures need that much; `riemesh check`

@@ -64,4 +64,9 @@ void require_image_output(const std::string& path) {
   require_writable(path);
 }
 
+void require_verbosity(int verbosity, bool quiet) {
+  if (quiet && verbosity > 0)
+    throw InputError("-v " + std::to_string(verbosity) + " and -q contradict: give one of them");
+}
+
 }  // namespace riemesh::cli

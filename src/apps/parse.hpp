@@ -13,6 +13,10 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& wh
 /// the user never gave ("not positive definite", "infinite coefficient").
 void require_size_option(const std::string& option, double size);
 
+/// Throws InputError when -v N (N > 0) and -q are given together: they contradict (`mesh` took
+/// both and printed nothing). MMG's -v -1 (silent) goes with -q.
+void require_verbosity(int verbosity, bool quiet);
+
 /// Throws InputError naming `path` unless it ends in .png or .svg (any case) and can be written
 /// (its folder exists): checked before the work, not after it.
 void require_image_output(const std::string& path);

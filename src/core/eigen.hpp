@@ -63,13 +63,21 @@ inline SymEigen<2> eigen(const SymMat2& m) {
     // The Jacobi rotation that zeroes b, written so that the dependency chain is short
     // (sqrt, then a division and a sqrt in parallel): with h = (d - a)/2 and
     // den = h ± sqrt(h² + b²) (sign of h, no cancellation), the tangent is t = b/den and
-    // cos = |den|/sqrt(den² + b²). Valid for coefficients below 1e150 (no scaling).
-    const double h = 0.5 * (d - a);
-    const double hyp = std::sqrt(h * h + b * b);
+    // cos = |den|/sqrt(den² + b²). t, cos and sin depend on h/b alone: where h² + b² would
+    // under- or overflow (both below ~1e-150 or one above ~1e150), h and b are first scaled by
+    // a power of two, exactly (equal diagonal entries with b = 1e-170 gave den = 0, t = inf and
+    // NaN eigenvalues: the identity plus a negligible b was "not positive definite").
+    double h = 0.5 * (d - a), g = b;
+    const double big = std::max(std::abs(h), std::abs(g));
+    if ((big < 0x1p-500 || big > 0x1p500) && std::isfinite(big)) {
+      const int k = std::ilogb(big);
+      h = std::ldexp(h, -k), g = std::ldexp(g, -k);
+    }
+    const double hyp = std::sqrt(h * h + g * g);
     const double den = h + std::copysign(hyp, h);
-    const double t = b / den;
-    const double inv = 1.0 / std::sqrt(den * den + b * b);
-    const double c = std::abs(den) * inv, s = std::copysign(1.0, den) * b * inv;
+    const double t = g / den;
+    const double inv = 1.0 / std::sqrt(den * den + g * g);
+    const double c = std::abs(den) * inv, s = std::copysign(1.0, den) * g * inv;
     const double l0 = a - t * b, l1 = d + t * b;
     // Columns (c, -s) for l0 and (s, c) for l1; the smaller eigenvalue goes first (computed
     // slots rather than a data-dependent branch).

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
 #include "generate/lattice2d.hpp"
+#include "mesh/distance.hpp"
 #include "metric/metric.hpp"
 #include "remesh/boundary_curves.hpp"
 #include "remesh/prepare_metrics.hpp"
@@ -255,6 +256,19 @@ std::vector<SymMat2> hausd_sizes(const Mesh& boundary, const Adapt2dOptions& opt
   return out;
 }
 
+/// Sizes this many times the domain's bounding-box diagonal and more all give its coarsest mesh
+/// (the boundary and --hausd decide it: the lake of Geneva, 40 across, has 176 vertices from
+/// --hsiz 1e12 up, as at 1e80).
+constexpr double kFarBeyondTheDomain = 1e10;
+
+/// `hsiz`, clamped to kFarBeyondTheDomain times the domain before it is squared: --hsiz 1e100
+/// made a metric of 1e-200 whose determinant underflows, and the lattice refused it as "not
+/// positive definite", blaming the domain.
+double reachable_size(const Mesh& boundary, double hsiz) {
+  const double far = kFarBeyondTheDomain * bounding_box_diagonal(boundary);
+  return far > 0.0 ? std::min(hsiz, far) : hsiz;
+}
+
 /// The boundary cut to the sizes crosses itself (mesh_domain2d_impl): the caller retries with
 /// straight edges.
 struct CutBoundaryCrosses : InputError {
@@ -275,7 +289,8 @@ Mesh2dResult mesh_domain2d_impl(const Mesh& boundary, const Mesh2dOptions& optio
   // A boundary to remesh to a size field is first cut to it (split_boundary).
   std::vector<SymMat2> given = options.metric;
   if (given.empty() && options.hsiz > 0.0)
-    given.assign(boundary.num_vertices(), isotropic_metric<2>(options.hsiz));
+    given.assign(boundary.num_vertices(),
+                 isotropic_metric<2>(reachable_size(boundary, options.hsiz)));
   if (given.empty() && !options.keep_boundary && options.adapt.hausd > 0.0)
     given = hausd_sizes(boundary, options.adapt);
   // The boundary as given is checked first (open loops, crossing or zero-length edges, hole

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "generate/mesh2d.hpp"
+#include "mesh/adjacency.hpp"
 #include "metric/metric.hpp"
 #include "remesh/background.hpp"
 #include "remesh/boundary_curves.hpp"
@@ -163,6 +164,8 @@ std::optional<Regeneration> plan_regeneration(const Mesh& input, std::span<const
   plan.metric = prepared_metric(input, metrics, options, plan.report);
   plan.ratio = unit_triangles(input, plan.metric) / static_cast<double>(input.num_triangles());
   if (plan.ratio < kRegenerateRatio) return std::nullopt;
+  // (adapt2d's test; the mesh made afresh is many times the input: its adjacency costs little.)
+  require_unfolded(input, build_face_adjacency(input.triangles, 3, input.num_vertices()));
   const BoundaryCurves curves =
       build_boundary_curves(input, {options.angle_deg, options.detect_angles});
   CurveDomain domain = curve_domain(input, curves);

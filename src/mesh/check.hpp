@@ -5,8 +5,10 @@
 // count and the first example in id order.
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
+#include "mesh/adjacency.hpp"
 #include "mesh/mesh.hpp"
 
 namespace riemesh {
@@ -78,5 +80,19 @@ struct CoincidentVertices {
   Id first_a = kNoId, first_b = kNoId;
 };
 CoincidentVertices find_coincident_vertices(const Mesh& mesh);
+
+/// Two counter-clockwise neighbours of a planar mesh that traverse their common edge the same
+/// way: one lies over the other (kOverlappingElements). Triangle ids as in the array given.
+struct PlanarFold {
+  std::size_t triangle = 0, neighbour = 0;  ///< triangle < neighbour
+  int edge = 0;  ///< the common edge, local edge of `triangle` (kTriEdge)
+};
+
+/// The first `most` folds of the planar triangles (3 ids each, counter-clockwise or not; `adj`
+/// their face adjacency, build_face_adjacency), in triangle order: the test of check_mesh,
+/// for the remeshers to refuse a folded input with.
+std::vector<PlanarFold> planar_folds(std::span<const double> coords, std::span<const Id> triangles,
+                                     const Adjacency& adj,
+                                     std::size_t most = static_cast<std::size_t>(-1));
 
 }  // namespace riemesh

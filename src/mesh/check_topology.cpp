@@ -56,42 +56,39 @@ void check_nonmanifold(const Adjacency& adj, const Distinct& d, bool surface, Co
   }
 }
 
-/// Calls f(e, i, n, p, q) for each pair of neighbouring triangles e < n that traverse their
-/// common edge p -> q (edge i of e) the same way.
+/// Calls f(e, i, n) for each pair of neighbouring triangles e < n (3 ids each in `tris`) that
+/// traverse their common edge (edge i of e) the same way; stops when f returns false.
 template <class F>
-void for_edges_traversed_alike(const Adjacency& adj, const Distinct& d, F f) {
+void for_edges_traversed_alike(const Adjacency& adj, std::span<const Id> tris, F f) {
   for (std::size_t e = 0; e < adj.num_elements(); ++e)
     for (int i = 0; i < 3; ++i) {
       const Id n = adj.elem2elem[3 * e + i];
       if (n == kNoId || static_cast<std::size_t>(n) < e) continue;
-      const Id p = d.verts[3 * e + kTriEdge[i][0]], q = d.verts[3 * e + kTriEdge[i][1]];
-      const int lp = local_index(&d.verts[3 * n], 3, p), lq = local_index(&d.verts[3 * n], 3, q);
-      if (lp != (lq + 1) % 3) f(e, i, static_cast<std::size_t>(n), p, q);
+      const Id p = tris[3 * e + kTriEdge[i][0]], q = tris[3 * e + kTriEdge[i][1]];
+      const int lp = local_index(&tris[3 * n], 3, p), lq = local_index(&tris[3 * n], 3, q);
+      if (lp != (lq + 1) % 3 && !f(e, i, static_cast<std::size_t>(n))) return;
     }
+}
+
+/// The two vertices of edge i of triangle e.
+std::vector<Id> edge_of(std::span<const Id> tris, std::size_t e, int i) {
+  return {tris[3 * e + kTriEdge[i][0]], tris[3 * e + kTriEdge[i][1]]};
 }
 
 /// Surfaces: a neighbour must traverse the common edge the other way (edge q -> p for p -> q).
 void check_surface_orientation(const Adjacency& adj, const Distinct& d, Collector& col) {
-  for_edges_traversed_alike(adj, d, [&](std::size_t e, int i, std::size_t, Id p, Id q) {
+  for_edges_traversed_alike(adj, d.verts, [&](std::size_t e, int i, std::size_t) {
     col.add(CheckCategory::kInconsistentOrientation, EntityKind::kTriangle, d.id(e),
-            std::vector<Id>{p, q}, i);
+            edge_of(d.verts, e, i), i);
+    return true;
   });
 }
 
-/// Planar meshes: two counter-clockwise neighbours traverse their common edge the same way only
-/// where one lies over the other (a fold; clockwise ones are reported as inverted).
+/// Planar meshes: the folds (planar_folds), each reported at its first triangle.
 void check_planar_folds(const Mesh& m, const Adjacency& adj, const Distinct& d, Collector& col) {
-  const auto ccw = [&](std::size_t e) {
-    const Id* v = &d.verts[3 * e];
-    const auto p = [&](int k) { return &m.coords[2 * static_cast<std::size_t>(v[k])]; };
-    return (p(1)[0] - p(0)[0]) * (p(2)[1] - p(0)[1]) - (p(1)[1] - p(0)[1]) * (p(2)[0] - p(0)[0]) >
-           0.0;
-  };
-  for_edges_traversed_alike(adj, d, [&](std::size_t e, int i, std::size_t n, Id p, Id q) {
-    if (ccw(e) && ccw(n))
-      col.add(CheckCategory::kOverlappingElements, EntityKind::kTriangle, d.id(e),
-              std::vector<Id>{p, q}, i);
-  });
+  for (const PlanarFold& f : planar_folds(m.coords, d.verts, adj))
+    col.add(CheckCategory::kOverlappingElements, EntityKind::kTriangle, d.id(f.triangle),
+            edge_of(d.verts, f.triangle, f.edge), f.edge);
 }
 
 /// Listed edges must be edges of the elements, listed once; returns how often each is listed.
@@ -230,3 +227,26 @@ void check_topology(const Mesh& m, const Elements& el, const std::vector<Id>& ke
 }
 
 }  // namespace riemesh::check_detail
+
+namespace riemesh {
+
+std::vector<PlanarFold> planar_folds(std::span<const double> coords, std::span<const Id> triangles,
+                                     const Adjacency& adj, std::size_t most) {
+  // Two counter-clockwise neighbours traverse their common edge the same way only where one
+  // lies over the other (clockwise ones are inverted, reported as such by check_mesh).
+  const auto ccw = [&](std::size_t e) {
+    const Id* v = &triangles[3 * e];
+    const auto p = [&](int k) { return &coords[2 * static_cast<std::size_t>(v[k])]; };
+    return (p(1)[0] - p(0)[0]) * (p(2)[1] - p(0)[1]) - (p(1)[1] - p(0)[1]) * (p(2)[0] - p(0)[0]) >
+           0.0;
+  };
+  std::vector<PlanarFold> out;
+  if (most == 0) return out;
+  check_detail::for_edges_traversed_alike(adj, triangles, [&](std::size_t e, int i, std::size_t n) {
+    if (ccw(e) && ccw(n)) out.push_back({e, n, i});
+    return out.size() < most;
+  });
+  return out;
+}
+
+}  // namespace riemesh

@@ -92,7 +92,7 @@ void validate_metric_field(const Mesh& mesh, std::span<const double> metric) {
                      " numbers (one per vertex), got " + std::to_string(metric.size()) +
                      " numbers");
   for (std::size_t v = 0; v < nv; ++v) {
-    const std::string what = "metric at vertex " + std::to_string(v + 1);
+    const std::string what = "vertex " + std::to_string(v + 1);
     if (dim == 2)
       require_metric(metric_at<2>(metric, static_cast<Id>(v)), what);
     else

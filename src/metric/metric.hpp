@@ -3,6 +3,7 @@
 // sizes and directions. BOOK.md §1.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <span>
@@ -96,7 +97,18 @@ inline SymMat<D> metric_from_sizes(const Mat<D>& r, const Vec<D>& h) {
 template <int D>
 inline void require_metric(const SymMat<D>& m, const std::string& what) {
   if (!is_finite(m)) throw InputError(what + ": metric has a NaN or infinite coefficient");
-  if (!is_spd(m)) throw InputError(what + ": metric is not positive definite");
+  if (!is_spd(m)) {
+    // Positive but below the smallest normal double (a tensor of 1e-310, subnormal: a size of
+    // 1e155) is out of range, not indefinite (it was said "not positive definite").
+    const double smallest = eigen(m).values[0];
+    if (smallest > 0.0) {
+      char size[48];
+      std::snprintf(size, sizeof size, "%g", 1.0 / std::sqrt(smallest));
+      throw InputError(what + ": metric out of range: a size of " + size +
+                       " (sizes above ~1e154 cannot be squared in doubles)");
+    }
+    throw InputError(what + ": metric is not positive definite");
+  }
   if (!std::isfinite(det(m)))
     throw InputError(what + ": metric too large (its determinant overflows)");
   // Sizes beyond ~1e150 (2D; ~1e100 in 3D): the determinant underflows, and the background mesh

@@ -46,6 +46,14 @@ constexpr double kSwapGain = 1e-3;
 // over linear2d's variants (s = 0.095..0.105; 0.683 with 0.1).
 // kSwapsAfterSplit: 8 and unbounded gave the same counts within 0.5%.
 constexpr double kNeedle = 0.1;
+// A split may not leave a triangle on a boundary or interface edge below this quality, or below
+// the one it cuts when that is poorer (as kCurvedSplitFloor in 3D): next to a boundary edge that
+// cannot be split (the reconstructed curve bulges beyond the triangle's apex: a spike's side),
+// the splits of the interior edges along it strung vertices ever closer to it, each pass's
+// triangles flatter (the star20 domain at --hsiz 0.2 --hausd 0.001: quality 0.04, 1e-3, 5e-5,
+// ... 7e-10 after 8 passes, exit 0; QA hunt 5 F12). The PEERS.md cases are unchanged
+// (bench/adapt2d_identical.sh) but linear2d:h0=0.00001, q min 0.694 -> 0.718 after 5 passes.
+constexpr double kSplitFloor = 1e-3;
 constexpr int kSwapsAfterSplit = 16;
 // Balls whose worst quality stays below this after the passes get a quality-driven relocation.
 // polar2d, mean q min of passes 5-8 over 16 variants (s = 0.8..1.15, h0 = 0.0009, 0.0011), with
@@ -216,7 +224,7 @@ long split_sweeps(Remesh2dContext& ctx, PassStats& st, Changes& changes, std::si
       if (s == kNoId) continue;
       const Id apex = m.tv[s], other_apex = m.tadj[s] == kNoId ? kNoId : m.tv[m.tadj[s]];
       Id created = kNoId;
-      if (split_edge(m, s, ctx.split_point(s), 0.0, &created) == Outcome::kApplied) {
+      if (split_edge(m, s, ctx.split_point(s), kSplitFloor, &created) == Outcome::kApplied) {
         ctx.inherit_hint(created, c.a);
         for (const Id v : {c.a, c.b, apex, created}) changes.mark(v);
         if (other_apex != kNoId) changes.mark(other_apex);
@@ -489,6 +497,10 @@ void Adapt2dOptions::validate() const {
   if (max_passes < 1 || max_passes > 1000) throw InputError("--passes must be in 1..1000");
 }
 
+double default_hausd(const Mesh& domain) {
+  return std::max(Adapt2dOptions{}.hausd, kSmallestHausd * bounding_box_diagonal(domain));
+}
+
 namespace {
 
 /// A --hausd below 1e-9 of the domain's bounding-box diagonal is refused: chords that close to
@@ -498,7 +510,7 @@ void require_hausd_above_roundoff(const Mesh& input, double hausd) {
   if (!(hausd > 0.0)) return;  // 0: no bound
   const double diag = bounding_box_diagonal(input);
   if (hausd >= kSmallestHausd * diag) return;
-  throw InputError("--hausd " + num(hausd) + " is below " + num(kSmallestHausd) +
+  throw InputError("--hausd " + num(hausd) + " as given is below " + num(kSmallestHausd) +
                    " of the domain's size (bounding-box diagonal " + num(diag) +
                    "): give 0 for no bound, or a larger distance");
 }
@@ -534,6 +546,7 @@ Adapt2dResult adapt2d_impl(const Mesh& input, std::span<const SymMat2> metrics,
       renumber ? std::span<const SymMat2>(permuted) : metrics;
   // The edge numbering only for the gradation (the rest reads the neighbours and vertex balls).
   Adjacency adjacency = build_face_adjacency(work.triangles, 3, work.num_vertices());
+  require_unfolded(work, adjacency);
   if (options.hgrad > 0.0) add_edges(adjacency, work.triangles);
   std::vector<SymMat2> prepared =
       prepare_metrics<2>(work, adjacency, work_metrics, options, result.report);

@@ -25,6 +25,11 @@ namespace riemesh {
 /// refuses the run (chords that close ask for millions of boundary vertices).
 inline constexpr double kSmallestHausd = 1e-9;
 
+/// The hausd to use when none is given: the default 0.01 (MMG's, absolute), raised to the
+/// smallest allowed, kSmallestHausd times the bounding-box diagonal, on domains over 1e7
+/// across (the default was refused there, about an option never given: QA hunt 5 F9).
+double default_hausd(const Mesh& domain);
+
 struct Adapt2dOptions {
   double hmin = 0.0;                                         ///< smallest size (0: none)
   double hmax = std::numeric_limits<double>::infinity();     ///< largest size (inf: none)

@@ -217,13 +217,17 @@ std::vector<std::uint8_t> find_corners(const Mesh& mesh, const CurveOptions& opt
       corner[vi] = 1;
       continue;
     }
-    if (opt.detect_angles) {
-      const Vec2 p = xy(mesh, v);
-      const Vec2 a = p - xy(mesh, in.v0 == v ? in.v1 : in.v0);
-      const Vec2 b = xy(mesh, out.v0 == v ? out.v1 : out.v0) - p;
-      const double na = norm(a), nb = norm(b);
-      if (na > 0.0 && nb > 0.0 && dot(a, b) < cos_max * na * nb) corner[vi] = 1;
-    }
+    // Without angle detection (-nr) a turn of 90 degrees or more is still a corner: a smooth
+    // curve through it leaves both edges at 45 degrees or more, bulging by a fifth of their
+    // length and more ((L/2) tan(turn/4)), spikes rounded into blobs that the passes could only
+    // fill with flat triangles (the star20 domain: quality 8e-10 at the tips, exit 0; QA hunt 5
+    // F12).
+    const double cos_turn = opt.detect_angles ? cos_max : 1e-9;  // (a square's rounded cos 90°)
+    const Vec2 p = xy(mesh, v);
+    const Vec2 a = p - xy(mesh, in.v0 == v ? in.v1 : in.v0);
+    const Vec2 b = xy(mesh, out.v0 == v ? out.v1 : out.v0) - p;
+    const double na = norm(a), nb = norm(b);
+    if (na > 0.0 && nb > 0.0 && dot(a, b) < cos_turn * na * nb) corner[vi] = 1;
   }
   return corner;
 }

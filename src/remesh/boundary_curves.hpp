@@ -38,7 +38,8 @@ struct CurveOptions {
   /// A vertex is a corner when the turning angle between its two feature edges exceeds this
   /// (degrees, in [0, 180]; MMG's -ar).
   double angle_deg = 45.0;
-  /// false: no corner from angles (MMG's -nr); tags, junctions and ref changes still make corners.
+  /// false: no corner from angles (MMG's -nr) but turns of 90 degrees or more, which no smooth
+  /// curve follows; tags, junctions and ref changes still make corners.
   bool detect_angles = true;
 
   /// Throws InputError when angle_deg is not a number in [0, 180].

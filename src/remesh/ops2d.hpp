@@ -80,8 +80,9 @@ struct NewVertex {
 };
 
 /// Splits the edge at `slot` (and its neighbour's copy) at nv. Rejected (geometry) when a new
-/// triangle would not have a positive area, or (quality) when one would be below min_quality.
-/// On success *created is the new vertex.
+/// triangle would not have a positive area, or (quality) when one on a boundary or interface edge
+/// (a feature edge of the triangle cut, not the split edge) would be below both min_quality and
+/// the quality of the triangle it is cut from. On success *created is the new vertex.
 Outcome split_edge(TriMesh& m, Id slot, const NewVertex& nv, double min_quality, Id* created);
 
 /// Limits a collapse must respect in the triangles it changes.

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/huge_pages.hpp"
 #include "core/spd.hpp"
+#include "mesh/check.hpp"
 #include "metric/gradation.hpp"
 #include "metric/metric.hpp"
 #include "remesh/simplex_geometry.hpp"
@@ -61,14 +62,16 @@ void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m, 
     if (!(det(m[v]) <= det(m[finest]))) finest = v;
   std::string where = "(";
   for (int i = 0; i < D; ++i) where += (i > 0 ? ", " : "") + num(in.coords[D * finest + i]);
+  // Its size from the determinant, or (overflowing: --hsiz 1e-100) the largest eigenvalue.
   const double d = det(m[finest]);
+  const double size =
+      std::isfinite(d) ? std::pow(d, -0.5 / D) : 1.0 / std::sqrt(eigen(m[finest]).values[D - 1]);
   throw InputError(
       "the metric asks for " +
       (std::isfinite(vertices) ? "about " + num(vertices) : std::string("an unbounded number of")) +
       " vertices, more than " +
       (max_vertices < ids ? num(max_vertices) : std::string("the 2^31 - 1 ids hold")) +
-      "; finest size " +
-      (std::isfinite(d) ? num(std::pow(d, -0.5 / D)) : std::string("~0 (determinant overflows)")) +
+      "; finest size " + (size > 0.0 ? num(size) : std::string("~0 (determinant overflows)")) +
       " near " + where + "): ask for coarser sizes, or bound them with --hmin");
 }
 
@@ -171,6 +174,24 @@ void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics) {
   for (std::size_t v = 0; v < metrics.size(); ++v)
     if (!is_spd(metrics[v]) || !std::isfinite(det(metrics[v])))
       require_metric(metrics[v], "vertex " + std::to_string(v + 1));
+}
+
+void require_unfolded(const Mesh& in, const Adjacency& adj) {
+  // Edges on three triangles or more (a triangle listed twice, whose copies then "fold" across
+  // a side) are named as such when the remesher reads the triangles.
+  if (!adj.nonmanifold_faces.empty()) return;
+  const std::vector<PlanarFold> folds = planar_folds(in.coords, in.triangles, adj, 1);
+  if (folds.empty()) return;
+  const Id* t = &in.triangles[3 * folds[0].triangle];
+  const auto x = [&](int k, int c) {
+    return in.coords[2 * static_cast<std::size_t>(t[kTriEdge[folds[0].edge][k]]) + c];
+  };
+  char msg[240];
+  std::snprintf(msg, sizeof msg,
+                "the mesh folds over itself at (%g, %g): two counter-clockwise triangles lie on "
+                "the same side of their common edge there (riemesh check: overlapping elements)",
+                0.5 * (x(0, 0) + x(1, 0)), 0.5 * (x(0, 1) + x(1, 1)));
+  throw InputError(msg);
 }
 
 void refuse_edge_refs(const char* what, std::size_t e0, std::size_t e1, std::int32_t r0,

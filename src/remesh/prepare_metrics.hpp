@@ -24,6 +24,12 @@ namespace riemesh {
 template <int D>
 void require_valid_input(const Mesh& in, std::span<const SymMat<D>> metrics);
 
+/// Throws InputError when the planar triangles of `in` (`adj`: their face adjacency) fold over
+/// themselves, as riemesh check finds it (planar_folds), naming the place of the first fold's
+/// common edge: each triangle counter-clockwise, such a mesh ran out of memory or came out as
+/// the outline of its boundary.
+void require_unfolded(const Mesh& in, const Adjacency& adj);
+
 /// Throws InputError("<what>s E0 and E1 join the same vertices with different refs (R0 and R1):
 /// an edge has one ref"), E0, E1 1-based: an edge listed twice whose second ref was dropped.
 [[noreturn]] void refuse_edge_refs(const char* what, std::size_t e0, std::size_t e1,

@@ -1,4 +1,6 @@
 // Edge split: the triangle(s) on each side of the edge are cut in two at the new vertex.
+#include <algorithm>
+
 #include "remesh/ops2d.hpp"
 
 namespace riemesh {
@@ -46,11 +48,22 @@ bool side_ok(const TriMesh& m, Id t, int i, const NewVertex& nv, double min_qual
       !fair_area(pc, pa, nv.p) || !fair_area(pc, nv.p, pb))
     return false;
   if (min_quality <= 0.0) return true;
-  const SymMat2 m1 = tri_metric(m.metric[c], log_of(m.log_metric, c), m.metric[a],
-                                log_of(m.log_metric, a), nv.metric, nullptr);
-  const SymMat2 m2 = tri_metric(m.metric[c], log_of(m.log_metric, c), nv.metric, nullptr,
-                                m.metric[b], log_of(m.log_metric, b));
-  return quality_in(m1, pc, pa, nv.p) >= min_quality && quality_in(m2, pc, nv.p, pb) >= min_quality;
+  // Only the halves on a boundary or interface edge of t (c -> a, b -> c), and below the floor
+  // only as poor as t (a poor triangle is still refined).
+  const bool on_ca = m.is_feature(3 * t + (i + 2) % 3), on_bc = m.is_feature(3 * t + (i + 1) % 3);
+  if (!on_ca && !on_bc) return true;
+  min_quality = std::min(min_quality, tri_quality(m, t));
+  if (on_ca) {
+    const SymMat2 m1 = tri_metric(m.metric[c], log_of(m.log_metric, c), m.metric[a],
+                                  log_of(m.log_metric, a), nv.metric, nullptr);
+    if (!(quality_in(m1, pc, pa, nv.p) >= min_quality)) return false;
+  }
+  if (on_bc) {
+    const SymMat2 m2 = tri_metric(m.metric[c], log_of(m.log_metric, c), nv.metric, nullptr,
+                                  m.metric[b], log_of(m.log_metric, b));
+    if (!(quality_in(m2, pc, nv.p, pb) >= min_quality)) return false;
+  }
+  return true;
 }
 
 }  // namespace

@@ -87,6 +87,21 @@ nv_out=$("$R" stats "$TMP/lake.mesh" --json | /usr/bin/python3 -c 'import json,s
 /usr/bin/python3 -c "import sys; sys.exit(0 if abs($nv_out-$nv_in) <= 0.2*$nv_in else 1)" &&
   ok "optim-count ($nv_in -> $nv_out)" || ko "optim-count ($nv_in -> $nv_out)"
 
+# A square 1e12 across: the default --hausd 0.01, below 1e-9 of the domain, refused the run about
+# an option not given (QA hunt 5 F9); it is raised to the smallest allowed (a note at -v 1). Given,
+# the same value is still refused, as given.
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1e12 0 0\n1e12 1e12 0\n0 1e12 0\nTriangles\n2\n1 2 3 1\n1 3 4 1\nEnd\n' >"$TMP/huge.mesh"
+for how in "--hsiz 1e11" "--optim"; do
+  "$R" adapt "$TMP/huge.mesh" $how -o "$TMP/huge_out.mesh" -v 1 2>"$TMP/huge_err" >/dev/null &&
+    grep -q "note: --hausd not given: the default 0.01 is below 1e-09 .*raised to 1414.21" "$TMP/huge_err" &&
+    "$R" check "$TMP/huge_out.mesh" >/dev/null && ok "huge-domain-default-hausd $how" ||
+    ko "huge-domain-default-hausd $how: $(tail -1 "$TMP/huge_err")"
+done
+rm -f "$TMP/huge_out.mesh"
+expect_error_matching huge-domain-given-hausd "huge.mesh: --hausd 0.01 as given is below 1e-09" \
+  adapt "$TMP/huge.mesh" --hsiz 1e11 --hausd 0.01 -o "$TMP/huge_out.mesh"
+expect_no_file huge-domain-given-hausd-no-output "$TMP/huge_out.mesh"
+
 # Bad inputs.
 expect_error no-size adapt "$D/2d/aile.mesh" -o "$TMP/x.mesh"
 # Options that were accepted and ignored on planar meshes, or contradict.
@@ -124,6 +139,13 @@ expect_error_matching dup-triangle "a triangle is listed twice, at (" adapt "$TM
 # one triangle on the other): the remesher made a slit of it, two vertices at one place, exit 0.
 printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n5\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\nTriangles\n3\n1 2 3 1\n1 5 4 1\n5 3 4 1\nEnd\n' >"$TMP/hanging.mesh"
 expect_error_matching hanging-vertex "not conforming at (0.5, 0.5)" adapt "$TMP/hanging.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
+# A folded mesh, each triangle counter-clockwise (the centre of a fan moved below the square, its
+# bottom triangle listed the other way round): accepted, an output of the outline or out of memory.
+printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n5\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n0.5 -0.5 0\nTriangles\n4\n2 1 5 1\n2 3 5 1\n3 4 5 1\n4 1 5 1\nEnd\n' >"$TMP/folded.mesh"
+for how in "--hsiz 0.2" "--optim"; do
+  expect_error_matching "folded-input $how" "folded.mesh: the mesh folds over itself at (0.25, -0.25)" \
+    adapt "$TMP/folded.mesh" $how -o "$TMP/x.mesh"
+done
 expect_no_file bad-2d-options-no-output "$TMP/x.mesh"
 expect_no_file no-size-file "$TMP/x.mesh"
 expect_error contradiction adapt "$D/2d/aile.mesh" --hsiz 0.1 --metric "$D/formats/lshape_metric.sol" -o "$TMP/x.mesh"
@@ -132,6 +154,9 @@ expect_error wrong-metric adapt "$D/2d/aile.mesh" --metric "$D/formats/lshape_me
 expect_error missing adapt "$TMP/nope.mesh" --hsiz 0.1 -o "$TMP/x.mesh"
 expect_error volume-field adapt "$D/vol/bunny_vol.mesh" --field "$D/formats/lshape.sol" --complexity 100 -o "$TMP/x.mesh"  # --field is 2D only
 expect_error hgrad adapt "$D/2d/aile.mesh" --hsiz 0.1 --hgrad 0.5 -o "$TMP/x.mesh"
+# A uniform size whose metric overflows names --hsiz (it blamed vertex 1 of the mesh).
+expect_error_matching hsiz-tiny "^riemesh: error: --hsiz 1e-100: metric too large" adapt "$D/2d/aile.mesh" --hsiz 1e-100 -o "$TMP/x.mesh"
+expect_error_matching hsiz-tiny-3d "^riemesh: error: --hsiz 1e-60: metric too large" adapt "$D/vol/bunny_vol.mesh" --hsiz 1e-60 -o "$TMP/x.mesh"
 expect_error hsiz-negative adapt "$D/vol/bunny_vol.mesh" --hsiz -1 -o "$TMP/x.mesh"
 printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nTriangles\n1\n1 2 3 0\nEnd\n' > "$TMP/t.mesh"
 printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n3\n1 3\n1 2 1\n1 0 1\n1 0 1\nEnd\n' > "$TMP/bad.sol"

@@ -92,6 +92,23 @@ check_json stats-length-hist 'j["metric"]["edge_length"]["histogram"]["counts"] 
 check_json stats-length-edges 'abs(j["metric"]["edge_length"]["histogram"]["edges"][4] - 2**-0.5) < 1e-15 and j["metric"]["edge_length"]["histogram"]["edges"][0] == 0'
 check_json stats-unit-fraction 'j["metric"]["edge_length"]["unit_fraction"] == 0.4'
 check_json stats-metric-quality 'abs(j["metric"]["quality"]["min"] - 0.4*math.sqrt(3)) < 1e-14 and j["metric"]["quality"]["histogram"]["counts"][6] == 2'
+# Sizes, one per vertex (h = 0.5), are the metric I/h² = 4 I, as adapt --metric reads them (they
+# were refused: "no symmetric tensor field"): lengths 2 and 2√2, as from the tensors "4 0 4".
+printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n4\n1 1\n0.5\n0.5\n0.5\n0.5\nEnd\n' >"$TMP/sizes.sol"
+write_metric "$TMP/m4.sol" 4 "4 0 4" "4 0 4" "4 0 4" "4 0 4"
+json=$("$R" stats --json "$TMP/two.mesh" --metric "$TMP/sizes.sol")
+check_json stats-metric-sizes 'j["metric"]["edge_length"]["min"] == 2 and abs(j["metric"]["edge_length"]["max"] - 2*math.sqrt(2)) < 1e-14'
+[ -n "$json" ] && [ "$(printf '%s' "$json" | sed 's/"file": "[^"]*"//')" = \
+  "$("$R" stats --json "$TMP/two.mesh" --metric "$TMP/m4.sol" | sed 's/"file": "[^"]*"//')" ] &&
+  ok stats-metric-sizes-as-tensors || ko stats-metric-sizes-as-tensors
+# A subnormal tensor (1e-310) is out of range at its vertex, not "not positive definite" (and
+# "metric at vertex 2: metric ..."); a subnormal off-diagonal is negligible (it gave NaN).
+write_metric "$TMP/sub.sol" 4 "1 0 1" "1e-310 0 1e-310" "1 0 1" "1 0 1"
+expect_error_matching stats-metric-subnormal "sub.sol: vertex 2: metric out of range: a size of 1e+155" \
+  stats "$TMP/two.mesh" --metric "$TMP/sub.sol"
+write_metric "$TMP/sub_off.sol" 4 "1 0 1" "1 1e-310 1" "1 0 1" "1 0 1"
+"$R" stats "$TMP/two.mesh" --metric "$TMP/sub_off.sol" >/dev/null && ok stats-metric-subnormal-off-diagonal ||
+  ko stats-metric-subnormal-off-diagonal
 json=$("$R" stats --json "$TMP/two.mesh")
 check_json stats-no-metric-key '"metric" not in j'
 json=$("$R" stats --json "$TMP/inverted.mesh")

@@ -91,7 +91,21 @@ tris() { "$R" stats --json "$1" | /usr/bin/python3 -c "import json,sys; print(js
 "$R" mesh "$TMP/hole.mesh" -o "$TMP/lattice.mesh" -v 1 2>&1 |
   grep -Eq "^field points: [0-9]+ along edges \([0-9]+ rounds, [0-9]+ too close\)$" &&
   ok "mesh-edge-points-verbose" || ko "mesh-edge-points-verbose"
+# Contradicting options: -v 1 and -q were both taken (nothing printed); -v -1 (MMG's silent) and
+# -q agree.
+expect_error_matching mesh-verbose-quiet "\-v 1 and \-q contradict" mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" -v 1 -q
+expect_error_matching mesh3d-verbose-quiet "\-v 2 and \-q contradict" mesh "$SHARED/data/surf/bunny.mesh" -o "$TMP/o7.mesh" -v 2 -q
+"$R" mesh "$TMP/hole.mesh" -o "$TMP/silent.mesh" -v -1 -q >/dev/null && ok mesh-silent-quiet || ko mesh-silent-quiet
 expect_error mesh-size-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-6
+# One whose metric overflows names the size (it said "finest size ~0").
+expect_error_matching mesh-hmax-tiny "finest size 1e-100 near" mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hmax 1e-100
+# Sizes far beyond the domain give its coarsest mesh (--hsiz 1e100 was refused: "lattice: the
+# metric is not positive definite"); --hmin and --hmax as large too.
+for opt in "--hsiz 1e100" "--hsiz 1e150 --hmax 1e150" "--hmin 1e100" "--hsiz 1 --hmin 1e140"; do
+  "$R" mesh "$SHARED/data/2d/lac-leman.mesh" $opt -o "$TMP/far.mesh" -q >/dev/null &&
+    "$R" check "$TMP/far.mesh" >/dev/null && [ "$(tris "$TMP/far.mesh")" -lt 300 ] &&
+    ok "mesh-far-sizes $opt" || ko "mesh-far-sizes $opt"
+done
 expect_no_file mesh-size-too-small-no-file "$TMP/o7.mesh"
 # Refused before the boundary is cut to the size (1e12 points per edge otherwise).
 expect_error mesh-size-far-too-small mesh "$TMP/hole.mesh" -o "$TMP/o7.mesh" --hsiz 1e-12
@@ -181,6 +195,12 @@ else ko "mesh-one-required-vertex-only: $(grep -A1 -E '^(Corners|Required)' "$TM
 printf 'MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1e12 0 0\n1e12 1e12 0\n0 1e12 0\nEdges\n4\n1 2 1\n2 3 1\n3 4 1\n4 1 1\nEnd\n' >"$TMP/huge_sq.mesh"
 "$R" mesh "$TMP/huge_sq.mesh" -o "$TMP/huge_sq_out.mesh" -q && "$R" check "$TMP/huge_sq_out.mesh" >/dev/null &&
   ok mesh-huge-domain-kept-boundary || ko mesh-huge-domain-kept-boundary
+# Its boundary remeshed (--hsiz): the default --hausd is raised to 1e-9 of the domain (QA hunt 5
+# F9: it was refused there too); given, 0.01 is refused as given.
+"$R" mesh "$TMP/huge_sq.mesh" --hsiz 1e11 -o "$TMP/huge_sq_out.mesh" -q && "$R" check "$TMP/huge_sq_out.mesh" >/dev/null &&
+  ok mesh-huge-domain-hsiz || ko mesh-huge-domain-hsiz
+expect_error_matching mesh-huge-domain-given-hausd "\-\-hausd 0.01 as given is below" \
+  mesh "$TMP/huge_sq.mesh" --hsiz 1e11 --hausd 0.01 -o "$TMP/x.mesh"
 # A star polygon whose sharp spike (17.5 degrees) sits next to a gentle turn (37 degrees, no
 # corner): the smooth reconstruction at --hsiz 0.05 crossed the spike's edge and the domain was
 # refused naming edges the user never saw; it is now cut along straight edges, with a note.

@@ -36,6 +36,12 @@ expect_png render-volume-boundary "$TMP/v.png" 400
 
 # Bad requests: exit 2, one line, no picture.
 write_two_triangles "$TMP/two.mesh"
+# Sizes, one per vertex, draw as their metric I/h² (they were refused: "no symmetric tensor field").
+printf 'MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n4\n1 1\n0.5\n0.5\n0.25\n0.5\nEnd\n' >"$TMP/sizes.sol"
+write_metric "$TMP/sizes_as_tensors.sol" 4 "4 0 4" "4 0 4" "16 0 16" "4 0 4"
+run render-metric-sizes render "$TMP/two.mesh" --metric "$TMP/sizes.sol" --color size -o "$TMP/sz.svg"
+"$R" render "$TMP/two.mesh" --metric "$TMP/sizes_as_tensors.sol" --color size -o "$TMP/st.svg" &&
+  cmp -s "$TMP/sz.svg" "$TMP/st.svg" && ok render-metric-sizes-as-tensors || ko render-metric-sizes-as-tensors
 write_metric "$TMP/short.sol" 2 "1 0 1" "1 0 1"
 write_metric "$TMP/nan.sol" 4 "1 0 1" "nan 0 1" "1 0 1" "1 0 1"
 expect_error render-missing render "$TMP/none.mesh" -o "$TMP/x1.png"

@@ -131,6 +131,19 @@ expect_error_matching unsteady-time-intersect "^riemesh: error: --time applies t
   unsteady --complexities 200 --combine intersect --time integral --no-single
 expect_error_matching geometric-beta-alone "^riemesh: error: --beta applies to --aniso" \
   metric geometric "$SHARED/data/surf/fandisk.mesh" --beta 0.5 -o "$TMP/g.sol"
+# The same given with their default values (taken for not given and accepted: QA hunt 5 F15).
+for opt in "--norm 2" "--recovery lsq" "--field-name sol0"; do
+  expect_error_matching "adapt-default-without-field $opt" "^riemesh: error: ${opt%% *} applies to --field" \
+    adapt "$L.mesh" --hsiz 0.2 $opt -o "$TMP/s.mesh"
+done
+for opt in "--norm 2" "--time max" "--intervals 1"; do
+  expect_error_matching "combine-default-lp-option $opt" "^riemesh: error: ${opt%% *} applies to --mode lp" \
+    metric combine "${L}_metric.sol" --mesh "$L.mesh" $opt -o "$TMP/c.sol"
+done
+expect_error_matching unsteady-default-time-intersect "^riemesh: error: --time applies to --combine lp" \
+  unsteady --complexities 200 --combine intersect --time max --no-single
+expect_error_matching geometric-default-beta-alone "^riemesh: error: --beta applies to --aniso" \
+  metric geometric "$SHARED/data/surf/fandisk.mesh" --beta 1 -o "$TMP/g.sol"
 # A folder as input, and render's output checked before the drawing (its errors carried the
 # input's name).
 mkdir -p "$TMP/dd.msh"

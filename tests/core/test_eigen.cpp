@@ -142,6 +142,33 @@ TEST(Eigen, IndefiniteAndScaledInputs) {
   }
 }
 
+TEST(Eigen, TwoByTwoScaledInputs) {
+  // As the 3D case above: the Jacobi rotation's h² + b² overflowed beyond 1e150 and underflowed
+  // below 1e-150 (t = b/0 = inf, NaN eigenvalues).
+  std::mt19937_64 rng(12);
+  for (double scale : {1e-300, 1e-200, 1e-160, 1e-30, 1.0, 1e30, 1e160, 1e200, 1e300}) {
+    const Mat2 r = random_rotation<2>(rng);
+    const Vec2 l{{-3.0 * scale, 0.5 * scale}};
+    SymEigen<2> e = eigen(compose(r, l));
+    e.values = e.values / scale;
+    EXPECT_LT(reconstruction_error(compose(r, l / scale), e), 50 * kEps) << scale;
+    for (int i = 0; i < 2; ++i) EXPECT_NEAR(e.values[i], l[i] / scale, 50 * kEps * 3) << scale;
+    EXPECT_LT(orthogonality_error(e.vectors), 4 * kEps) << scale;
+  }
+}
+
+TEST(Eigen, TwoByTwoTinyOffDiagonal) {
+  // The identity plus an off-diagonal 1e-170 or 1e-310 (a metric read from a file): eigenvalues
+  // 1 ± b, i.e. 1, and orthonormal vectors. It gave NaN, and the metric was "not positive
+  // definite" (QA hunt 5 F15).
+  for (const double b : {1e-170, -1e-170, 1e-310}) {
+    const SymEigen<2> e = eigen(SymMat2{{1.0, b, 1.0}});
+    EXPECT_EQ(e.values[0], 1.0) << b;
+    EXPECT_EQ(e.values[1], 1.0) << b;
+    EXPECT_LT(orthogonality_error(e.vectors), 4 * kEps) << b;
+  }
+}
+
 TEST(Eigen, ZeroMatrix) {
   const SymEigen<3> e = eigen(SymMat3::zero());
   for (int i = 0; i < 3; ++i) EXPECT_EQ(e.values[i], 0.0);

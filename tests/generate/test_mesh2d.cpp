@@ -181,6 +181,24 @@ TEST(Mesh2d, SharedDataDomains) {
   }
 }
 
+TEST(Mesh2d, SizesFarBeyondTheDomainGiveItsCoarsestMesh) {
+  // --hsiz 1e100 on the lake of Geneva (40 across): its metric 1e-200 has a determinant that
+  // underflows, and the unit lattice refused it as "not positive definite", blaming the domain.
+  // The size is clamped to 1e10 times the domain: the coarsest mesh, as from --hsiz 1e12.
+  const Mesh full = read_mesh(std::string(RIEMESH_SHARED_DATA) + "/2d/lac-leman.mesh");
+  const Mesh b = extract_boundary2d(full);
+  std::size_t coarsest = 0;
+  for (const double h : {1e12, 1e100, 1e150}) {
+    Mesh2dOptions o;
+    o.hsiz = h;
+    const Mesh2dResult r = mesh_domain2d(b, o);
+    EXPECT_TRUE(check_mesh(r.mesh).valid()) << h;
+    if (coarsest == 0) coarsest = r.mesh.num_triangles();
+    EXPECT_EQ(r.mesh.num_triangles(), coarsest) << h;
+    EXPECT_LT(r.mesh.num_triangles(), full.num_triangles() / 5) << h;
+  }
+}
+
 TEST(Mesh2d, TwelveCircularHoles) {
   // The unit square with 12 disjoint clockwise circles (radius 0.02-0.08, edges ~0.01): one
   // region, 12 holes, a valid mesh whose area is that of the polygons (boundary remeshed on its

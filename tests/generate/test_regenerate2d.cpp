@@ -264,3 +264,26 @@ TEST(Regenerate2d, BadInputGivesAdapt2dsErrors) {
   for (auto& m : nan) m.c[1] = std::nan("");
   EXPECT_THROW(adapt_or_regenerate2d(square, nan, Adapt2dOptions{}), InputError);
 }
+
+TEST(Regenerate2d, FoldedInputRefusedByPlace) {
+  // The unit square's centre fan, the centre moved below the square and the triangle on the
+  // bottom side listed the other way round: every triangle counter-clockwise, but the mesh folds
+  // over itself (riemesh check: overlapping elements). A fine uniform size meshed the outline of
+  // its boundary afresh, exit 0; --optim (the passes) ran out of memory.
+  Mesh in;
+  in.dim = 2;
+  in.coords = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, -0.5};
+  in.triangles = {1, 0, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
+  in.tri_ref.assign(4, 1);
+  ASSERT_EQ(check_mesh(in).count(CheckCategory::kOverlappingElements), 2u);
+  for (const double h : {0.02, 1.0}) {
+    const std::vector<SymMat2> met(in.num_vertices(), isotropic_metric<2>(h));
+    try {
+      adapt_or_regenerate2d(in, met, Adapt2dOptions{});
+      ADD_FAILURE() << h;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("the mesh folds over itself at (0.25, -0.25)", 0), 0u)
+          << e.what();
+    }
+  }
+}

@@ -87,6 +87,31 @@ TEST(MetricBasics, RequireMetricRejectsBadInput) {
   }
 }
 
+TEST(MetricBasics, RequireMetricSaysSubnormalIsOutOfRange) {
+  // Subnormal entries (1e-310) were "not positive definite": positive, they are out of range
+  // (a size of 1e155); a subnormal off-diagonal next to unit ones is negligible, accepted (the
+  // 2D eigen solver gave NaN for it). QA hunt 5 F15.
+  for (const SymMat2& m : {SymMat2{{1e-310, 0.0, 1e-310}}, SymMat2{{1.0, 0.0, 1e-310}}}) {
+    try {
+      require_metric(m, "f.sol: vertex 5");
+      FAIL();
+    } catch (const InputError& e) {
+      EXPECT_EQ(
+          std::string(e.what()).rfind("f.sol: vertex 5: metric out of range: a size of 1e+155", 0),
+          0u)
+          << e.what();
+    }
+  }
+  EXPECT_NO_THROW(require_metric(SymMat2{{1.0, 1e-310, 1.0}}, "m"));
+  EXPECT_NO_THROW(require_metric(SymMat2{{1.0, 1e-170, 1.0}}, "m"));
+  try {
+    require_metric(SymMat2{{1.0, 0.0, -1e-310}}, "m");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "m: metric is not positive definite");
+  }
+}
+
 TEST(MetricBasics, SameMetricOnlyWhenEveryEntryIsEqual) {
   EXPECT_FALSE(same_metric<2>({}).has_value());
   const std::vector<SymMat2> same = {isotropic_metric<2>(0.1), isotropic_metric<2>(0.1)};

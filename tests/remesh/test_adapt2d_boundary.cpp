@@ -7,8 +7,10 @@
 #include <cmath>
 #include <set>
 
+#include "generate/mesh2d.hpp"
 #include "io/medit.hpp"
 #include "mesh/check.hpp"
+#include "metric/mesh_quality.hpp"
 #include "remesh/adapt2d.hpp"
 #include "remesh/boundary_distance.hpp"
 
@@ -83,4 +85,30 @@ TEST(Adapt2dBoundary, SizesFarBeyondTheDomain) {
     EXPECT_TRUE(check_mesh(r.mesh).valid()) << h;
     EXPECT_LT(r.mesh.num_triangles(), in.num_triangles() / 10) << h;
   }
+}
+
+TEST(Adapt2dBoundary, SpikesLeaveNoFlatTriangles) {
+  // The star20 domain (spikes of 8-36 degrees, one next to a gentle 38-degree turn) meshed with
+  // its boundary kept, its Corners dropped, adapted at size 0.2. The passes strung interior
+  // vertices against an edge they could not split: a spike's side whose reconstructed curve
+  // bulges beyond the triangle's apex (with or without -nr), or, with -nr, the tips smoothed
+  // into blobs. Triangles of quality 4e-10 to 8e-10 came out, valid by check, exit 0 (QA hunt
+  // 5 F12); now at least 2e-3.
+  const Mesh star = read_medit(std::string(RIEMESH_TEST_DATA) + "/star20.mesh");
+  Mesh2dOptions mo;
+  mo.adapt.hgrad = 0.0;
+  Mesh in = mesh_domain2d(star, mo).mesh;
+  for (auto& tag : in.vert_tag) tag = static_cast<std::uint8_t>(tag & ~kTagCorner);
+  const double h = 0.2;
+  const std::vector<SymMat2> met(in.num_vertices(), SymMat2{{1 / (h * h), 0.0, 1 / (h * h)}});
+  for (const bool nr : {false, true})
+    for (const double hausd : {0.01, 0.001}) {
+      Adapt2dOptions o;
+      o.hausd = hausd;
+      o.detect_angles = !nr;
+      const Adapt2dResult r = adapt2d(in, met, o);
+      EXPECT_TRUE(check_mesh(r.mesh).valid()) << nr << " " << hausd;
+      const std::vector<double> q = element_qualities(r.mesh);
+      EXPECT_GT(*std::min_element(q.begin(), q.end()), 1e-3) << "-nr " << nr << " hausd " << hausd;
+    }
 }

@@ -306,14 +306,38 @@ TEST(BoundaryCurves, AngleThresholdSplitsAtSharpCornersOnly) {
     EXPECT_EQ(bc.curves.size(), 24u);
     for (const BoundaryCurve& c : bc.curves) EXPECT_LT(chord_deviation(c, 0.0, 1.0), 1e-15);
   }
-  {  // -nr: no angle corners at all
+  {  // -nr: no angle corners below 90 degrees, whatever --angle: vertex 0 (136) only
     CurveOptions o;
     o.detect_angles = false;
     o.angle_deg = 1.0;
     const BoundaryCurves bc = build_boundary_curves(m, o);
     ASSERT_EQ(bc.curves.size(), 1u);
-    EXPECT_TRUE(bc.curves[0].closed);
+    EXPECT_FALSE(bc.curves[0].closed);
+    EXPECT_EQ(count_corners(bc), 1);
+    EXPECT_TRUE(bc.corner[0]);
   }
+}
+
+TEST(BoundaryCurves, NoAngleDetectionKeepsTurnsOf90DegreesAndMore) {
+  // -nr: square corners (90 degrees) and a spike's tip (170 degrees) stay corners; a smooth
+  // curve through them bulged by a fifth of the edges and more, and the passes left flat
+  // triangles there (QA hunt 5 F12). The turns below 90 degrees (47 and 59 at vertices 5 and
+  // 6, 85 at vertex 2) are smoothed.
+  Mesh m;
+  m.dim = 2;
+  // (0,0) (1,0) (1,1), a spike out to (3, 1.09) and back (10 degrees wide), a bend, home.
+  const double sp = std::tan(10.0 * std::numbers::pi / 180.0);
+  m.coords = {0, 0, 1, 0, 1, 1, 3, 1 + 2 * sp * 0.5, 1, 1 + 2 * sp, 0.5, 1.5, 0, 1.2};
+  for (Id k = 0; k < 7; ++k) m.edges.insert(m.edges.end(), {k, (k + 1) % 7});
+  m.edge_ref.assign(7, 1);
+  m.edge_tag.assign(7, kTagNone);
+  m.vert_tag.assign(7, kTagNone);
+  CurveOptions o;
+  o.detect_angles = false;
+  const BoundaryCurves bc = build_boundary_curves(m, o);
+  EXPECT_TRUE(bc.corner[0] && bc.corner[1]);  // 90 degrees
+  EXPECT_TRUE(bc.corner[3]);                  // the spike's tip
+  EXPECT_FALSE(bc.corner[2] || bc.corner[4] || bc.corner[5] || bc.corner[6]);
 }
 
 TEST(BoundaryCurves, RefChangesAndTagsMakeCorners) {
