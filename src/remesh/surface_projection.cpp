@@ -262,7 +262,7 @@ bool SurfaceProjection::within(const Vec3& p, double r, Id* hint) const {
     if (near_plane && s[0] >= -r && s[1] >= -r && s[2] >= -r) {
       bool in = s[0] >= 0.0 && s[1] >= 0.0 && s[2] >= 0.0;
       if (!in) {
-        const Vec3 d = p - closest_point_on_triangle(p, tp.a, tp.b, tp.c);
+        const Vec3 d = p - tp.closest(p);
         in = dot(d, d) <= r2;
       }
       if (in) {
