@@ -29,6 +29,7 @@
 // Refs of triangles and feature edges are carried (a patch keeps its ref), corners never move.
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "core/symmat.hpp"
@@ -47,7 +48,8 @@ struct SurfaceCycle {
 struct SurfaceAdaptOptions {
   double hausd = 0.01;  ///< chordal tolerance (absolute), as mmgs's -hausd
   double hsiz = 0.0;    ///< uniform size cap (0: only the geometric size)
-  double hmin = 0.0;    ///< <= 0: hausd
+  double hmin = 0.0;    ///< <= 0: hausd (bounds the geometric sizes only); > 0: every size,
+                        ///< --hsiz and the user metric's too (clipped, with a note)
   double hmax = 0.0;    ///< <= 0: the bounding-box diagonal
   double hgrad = 1.3;   ///< H-shock gradation of the sizes (<= 0: none)
   /// Anisotropic geometric metric (sizes αρ1 along w1, up to βρ2 along w2; BOOK.md §1), lengths
@@ -70,6 +72,8 @@ struct SurfaceAdaptReport {
   int cycles = 0;
   std::size_t input_corners = 0, input_feature_edges = 0;
   double q_min = 0.0, q_mean = 0.0;  ///< Euclidean triangle quality 4√3 A / Σ l² of the output
+  /// Sizes clipped to --hmin or --hmax, as Adapt2dReport::notes (one line each, no prefix).
+  std::vector<std::string> notes;
 };
 
 /// Remeshes a surface mesh (3D triangles, no tetrahedra). The output has Triangles with the

@@ -116,4 +116,21 @@ expect_error_matching surface-coincident-vertices "same.mesh: triangle 3: vertic
   adapt "$TMP/same.mesh" --hausd 0.01 -o "$TMP/x.mesh"
 expect_error_matching distance-spacing-inf "^riemesh: error: --spacing: must be a finite length >= 0, got inf" \
   distance "$IN" "$IN" --spacing inf
+# --hsiz below --hmin: --hmin wins, with 2D and 3D's note (it lowered --hmin silently: QA hunt 6
+# G4); --hsiz above --hmax: clipped, noted. The rotor at --hsiz 0.02 --hmin 0.04 is the rotor at
+# --hsiz 0.04.
+"$R" adapt "$IN" -o "$TMP/h4.mesh" --hsiz 0.04 -q
+"$R" adapt "$IN" -o "$TMP/h2.mesh" --hsiz 0.02 --hmin 0.04 2>"$TMP/err_h"
+if cmp -s "$TMP/h4.mesh" "$TMP/h2.mesh" &&
+  grep -q "^riemesh: note: the metric asks for sizes below --hmin 0.04 at .*: clipped to --hmin" "$TMP/err_h"; then
+  ok adapt-surface-hsiz-below-hmin
+else
+  ko "adapt-surface-hsiz-below-hmin: $(cat "$TMP/err_h")"
+fi
+"$R" adapt "$IN" -o "$TMP/h8.mesh" --hsiz 0.08 --hmax 0.04 2>"$TMP/err_h"
+if cmp -s "$TMP/h4.mesh" "$TMP/h8.mesh" && grep -q "^riemesh: note: sizes above --hmax 0.04 clipped" "$TMP/err_h"; then
+  ok adapt-surface-hsiz-above-hmax
+else
+  ko "adapt-surface-hsiz-above-hmax: $(cat "$TMP/err_h")"
+fi
 exit $fail
