@@ -95,6 +95,49 @@ std::string num(double v) {
   return buf;
 }
 
+/// A user metric (a volume solver's, say) measured along the surface: the remesher measures
+/// edges, all tangent to the surface, so only its restriction to the tangent plane matters (as in
+/// mmgs); the full tensor's smallest size could be the one across the surface (a boundary layer:
+/// sizes 0.3 along a sphere and 0.05 across it refined it 40 times: QA hunt 6 G7). The tangent
+/// plane is the vertex's (its fitted normal); at a feature vertex, or without a fit, the planes of
+/// its triangles (the finest size along any of them).
+class AlongSurface {
+ public:
+  AlongSurface(const Mesh& in, const Adjacency& adj, const SurfaceFeatures& f,
+               const std::vector<VertexCurvature>& c, bool needed)
+      : adj_(adj), features_(f), curvature_(c) {
+    if (needed) tri_normal_ = triangle_normals(in);
+  }
+  /// 1/h² of the finest size x asks along the surface at vertex v.
+  double finest(std::size_t v, const SymMat3& x) const {
+    if (const Vec3* n = normal(v)) return largest_in_plane(x, *n);
+    double l = 0.0;
+    for (const Id t : ball(adj_, static_cast<Id>(v)))
+      if (const Vec3& n = tri_normal_[static_cast<std::size_t>(t)]; dot(n, n) > 0.0)
+        l = std::max(l, largest_in_plane(x, n));
+    return l > 0.0 ? l : eigen(x).values[2];  // no plane: the smallest principal size
+  }
+  /// x restricted to v's tangent plane, the finest size along it across (tangent_metric); x
+  /// itself at a feature vertex (two planes or more) or without a fit.
+  SymMat3 tangent(std::size_t v, const SymMat3& x) const {
+    const Vec3* n = normal(v);
+    return n ? tangent_metric(x, *n) : x;
+  }
+
+ private:
+  const Vec3* normal(std::size_t v) const {
+    const VertexCurvature& c = curvature_[v];
+    const bool feature = features_.vert_tag[v] & (kTagRidge | kTagCorner);
+    return !feature && c.fitted && dot(c.geometry.normal, c.geometry.normal) > 0.0
+               ? &c.geometry.normal
+               : nullptr;
+  }
+  const Adjacency& adj_;
+  const SurfaceFeatures& features_;
+  const std::vector<VertexCurvature>& curvature_;
+  std::vector<Vec3> tri_normal_;
+};
+
 /// The sizes --hsiz and the user metric ask for, clipped to [--hmin, --hmax] as 2D and 3D clip
 /// theirs (prepare_metrics), with the same notes: --hsiz folded into the geometric metric's hmax
 /// (raised to --hmin when below), the user metric's sizes below --hmin clipped after the
@@ -124,11 +167,12 @@ std::vector<SymMat3> vertex_metrics(const Mesh& input, const Adjacency& adj,
   m.beta_fraction = o.beta_fraction;
   m.user_metric = &o.metric;
   std::vector<SymMat3> metric = geometric_surface_metric(input, adj, features, curvature, m);
+  const AlongSurface along(input, adj, features, curvature, !o.metric.empty());
   if (o.hmin > 0.0) {
     const double hi = 1.0 / (o.hmin * o.hmin);
     std::size_t below = 0, first = 0;
     for (std::size_t v = 0; v < metric.size(); ++v) {
-      const bool asks = hsiz_below || (!o.metric.empty() && eigen(o.metric[v]).values[2] > hi);
+      const bool asks = hsiz_below || (!o.metric.empty() && along.finest(v, o.metric[v]) > hi);
       if (asks && below++ == 0) first = v;
       metric[v] = project_spd(metric[v], 0.0, hi);
     }
@@ -138,8 +182,13 @@ std::vector<SymMat3> vertex_metrics(const Mesh& input, const Adjacency& adj,
                       num(input.coords[3 * first]) + ", " + num(input.coords[3 * first + 1]) +
                       ", " + num(input.coords[3 * first + 2]) + "): clipped to --hmin");
   }
-  if (!o.anisotropic)  // isotropic: the smallest principal size in every direction
+  if (!o.metric.empty()) {  // measured along the surface (QA hunt 6 G7)
+    for (std::size_t v = 0; v < metric.size(); ++v)
+      metric[v] = o.anisotropic ? along.tangent(v, metric[v])
+                                : SymMat3::diagonal(along.finest(v, metric[v]));
+  } else if (!o.anisotropic) {  // isotropic: the smallest principal size in every direction
     for (SymMat3& x : metric) x = SymMat3::diagonal(eigen(x).values[2]);
+  }
   return metric;
 }
 

@@ -56,8 +56,9 @@ struct SurfaceAdaptOptions {
   /// and qualities measured in it; false: the smallest principal size in every direction.
   bool anisotropic = false;
   double beta_fraction = 1.0;  ///< with anisotropic: 0 isotropic .. 1 the full β
-  /// A user metric per input vertex (SPD), intersected with the geometric metric; the remesher
-  /// follows the smallest size of the result (isotropic). Empty: none.
+  /// A user metric per input vertex (SPD), intersected with the geometric metric and measured
+  /// along the surface (its restriction to the tangent plane): the remesher follows the
+  /// smallest size of that (isotropic). Empty: none.
   std::vector<SymMat3> metric;
   FeatureOptions features;
   int max_cycles = 12;  ///< split/collapse/swap/smooth cycles
