@@ -73,6 +73,7 @@ void run_adapt_surface(const SurfaceAdaptArgs& args, const Mesh& mesh) {
     batch.write(args.out_fields, [&](const std::string& path) { write_sol(path, moved, 3); });
   batch.commit();
   if (args.quiet) return;
+  for (const std::string& note : r.notes) std::fprintf(stderr, "riemesh: note: %s\n", note.c_str());
   if (!args.field.empty())
     std::fprintf(stderr,
                  "riemesh: field metric: complexity %.0f (a unit mesh of it: about %.0f "

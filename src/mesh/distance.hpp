@@ -12,8 +12,9 @@
 
 namespace riemesh {
 
-/// The point of triangle abc closest to p (Ericson, Real-Time Collision Detection, §5.1.5:
-/// Voronoi regions of the vertices, edges and face). Degenerate triangles are handled (the
+/// The point of triangle abc closest to p: its projection on the plane when that is inside the
+/// edge lines, else the closest point of the edges facing p; rounded relative to p's distance to
+/// the vertices, also for needle triangles (aspect 1e6). Degenerate triangles are handled (the
 /// closest point of the segment or point they reduce to).
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
@@ -40,9 +41,11 @@ struct TriangleProbe {
       if (s0 < -r || s1 < -r || s2 < -r) return false;
       if (s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0) return true;
     }
-    const Vec3 d = p - closest_point_on_triangle(p, a, b, c);
+    const Vec3 d = p - closest(p);
     return dot(d, d) <= r2;
   }
+  /// closest_point_on_triangle(p, a, b, c), with the normals computed once.
+  Vec3 closest(const Vec3& p) const;
 };
 
 /// Bounding-volume hierarchy (axis-aligned boxes, median splits) over the triangles of a mesh,

@@ -665,9 +665,8 @@ Adapt3dResult adapt3d(Mesh&& input, std::vector<SymMat3>&& metrics,
   ctx->restore_refs();
   const TetMesh final_mesh = std::move(m);
   std::vector<std::uint32_t>().swap(final_mesh.edge_scratch);
-  const std::vector<std::int32_t> edge_refs = ctx->edge_refs();
   ctx.reset();
-  result.mesh = to_mesh(final_mesh, edge_refs, &result.metrics);
+  result.mesh = to_mesh(final_mesh, &result.metrics);
   return result;
 }
 

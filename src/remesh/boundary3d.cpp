@@ -110,6 +110,18 @@ Boundary3d::Boundary3d(const TetMesh& m, std::vector<std::int32_t> curved_refs,
     }
     s.tri_ref.push_back(m.face_ref(slot));
   }
+  // The input's Edges on the curved patches are feature lines too (a line drawn inside a patch:
+  // its vertices kCurve, its edges split on it; m.line_ref keeps their refs).
+  std::vector<std::uint64_t> lines;
+  for (const auto& [key, ref] : m.line_ref) lines.push_back(key);
+  std::sort(lines.begin(), lines.end());  // (the map's order is no order)
+  for (const std::uint64_t key : lines) {
+    const Id a = surf_id_[key & 0xffffffffu], b = surf_id_[key >> 32];
+    if (a == kNoId || b == kNoId) continue;
+    s.edges.insert(s.edges.end(), {a, b});
+    s.edge_ref.push_back(m.line_ref.at(key));
+    s.edge_tag.push_back(kTagNone);
+  }
   geo_ = std::make_unique<SurfaceProjection>(s, feature_options(options), std::move(metric),
                                              kLift * hausd_);
   tag_ = geo_->features().vert_tag;  // the kinds: the input's features
@@ -159,6 +171,13 @@ std::unique_ptr<SurfaceProjection> Boundary3d::geometry_projection(const Mesh& g
       s.triangles.push_back(sid[v]);
     }
     s.tri_ref.push_back(g.tri_ref[t]);
+  }
+  for (std::size_t e = 0; e < g.num_edges(); ++e) {  // its lines on those patches (as above)
+    const Id a = sid[g.edges[2 * e]], b = sid[g.edges[2 * e + 1]];
+    if (a == kNoId || b == kNoId) continue;
+    s.edges.insert(s.edges.end(), {a, b});
+    s.edge_ref.push_back(e < g.edge_ref.size() ? g.edge_ref[e] : 0);
+    s.edge_tag.push_back(kTagNone);
   }
   if (s.triangles.empty()) {
     for (const std::int32_t r : curved_refs_) refs += (refs.empty() ? "" : ", ") + std::to_string(r);

@@ -28,7 +28,8 @@ bool boundary_ok(const TetMesh& m, const std::vector<Id>& shell, Id from, Id to)
   const std::int32_t p0 = m.vplane[2 * from], p1 = m.vplane[2 * from + 1];
   if (k == VertexKind::kRidge) {  // along its line: the edge in both planes
     const auto has = [&](std::int32_t p) { return std::find(refs, refs + n, p) != refs + n; };
-    return n >= 2 && has(p0) && has(p1);
+    // (a line of the input's Edges inside planar patch p0 = p1: along the line's edges)
+    return n >= 2 && has(p0) && has(p1) && (p0 != p1 || m.on_line(from, to));
   }
   // A rim vertex (remesh3d_context.hpp: the rebuilt curved patch p0 meets the planar p1, with
   // 2 or 3 faces on the rim): along the rim, an edge on both.
@@ -92,6 +93,10 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
       if (edge_longer_than(m, to, x, limits.max_length)) return Outcome::kRejectedQuality;
       seen.push_back(x);
     }
+  // A vertex on a line of the input's Edges goes only along it (m.line_ref).
+  bool on_lines = false;
+  for (const Id x : seen) on_lines = on_lines || m.on_line(from, x);
+  if (on_lines && !m.on_line(from, to)) return Outcome::kRejectedTopology;
   tets.clear();
   double new_worst = 1.0;
   for (const Id t : ball) {
@@ -126,6 +131,15 @@ Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits) 
     return Outcome::kRejectedGeometry;
   const Substitution subst[1] = {{to, from}};
   if (!replace_cavity(m, ball, tets, subst)) return Outcome::kRejectedTopology;
+  if (!m.line_ref.empty()) {  // from's lines now end at `to` (the edge (from, to) is gone)
+    m.line_ref.erase(TetMesh::line_key(from, to));
+    for (const Id x : seen)
+      if (const auto it = m.line_ref.find(TetMesh::line_key(from, x)); it != m.line_ref.end()) {
+        const std::int32_t ref = it->second;
+        m.line_ref.erase(it);
+        m.line_ref.emplace(TetMesh::line_key(to, x), ref);
+      }
+  }
   m.kill_vertex(from);
   return Outcome::kApplied;
 }

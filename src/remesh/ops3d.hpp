@@ -107,14 +107,15 @@ struct NewVertex3 {
 
 /// Splits edge (a, b) at nv: every tet of its shell is cut in two. Rejected (geometry) when a
 /// new tet would be flat or inverted, (quality) when one would be below min_quality. Listed
-/// faces on the edge are split with their refs. *created receives the new vertex. `hint`: a
-/// tet that may hold the edge (saves the search).
+/// faces on the edge are split with their refs, an edge of m.line_ref into two with its ref.
+/// *created receives the new vertex. `hint`: a tet that may hold the edge (saves the search).
 Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_quality,
                    Id* created, Id hint = kNoId);
 
 /// Removes `from` by merging it into `to` (they must be joined). Rejected by the boundary rules
 /// (a fixed vertex never goes; a planar vertex only along an edge inside its plane; a ridge
-/// vertex only along its ridge), when a new edge would be longer than limits.max_length, when a
+/// vertex only along its ridge; a vertex on a line of m.line_ref only along it, its lines then
+/// ending at `to`), when a new edge would be longer than limits.max_length, when a
 /// new tet would be flat, or below min(limits.min_quality, the ball's worst quality), or when
 /// the result would not be a manifold (the face matching of replace_cavity).
 Outcome collapse_edge(TetMesh& m, Id from, Id to, const CollapseLimits& limits);

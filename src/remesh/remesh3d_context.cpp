@@ -1,6 +1,7 @@
 #include "remesh/remesh3d_context.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -105,21 +106,7 @@ Remesh3dContext::Remesh3dContext(Mesh&& input, std::vector<SymMat3>&& metrics,
   num_input_vertices_ = mesh_.vertex_capacity();
   hint_.assign(mesh_.vertex_capacity(), kNoId);
   for (std::size_t v = 0; v < hint_.size(); ++v) hint_[v] = mesh_.vtet[v];
-  std::vector<Id> shell;
-  for (std::size_t e = 0; e < input.num_edges(); ++e) {
-    const Id a = input.edges[2 * e], b = input.edges[2 * e + 1];
-    if (!mesh_.vert_alive(a) || !mesh_.vert_alive(b)) continue;
-    collect_shell(mesh_, a, b, shell);
-    std::int32_t refs[4];
-    int n = 0;
-    bool interface = false;
-    if (!edge_faces(mesh_, shell, a, b, refs, n, interface) || interface || n != 2) continue;
-    for (std::int32_t& r : refs)  // (the output has the given refs: restore_refs)
-      if (const auto it = pieces_.find(r); it != pieces_.end()) r = it->second;
-    if (refs[0] == refs[1]) continue;
-    edge_refs_.insert(edge_refs_.end(), {std::min(refs[0], refs[1]), std::max(refs[0], refs[1]),
-                                         input.edge_ref.empty() ? 0 : input.edge_ref[e]});
-  }
+  classify_line_vertices();
 }
 
 void Remesh3dContext::find_planes() {
@@ -294,6 +281,70 @@ bool Remesh3dContext::classify_vertices() {
   return froze;
 }
 
+void Remesh3dContext::classify_line_vertices() {
+  TetMesh& m = mesh_;
+  struct Ends {
+    Id other[2];
+    std::int32_t ref[2];
+    int n = 0;
+  };
+  std::map<Id, Ends> at;  // per vertex on a line: its first two line edges and their count
+  for (const auto& [key, ref] : m.line_ref)
+    for (const auto& [v, w] :
+         {std::pair{static_cast<Id>(key & 0xffffffffu), static_cast<Id>(key >> 32)},
+          std::pair{static_cast<Id>(key >> 32), static_cast<Id>(key & 0xffffffffu)}}) {
+      Ends& e = at[v];
+      if (e.n < 2) e.other[e.n] = w, e.ref[e.n] = ref;
+      ++e.n;
+    }
+  // The refs of the listed faces at edge (a, b) (an interface's once), sorted, then their count
+  // (+ 8 on an interface).
+  const auto faces = [this](Id a, Id b, std::array<std::int32_t, 5>& out) {
+    thread_local std::vector<Id> shell;
+    collect_shell(mesh_, a, b, shell);
+    std::int32_t refs[4] = {0, 0, 0, 0};
+    int n = 0;
+    bool interface = false;
+    if (shell.empty() || !edge_faces(mesh_, shell, a, b, refs, n, interface)) return false;
+    std::sort(refs, refs + 4);  // (the unused entries are 0 on both edges compared)
+    std::copy(refs, refs + 4, out.begin());
+    out[4] = n + (interface ? 8 : 0);
+    return true;
+  };
+  for (const auto& [v, e] : at) {
+    VertexKind& k = m.vkind[v];
+    if (k == VertexKind::kFixed) continue;
+    // Inside a line: two line edges of one ref on the same patches, else a corner of the lines
+    // (an end, a junction, a ref change, a line leaving a ridge across a patch).
+    std::array<std::int32_t, 5> f0{}, f1{};
+    bool inside = e.n == 2 && e.ref[0] == e.ref[1] && faces(v, e.other[0], f0) &&
+                  faces(v, e.other[1], f1) && f0 == f1;
+    if (inside && k == VertexKind::kPlanar) {  // a straight line inside a planar patch
+      const Vec3 &p = m.xyz[v], &p0 = m.xyz[e.other[0]], &p1 = m.xyz[e.other[1]];
+      const Vec3 d = p1 - p0;
+      const double t = dot(p - p0, d) / dot(d, d);
+      inside = t > 0.0 && t < 1.0 && norm(p - (p0 + t * d)) <= flat_tol_;
+      if (inside) k = VertexKind::kRidge;  // (vplane: the patch twice)
+    } else if (k != VertexKind::kRidge && k != VertexKind::kCurve) {
+      inside = false;  // a curved patch whose reconstruction does not hold the line
+    }
+    if (!inside) k = VertexKind::kFixed;
+  }
+}
+
+bool Remesh3dContext::line_direction(Id v, Vec3& d) const {
+  thread_local std::vector<Id> ball;
+  collect_ball(mesh_, v, ball);
+  for (const Id t : ball)
+    for (int i = 0; i < 4; ++i) {
+      const Id x = mesh_.tv[4 * t + i];
+      if (x == v || !mesh_.on_line(v, x)) continue;
+      d = normalize(mesh_.xyz[x] - mesh_.xyz[v]);
+      return true;
+    }
+  return false;
+}
+
 bool Remesh3dContext::interface_line(const std::int32_t* r, int n, std::int32_t& r1,
                                      std::int32_t& r2) const {
   if (n < 3 || n > 4) return false;
@@ -410,6 +461,12 @@ bool Remesh3dContext::split_point(Id a, Id b, NewVertex3& out, Id hint) const {
       out.plane[0] = std::min(refs[0], refs[1]), out.plane[1] = std::max(refs[0], refs[1]);
     }
   }
+  if (mesh_.on_line(a, b)) {  // on a line of the input's Edges: the new vertex on that line
+    if (out.kind == VertexKind::kPlanar)
+      out.kind = VertexKind::kRidge;  // inside a planar patch (straight: classify_line_vertices)
+    else if (out.kind != VertexKind::kRidge && out.kind != VertexKind::kCurve)
+      return false;
+  }
   const Vec3 ab = mesh_.xyz[b] - mesh_.xyz[a];
   const double t = split_fraction(length(mesh_.metric[a], ab), length(mesh_.metric[b], ab));
   out.p = mesh_.xyz[a] + t * ab;
@@ -501,7 +558,8 @@ bool Remesh3dContext::constrain(Id v, Vec3& p) const {
   } else if (k == VertexKind::kRidge) {  // onto the line through v where the two patches meet
     const Vec3& o = mesh_.xyz[v];
     Vec3 d;
-    if (!ridge_direction(mesh_.vplane[2 * v], mesh_.vplane[2 * v + 1], d)) return false;
+    const std::int32_t r1 = mesh_.vplane[2 * v], r2 = mesh_.vplane[2 * v + 1];
+    if (r1 == r2 ? !line_direction(v, d) : !ridge_direction(r1, r2, d)) return false;
     p = o + dot(p - o, d) * d;
   } else if (on_curved_boundary(k)) {
     p = boundary_->place(k, p);

@@ -25,8 +25,6 @@ class Remesh3dContext {
 
   TetMesh& mesh() { return mesh_; }
   const TetMesh& mesh() const { return mesh_; }
-  /// (ref1, ref2, edge ref) triples of the input's ridge Edges, for to_mesh.
-  const std::vector<std::int32_t>& edge_refs() const { return edge_refs_; }
 
   /// The vertex to insert on edge (a, b) (at floor(n/2)/n of its metric length L, n = round(L)) and its kind; false when the
   /// boundary rules forbid splitting the edge. `hint`: a tet that may hold the edge.
@@ -98,6 +96,14 @@ class Remesh3dContext {
   /// The vertices' kinds; true when it found planar interfaces to keep as given (made
   /// non-planar: classify again).
   bool classify_vertices();
+  /// The kinds of the vertices on the lines of the input's Edges (TetMesh::line_ref): inside a
+  /// line (two line edges of one ref on the same patches) a ridge or curve vertex stays so, a
+  /// planar one becomes a ridge of its patch (vplane: the patch twice) when the line is straight
+  /// there; the others are fixed (line ends, junctions, ref changes, bends in a planar patch).
+  void classify_line_vertices();
+  /// The direction of the line of the input's Edges through ridge vertex v inside a planar
+  /// patch (towards a neighbour on it); false when v has none.
+  bool line_direction(Id v, Vec3& d) const;
   const Plane* plane(std::int32_t ref) const;
   /// The refs r[0..n) at a vertex or edge are rebuilt curved patches (boundary_) and coplanar
   /// planar patches, at least one of each: the rim of a curved patch on a plane (a cylinder
@@ -129,7 +135,6 @@ class Remesh3dContext {
   std::map<std::int32_t, std::int32_t> pieces_;
   /// Coplanar planar patches (r1 < r2) meeting along a straight line: its unit direction.
   std::map<std::pair<std::int32_t, std::int32_t>, Vec3> coplanar_lines_;
-  std::vector<std::int32_t> edge_refs_;
   std::vector<Id> hint_;  // per vertex: a background tet near it
   std::size_t num_input_vertices_ = 0;
   double flat_tol_ = 0.0;  // kFlatness x the bounding box's diagonal (plane_fit.hpp)

@@ -77,6 +77,12 @@ Outcome split_edge(TetMesh& m, Id a, Id b, const NewVertex3& nv, double min_qual
   }
   m.vkind[x] = nv.kind;
   m.vplane[2 * x] = nv.plane[0], m.vplane[2 * x + 1] = nv.plane[1];
+  if (const auto it = m.line_ref.find(TetMesh::line_key(a, b)); it != m.line_ref.end()) {
+    const std::int32_t ref = it->second;  // the halves of a line's edge stay on it
+    m.line_ref.erase(it);
+    m.line_ref.emplace(TetMesh::line_key(a, x), ref);
+    m.line_ref.emplace(TetMesh::line_key(x, b), ref);
+  }
   if (created) *created = x;
   return Outcome::kApplied;
 }

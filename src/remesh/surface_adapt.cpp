@@ -5,9 +5,12 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
+#include "core/spd.hpp"
 #include "mesh/distance.hpp"
 #include "remesh/surface_adapt_detail.hpp"
 #include "remesh/surface_curvature.hpp"
@@ -89,24 +92,106 @@ constexpr double kBadQuality = 0.3;
 /// Largest number of consecutive split (or collapse) passes in one cycle.
 constexpr int kInnerPasses = 8;
 
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+/// A user metric (a volume solver's, say) measured along the surface: the remesher measures
+/// edges, all tangent to the surface, so only its restriction to the tangent plane matters (as in
+/// mmgs); the full tensor's smallest size could be the one across the surface (a boundary layer:
+/// sizes 0.3 along a sphere and 0.05 across it refined it 40 times: QA hunt 6 G7). The tangent
+/// plane is the vertex's (its fitted normal); at a feature vertex, or without a fit, the planes of
+/// its triangles (the finest size along any of them).
+class AlongSurface {
+ public:
+  AlongSurface(const Mesh& in, const Adjacency& adj, const SurfaceFeatures& f,
+               const std::vector<VertexCurvature>& c, bool needed)
+      : adj_(adj), features_(f), curvature_(c) {
+    if (needed) tri_normal_ = triangle_normals(in);
+  }
+  /// 1/h² of the finest size x asks along the surface at vertex v.
+  double finest(std::size_t v, const SymMat3& x) const {
+    if (const Vec3* n = normal(v)) return largest_in_plane(x, *n);
+    double l = 0.0;
+    for (const Id t : ball(adj_, static_cast<Id>(v)))
+      if (const Vec3& n = tri_normal_[static_cast<std::size_t>(t)]; dot(n, n) > 0.0)
+        l = std::max(l, largest_in_plane(x, n));
+    return l > 0.0 ? l : eigen(x).values[2];  // no plane: the smallest principal size
+  }
+  /// x restricted to v's tangent plane, the finest size along it across (tangent_metric); x
+  /// itself at a feature vertex (two planes or more) or without a fit.
+  SymMat3 tangent(std::size_t v, const SymMat3& x) const {
+    const Vec3* n = normal(v);
+    return n ? tangent_metric(x, *n) : x;
+  }
+
+ private:
+  const Vec3* normal(std::size_t v) const {
+    const VertexCurvature& c = curvature_[v];
+    const bool feature = features_.vert_tag[v] & (kTagRidge | kTagCorner);
+    return !feature && c.fitted && dot(c.geometry.normal, c.geometry.normal) > 0.0
+               ? &c.geometry.normal
+               : nullptr;
+  }
+  const Adjacency& adj_;
+  const SurfaceFeatures& features_;
+  const std::vector<VertexCurvature>& curvature_;
+  std::vector<Vec3> tri_normal_;
+};
+
+/// The sizes --hsiz and the user metric ask for, clipped to [--hmin, --hmax] as 2D and 3D clip
+/// theirs (prepare_metrics), with the same notes: --hsiz folded into the geometric metric's hmax
+/// (raised to --hmin when below), the user metric's sizes below --hmin clipped after the
+/// intersection and the gradation (which only shrinks sizes). Before 2026-12-07 a --hsiz below
+/// --hmin silently lowered --hmin to it (QA hunt 6 G4: --hsiz 0.05 --hmin 0.1 gave the 13,248
+/// triangles of --hsiz 0.05 alone).
 std::vector<SymMat3> vertex_metrics(const Mesh& input, const Adjacency& adj,
                                     const SurfaceFeatures& features,
                                     const std::vector<VertexCurvature>& curvature,
-                                    const SurfaceAdaptOptions& o) {
+                                    const SurfaceAdaptOptions& o, std::vector<std::string>& notes) {
   SurfaceMetricOptions m;
   m.hausd = kCentroidFactor * o.hausd;
   m.hmin = o.hmin;
   m.hmax = o.hmax;
-  if (o.hsiz > 0.0) m.hmax = m.hmax > 0.0 ? std::min(m.hmax, o.hsiz) : o.hsiz;
-  if (m.hmin > 0.0 && m.hmax > 0.0 && m.hmin > m.hmax) m.hmin = m.hmax;
+  if (o.hsiz > 0.0) {
+    m.hmax = m.hmax > 0.0 ? std::min(m.hmax, o.hsiz) : o.hsiz;
+    if (o.hmax > 0.0 && o.hsiz > o.hmax)
+      notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
+                      std::to_string(input.num_vertices()) + " vertices (--hsiz " + num(o.hsiz) +
+                      ")");
+  }
+  const bool hsiz_below = o.hmin > 0.0 && o.hsiz > 0.0 && o.hsiz < o.hmin;
+  if (hsiz_below) m.hmax = o.hmin;
   m.hgrad = o.hgrad;
   m.gradation_measures = false;  // not reported
   m.anisotropic = o.anisotropic;
   m.beta_fraction = o.beta_fraction;
   m.user_metric = &o.metric;
   std::vector<SymMat3> metric = geometric_surface_metric(input, adj, features, curvature, m);
-  if (!o.anisotropic)  // isotropic: the smallest principal size in every direction
+  const AlongSurface along(input, adj, features, curvature, !o.metric.empty());
+  if (o.hmin > 0.0) {
+    const double hi = 1.0 / (o.hmin * o.hmin);
+    std::size_t below = 0, first = 0;
+    for (std::size_t v = 0; v < metric.size(); ++v) {
+      const bool asks = hsiz_below || (!o.metric.empty() && along.finest(v, o.metric[v]) > hi);
+      if (asks && below++ == 0) first = v;
+      metric[v] = project_spd(metric[v], 0.0, hi);
+    }
+    if (below > 0)
+      notes.push_back("the metric asks for sizes below --hmin " + num(o.hmin) + " at " +
+                      std::to_string(below) + " vertices, e.g. near (" +
+                      num(input.coords[3 * first]) + ", " + num(input.coords[3 * first + 1]) +
+                      ", " + num(input.coords[3 * first + 2]) + "): clipped to --hmin");
+  }
+  if (!o.metric.empty()) {  // measured along the surface (QA hunt 6 G7)
+    for (std::size_t v = 0; v < metric.size(); ++v)
+      metric[v] = o.anisotropic ? along.tangent(v, metric[v])
+                                : SymMat3::diagonal(along.finest(v, metric[v]));
+  } else if (!o.anisotropic) {  // isotropic: the smallest principal size in every direction
     for (SymMat3& x : metric) x = SymMat3::diagonal(eigen(x).values[2]);
+  }
   return metric;
 }
 
@@ -216,11 +301,12 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
   require_adaptable_surface(input);
   require_computable_scale(input);
   // The metric from the projection's own analysis (features and curvature computed once).
+  std::vector<std::string> notes;
   const SurfaceProjection geo(
       input, options.features,
-      [&options](const Mesh& mesh, const Adjacency& adj, const SurfaceFeatures& f,
-                 const std::vector<VertexCurvature>& curvature) {
-        return vertex_metrics(mesh, adj, f, curvature, options);
+      [&options, &notes](const Mesh& mesh, const Adjacency& adj, const SurfaceFeatures& f,
+                         const std::vector<VertexCurvature>& curvature) {
+        return vertex_metrics(mesh, adj, f, curvature, options, notes);
       },
       0.5 * options.hausd);
   require_reachable_surface(input, geo.metrics());
@@ -229,6 +315,7 @@ Mesh adapt_surface(const Mesh& input, const SurfaceAdaptOptions& options,
   s.geo = &geo;
   s.opt = &options;
   SurfaceAdaptReport r;
+  r.notes = std::move(notes);
   r.input_corners = geo.features().num_corners;
   r.input_feature_edges = geo.features().num_feature_edges;
   auto report_cycle = [&](SurfaceCycle& c) {

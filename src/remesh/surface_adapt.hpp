@@ -29,6 +29,7 @@
 // Refs of triangles and feature edges are carried (a patch keeps its ref), corners never move.
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "core/symmat.hpp"
@@ -47,15 +48,17 @@ struct SurfaceCycle {
 struct SurfaceAdaptOptions {
   double hausd = 0.01;  ///< chordal tolerance (absolute), as mmgs's -hausd
   double hsiz = 0.0;    ///< uniform size cap (0: only the geometric size)
-  double hmin = 0.0;    ///< <= 0: hausd
+  double hmin = 0.0;    ///< <= 0: hausd (bounds the geometric sizes only); > 0: every size,
+                        ///< --hsiz and the user metric's too (clipped, with a note)
   double hmax = 0.0;    ///< <= 0: the bounding-box diagonal
   double hgrad = 1.3;   ///< H-shock gradation of the sizes (<= 0: none)
   /// Anisotropic geometric metric (sizes αρ1 along w1, up to βρ2 along w2; BOOK.md §1), lengths
   /// and qualities measured in it; false: the smallest principal size in every direction.
   bool anisotropic = false;
   double beta_fraction = 1.0;  ///< with anisotropic: 0 isotropic .. 1 the full β
-  /// A user metric per input vertex (SPD), intersected with the geometric metric; the remesher
-  /// follows the smallest size of the result (isotropic). Empty: none.
+  /// A user metric per input vertex (SPD), intersected with the geometric metric and measured
+  /// along the surface (its restriction to the tangent plane): the remesher follows the
+  /// smallest size of that (isotropic). Empty: none.
   std::vector<SymMat3> metric;
   FeatureOptions features;
   int max_cycles = 12;  ///< split/collapse/swap/smooth cycles
@@ -70,6 +73,8 @@ struct SurfaceAdaptReport {
   int cycles = 0;
   std::size_t input_corners = 0, input_feature_edges = 0;
   double q_min = 0.0, q_mean = 0.0;  ///< Euclidean triangle quality 4√3 A / Σ l² of the output
+  /// Sizes clipped to --hmin or --hmax, as Adapt2dReport::notes (one line each, no prefix).
+  std::vector<std::string> notes;
 };
 
 /// Remeshes a surface mesh (3D triangles, no tetrahedra). The output has Triangles with the

@@ -71,6 +71,30 @@ void SurfaceMetricOptions::validate() const {
     throw InputError("--beta must be in [0, 1], got " + num(beta_fraction));
 }
 
+namespace {
+
+/// The block [p q; q r] of m in an orthonormal basis (t1, t2) of the plane normal to n.
+struct InPlane {
+  Vec3 t1, t2;
+  double p, q, r;
+  InPlane(const SymMat3& m, const Vec3& n) {
+    detail::orthonormal_complement(n, 1.0 / norm(n), t1, t2);
+    p = quadratic(m, t1), q = bilinear(m, t1, t2), r = quadratic(m, t2);
+  }
+  double largest() const { return 0.5 * (p + r) + std::hypot(0.5 * (p - r), q); }
+};
+
+}  // namespace
+
+double largest_in_plane(const SymMat3& m, const Vec3& n) { return InPlane(m, n).largest(); }
+
+SymMat3 tangent_metric(const SymMat3& m, const Vec3& n) {
+  const InPlane b(m, n);
+  SymMat3 s{};
+  s.at(0, 0) = b.p, s.at(0, 1) = b.q, s.at(1, 1) = b.r, s.at(2, 2) = b.largest();
+  return congruence(Mat3::from_columns({b.t1, b.t2, (1.0 / norm(n)) * n}), s);
+}
+
 double feature_line_size(const Vec3& a, const Vec3& v, const Vec3& b, double hausd) {
   // Circumradius of (a, v, b): |va| |vb| |ab| / (2 |va × vb|).
   const Vec3 va = a - v, vb = b - v;

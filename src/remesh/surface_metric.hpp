@@ -48,6 +48,15 @@ struct SurfaceMetricReport {
   GradationReport gradation;
 };
 
+/// The largest eigenvalue of m restricted to the plane normal to n (nonzero, any length): 1/h²
+/// of the finest size m asks along that plane.
+double largest_in_plane(const SymMat3& m, const Vec3& n);
+
+/// m restricted to the plane normal to n (nonzero), with across it the finest size along it (as
+/// the anisotropic geometric metric, surface_metric_anisotropic): the lengths of vectors in the
+/// plane are m's, what m asks along n (a volume's boundary layer) is dropped.
+SymMat3 tangent_metric(const SymMat3& m, const Vec3& n);
+
 /// Size bound by the curvature of a feature line at `v` between its neighbours `a` and `b`:
 /// 2 sqrt(hausd (2ρ − hausd)) with ρ the radius of the circle through a, v, b (inf if straight).
 double feature_line_size(const Vec3& a, const Vec3& v, const Vec3& b, double hausd);

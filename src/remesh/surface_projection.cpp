@@ -7,6 +7,7 @@
 #include "core/eigen.hpp"
 #include "core/error.hpp"
 #include "remesh/surface_curvature.hpp"
+#include "remesh/surface_metric.hpp"
 
 namespace riemesh {
 namespace {
@@ -78,18 +79,8 @@ namespace {
 /// across the surface, which the lattice on it has nothing to do with).
 double in_plane_size(const SymMat3& m, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 n = cross(b - a, c - a);
-  const double ln = norm(n);
-  if (!(ln > 0.0)) return std::numeric_limits<double>::infinity();
-  Vec3 t1, t2;
-  detail::orthonormal_complement(n, 1.0 / ln, t1, t2);
-  auto form = [&m](const Vec3& x, const Vec3& y) {
-    double sum = 0.0;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) sum += x[i] * m(i, j) * y[j];
-    return sum;
-  };
-  const double p = form(t1, t1), q = form(t1, t2), r = form(t2, t2);
-  const double largest = 0.5 * (p + r) + std::hypot(0.5 * (p - r), q);
+  if (!(norm(n) > 0.0)) return std::numeric_limits<double>::infinity();
+  const double largest = largest_in_plane(m, n);
   return largest > 0.0 ? 1.0 / std::sqrt(largest) : std::numeric_limits<double>::infinity();
 }
 
@@ -262,7 +253,7 @@ bool SurfaceProjection::within(const Vec3& p, double r, Id* hint) const {
     if (near_plane && s[0] >= -r && s[1] >= -r && s[2] >= -r) {
       bool in = s[0] >= 0.0 && s[1] >= 0.0 && s[2] >= 0.0;
       if (!in) {
-        const Vec3 d = p - closest_point_on_triangle(p, tp.a, tp.b, tp.c);
+        const Vec3 d = p - tp.closest(p);
         in = dot(d, d) <= r2;
       }
       if (in) {

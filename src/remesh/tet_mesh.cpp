@@ -172,6 +172,12 @@ std::vector<Id> renumber_tail(TetMesh& m, Id first, std::vector<Id>* tet_old2new
     if (const Id t = o.elem_old2new[static_cast<std::size_t>(slot / 4)]; t != kNoId)
       overflow[4 * t + slot % 4] = ref;
   m.ref_overflow.swap(overflow);
+  std::unordered_map<std::uint64_t, std::int32_t> lines;
+  for (const auto& [key, ref] : m.line_ref) {
+    const Id a = o.vertex_old2new[key & 0xffffffffu], b = o.vertex_old2new[key >> 32];
+    if (a != kNoId && b != kNoId) lines.emplace(TetMesh::line_key(a, b), ref);
+  }
+  m.line_ref.swap(lines);
   m.mark.assign(m.tet_capacity(), 0);  // scratch: no walk is under way
   m.free_tets.clear();
   std::erase_if(m.free_verts, [first](Id v) { return v >= first; });
@@ -419,6 +425,11 @@ std::string check_tet_mesh(const TetMesh& m) {
     const Id t = m.vtet[v];
     if (!m.tet_alive(t) || tet_index(m, t, v) < 0)
       return "vertex " + std::to_string(v) + ": stale tet pointer";
+  }
+  for (const auto& [key, ref] : m.line_ref) {
+    const auto a = static_cast<Id>(key & 0xffffffffu), b = static_cast<Id>(key >> 32);
+    if (!m.vert_alive(a) || !m.vert_alive(b) || find_edge_tet(m, a, b) == kNoId)
+      return "line edge (" + std::to_string(a) + ", " + std::to_string(b) + "): no such edge";
   }
   return {};
 }

@@ -15,10 +15,12 @@
 // Every change of the tets goes through replace_cavity(): a set of tets is replaced by new ones
 // that must fill exactly the same region (checked on the faces), which is how the operators
 // stay conforming.
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/symmat.hpp"
@@ -31,7 +33,9 @@ namespace riemesh {
 enum class VertexKind : std::uint8_t {
   kInterior,  ///< in no listed face: moves and goes freely
   kPlanar,    ///< on one planar boundary patch (plane ref vplane[2v]): moves in it
-  kRidge,     ///< on the line where two planar patches meet (refs vplane[2v], vplane[2v+1])
+  kRidge,     ///< on the line where two planar patches meet (refs vplane[2v], vplane[2v+1]),
+              ///< or on a straight line of the input's Edges inside the planar patch
+              ///< vplane[2v] = vplane[2v+1] (TetMesh::line_ref)
   kFixed,     ///< corner, required, on an interface (or a curved patch with --nosurf): kept
   kSurface,   ///< on a curved patch (ref vplane[2v]): stays on its reconstruction (boundary3d.hpp)
   kCurve,     ///< on a feature line of curved patches (refs vplane[2v..]): stays on that line
@@ -63,6 +67,18 @@ struct TetMesh {
   std::map<Id, std::int32_t> ref_overflow;
 
   std::vector<Id> free_tets, free_verts;
+
+  /// The input's Edges on listed faces (feature lines: ridges, ref changes, lines drawn inside
+  /// a patch), by line_key, with their refs. A split edge leaves its halves here, a collapse
+  /// moves `from`'s lines to `to` (split_edge, collapse_edge), so that every output edge on an
+  /// input edge keeps that edge's ref (to_mesh), as the surface remesher's feature edges do.
+  std::unordered_map<std::uint64_t, std::int32_t> line_ref;
+  static std::uint64_t line_key(Id a, Id b) {
+    const auto lo = static_cast<std::uint64_t>(std::min(a, b));
+    const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+    return (hi << 32) | lo;
+  }
+  bool on_line(Id a, Id b) const { return !line_ref.empty() && line_ref.count(line_key(a, b)); }
 
   /// The curved boundary that kSurface and kCurve vertices stay on (not owned; null when the
   /// boundary has no curved patch or is kept).
@@ -193,15 +209,16 @@ std::vector<Id> renumber_tail(TetMesh& m, Id first, std::vector<Id>* tet_old2new
 std::string check_tet_mesh(const TetMesh& m);
 
 /// Builds the TetMesh of a volume mesh: its tetrahedra (positively oriented, else InputError),
-/// their neighbours, the listed faces from mesh.triangles (refs), vertex refs and tags; vertex
-/// kinds all kFixed until the caller classifies them. `metrics` gives one metric per vertex.
+/// their neighbours, the listed faces from mesh.triangles (refs), the Edges that are edges of
+/// listed triangles (line_ref; others are dropped), vertex refs and tags; vertex kinds all
+/// kFixed until the caller classifies them. `metrics` gives one metric per vertex.
 TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics);
 
 /// Back to a compacted Mesh: live vertices in id order, tets, the listed faces as triangles
-/// with their refs, and ridge Edges (boundary edges between listed faces of different refs;
-/// ref from `edge_refs`, pairs (ref1, ref2, edge ref) with ref1 < ref2, else 0). `metrics`,
-/// when given, receives the metric of each output vertex.
-Mesh to_mesh(const TetMesh& m, std::span<const std::int32_t> edge_refs,
-             std::vector<SymMat3>* metrics = nullptr);
+/// with their refs, and Edges: the lines of m.line_ref with their refs, and the other boundary
+/// edges between listed outer faces of different refs (ridges the input did not list: ref 0),
+/// tagged kTagRidge, in increasing (a, b). `metrics`, when given, receives the metric of each
+/// output vertex.
+Mesh to_mesh(const TetMesh& m, std::vector<SymMat3>* metrics = nullptr);
 
 }  // namespace riemesh

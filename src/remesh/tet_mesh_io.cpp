@@ -143,6 +143,23 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
     throw InputError("triangle " + std::to_string(stray + 1) + " (ref " +
                      std::to_string(mesh.tri_ref.empty() ? 0 : mesh.tri_ref[stray]) +
                      ") is no face of any tetrahedron");
+  // The Edges on listed triangles are the feature lines kept with their refs (the first listing
+  // of an edge wins); an Edge on no listed triangle bounds nothing the remesher keeps.
+  if (mesh.num_edges() > 0) {
+    std::vector<std::uint64_t> on_triangles;
+    on_triangles.reserve(3 * mesh.num_triangles());
+    for (std::size_t f = 0; f < mesh.num_triangles(); ++f)
+      for (int k = 0; k < 3; ++k)
+        on_triangles.push_back(
+            TetMesh::line_key(mesh.triangles[3 * f + k], mesh.triangles[3 * f + (k + 1) % 3]));
+    std::sort(on_triangles.begin(), on_triangles.end());
+    for (std::size_t e = 0; e < mesh.num_edges(); ++e) {
+      const Id a = mesh.edges[2 * e], b = mesh.edges[2 * e + 1];
+      const std::uint64_t key = TetMesh::line_key(a, b);
+      if (a != b && std::binary_search(on_triangles.begin(), on_triangles.end(), key))
+        m.line_ref.emplace(key, e < mesh.edge_ref.size() ? mesh.edge_ref[e] : 0);
+    }
+  }
   for (std::size_t v = 0; v < nv; ++v)
     if (m.vtet[v] == kNoId) m.free_verts.push_back(static_cast<Id>(v));  // in no tet: dropped
   std::reverse(m.free_verts.begin(), m.free_verts.end());
@@ -150,8 +167,7 @@ TetMesh build_tet_mesh(const Mesh& mesh, std::span<const SymMat3> metrics) {
   return m;
 }
 
-Mesh to_mesh(const TetMesh& m, std::span<const std::int32_t> edge_refs,
-             std::vector<SymMat3>* metrics) {
+Mesh to_mesh(const TetMesh& m, std::vector<SymMat3>* metrics) {
   Mesh out;
   out.dim = 3;
   std::vector<Id> id(m.vertex_capacity(), kNoId);
@@ -165,7 +181,7 @@ Mesh to_mesh(const TetMesh& m, std::span<const std::int32_t> edge_refs,
     out.vert_tag.push_back(tag);
     if (metrics) metrics->push_back(m.metric[v]);
   }
-  // Boundary edges between listed faces of different refs, with the refs on each side.
+  // The refs of the listed outer faces at each boundary edge.
   std::map<std::pair<Id, Id>, std::vector<std::int32_t>> edge_faces;
   for (std::size_t t = 0; t < m.tet_capacity(); ++t) {
     if (!m.tet_alive(static_cast<Id>(t))) continue;
@@ -186,12 +202,18 @@ Mesh to_mesh(const TetMesh& m, std::span<const std::int32_t> edge_refs,
         edge_faces[{std::min(id[p], id[q]), std::max(id[p], id[q])}].push_back(m.face_ref(s));
     }
   }
-  for (const auto& [e, refs] : edge_faces) {
-    if (refs.size() != 2 || refs[0] == refs[1]) continue;
-    const std::int32_t r1 = std::min(refs[0], refs[1]), r2 = std::max(refs[0], refs[1]);
-    std::int32_t ref = 0;
-    for (std::size_t k = 0; k + 2 < edge_refs.size(); k += 3)
-      if (edge_refs[k] == r1 && edge_refs[k + 1] == r2) ref = edge_refs[k + 2];
+  // Ridges between patches of different refs (ref 0), then the input's lines with their refs
+  // (a ridge on a line takes the line's ref: edges between the same two patches may carry
+  // different refs, one per line, and lines inside a patch are kept too).
+  std::map<std::pair<Id, Id>, std::int32_t> edges;
+  for (const auto& [e, refs] : edge_faces)
+    if (refs.size() == 2 && refs[0] != refs[1]) edges.emplace(e, 0);
+  for (const auto& [key, ref] : m.line_ref) {
+    const auto a = static_cast<Id>(key & 0xffffffffu), b = static_cast<Id>(key >> 32);
+    if (!m.vert_alive(a) || !m.vert_alive(b)) continue;
+    edges[{std::min(id[a], id[b]), std::max(id[a], id[b])}] = ref;
+  }
+  for (const auto& [e, ref] : edges) {
     out.edges.insert(out.edges.end(), {e.first, e.second});
     out.edge_ref.push_back(ref);
     out.edge_tag.push_back(kTagRidge);

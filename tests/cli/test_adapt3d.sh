@@ -170,4 +170,29 @@ PY
 expect_error_matching adapt3d-not-manifold "the volume is not a manifold at 2 vertices (first: (1, 1, 0))" \
   adapt "$TMP/pinched.mesh" --hsiz 0.3 -o "$TMP/pinched_out.mesh"
 expect_no_file adapt3d-not-manifold-no-output "$TMP/pinched_out.mesh"
+# The input's Edges keep their refs (QA hunt 6 G2): screw_vol has lines of different refs between
+# the same two patches (edge refs 2 and 4 between faces 1 and 7) and lines inside one patch
+# (refs 17, 20, 22): they came back merged (2 -> 4, 9 -> 6, 10 and 11 -> 12) or dropped. With
+# --nosurf the Edges are the input's (count per ref); remeshed, every ref is still there.
+S=$SHARED/data/vol/screw_vol.mesh
+edge_refs() {
+  /usr/bin/python3 - "$1" <<'PY'
+import collections, sys
+toks = open(sys.argv[1]).read().split()
+i = toks.index('Edges'); n = int(toks[i + 1])
+c = collections.Counter(int(toks[i + 4 + 3 * k]) for k in range(n))
+print(' '.join('%d:%d' % kv for kv in sorted(c.items())))
+PY
+}
+if [ -f "$S" ]; then
+  "$R" adapt "$S" --hsiz 2 --nosurf -o "$TMP/sn.mesh" -q && "$R" check "$TMP/sn.mesh" >/dev/null &&
+    ok screw-nosurf || ko screw-nosurf
+  [ "$(edge_refs "$TMP/sn.mesh")" = "$(edge_refs "$S")" ] && ok screw-nosurf-edges ||
+    ko "screw-nosurf-edges: $(edge_refs "$TMP/sn.mesh") vs $(edge_refs "$S")"
+  "$R" adapt "$S" --hsiz 2 -o "$TMP/sa.mesh" -q && "$R" check "$TMP/sa.mesh" >/dev/null &&
+    ok screw-adapt || ko screw-adapt
+  refs_only() { tr ' ' '\n' | cut -d: -f1 | tr '\n' ' '; }
+  [ "$(edge_refs "$TMP/sa.mesh" | refs_only)" = "$(edge_refs "$S" | refs_only)" ] &&
+    ok screw-adapt-edge-refs || ko "screw-adapt-edge-refs: $(edge_refs "$TMP/sa.mesh")"
+fi
 exit $fail

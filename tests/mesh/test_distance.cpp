@@ -55,6 +55,50 @@ TEST(Distance, ClosestPointRegions) {
   EXPECT_TRUE(near(closest_point_on_triangle({{0.5, 1, 0}}, a, a, a), a));
 }
 
+// Needle triangles (aspect 1e6) with exactly representable corners, and points whose closest
+// point is known exactly: Ericson's region tests subtract products of dot products that cancel
+// there (QA hunt 6 G6: a point inside such a triangle was put 0.66 away from it).
+TEST(Distance, ClosestPointOnNeedles) {
+  auto expect_closest = [](const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c,
+                           const Vec3& want) {
+    for (const Vec3& q :
+         {closest_point_on_triangle(p, a, b, c), TriangleProbe(a, b, c).closest(p),
+          closest_point_on_triangle(p, c, a, b), closest_point_on_triangle(p, b, a, c)})
+      EXPECT_LT(norm(q - want), 1e-9) << "p (" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+  };
+  {
+    // The hunt's case: a cap (obtuse angle near 180°) of the face y = 1 of a box 1e6 × 1 × 1.
+    const Vec3 a{{5e5, 1, 0}}, b{{0, 1, 1}}, c{{1e6, 1, 1}};
+    expect_closest({{437500, 1, 0.5625}}, a, b, c, {{437500, 1, 0.5625}});    // inside: 0
+    expect_closest({{437500, 1.5, 0.5625}}, a, b, c, {{437500, 1, 0.5625}});  // above: 0.5
+    expect_closest({{6e5, -2, 0.95}}, a, b, c, {{6e5, 1, 0.95}});  // below, near the long side
+    expect_closest({{2.5e5, 1, 1.25}}, a, b, c, {{2.5e5, 1, 1}});  // beside the long side bc
+    expect_closest({{1e6 + 7, 1, 2}}, a, b, c, c);                 // beyond the corner c
+    expect_closest({{5e5, 1, -3}}, a, b, c, a);                    // below the obtuse corner
+  }
+  {
+    // A sliver (one short edge ac of length 1) tilted 45° about z: the plane x = y.
+    const Vec3 a{{0, 0, 0}}, b{{1e6, 1e6, 0}}, c{{0, 0, 1}};
+    const Vec3 x{{2.5e5, 2.5e5, 0.5}};                              // 1/4 b + 1/2 c: inside
+    expect_closest(x + Vec3{{3, -3, 0}}, a, b, c, x);               // 3√2 off the plane
+    expect_closest(x + Vec3{{-3, 3, 0}}, a, b, c, x);               // the other side
+    expect_closest({{5e5, 5e5, -2}}, a, b, c, {{5e5, 5e5, 0}});     // beside edge ab
+    expect_closest({{-1, -1, 0.5}}, a, b, c, {{0, 0, 0.5}});        // beside edge ac
+    expect_closest({{1e6 + 10, 1e6 + 10, 0.25}}, a, b, c, b);       // beyond b
+    expect_closest({{5e5, 5e5, 0.5}}, a, b, c, {{5e5, 5e5, 0.5}});  // on the edge bc
+  }
+}
+
+// Two triangulations of one rectangle 1e6 × 1 (4 × 4 cells, diagonals either way): the
+// distance is 0 both ways (QA hunt 6 G6: `riemesh distance` reported 0.4375 for such a box).
+TEST(Distance, NeedleTrianglesOfOnePlane) {
+  Mesh a = square(4, 1.0, 0.0, false), b = square(4, 1.0, 0.0, true);
+  for (Mesh* m : {&a, &b})
+    for (std::size_t v = 0; v < m->num_vertices(); ++v) m->coords[3 * v] *= 1e6;
+  const HausdorffDistance h = hausdorff_distance(a, b, {});
+  EXPECT_LT(h.two_sided(), 1e-9);
+}
+
 TEST(Distance, TreeMatchesBruteForce) {
   // A bumpy sphere and random points inside, on and outside it.
   Mesh m = sphere(3, 1.0);
@@ -69,7 +113,10 @@ TEST(Distance, TreeMatchesBruteForce) {
       Vec3 v[3];
       for (int i = 0; i < 3; ++i)
         for (int c = 0; c < 3; ++c) v[i][c] = m.coords[3 * m.triangles[3 * t + i] + c];
-      brute = std::min(brute, norm(p - closest_point_on_triangle(p, v[0], v[1], v[2])));
+      // (the tree's kernel: its probes; the function without them agrees to rounding)
+      const Vec3 q = TriangleProbe(v[0], v[1], v[2]).closest(p);
+      EXPECT_LT(norm(q - closest_point_on_triangle(p, v[0], v[1], v[2])), 1e-14);
+      brute = std::min(brute, norm(p - q));
     }
     const auto q = tree.nearest(p, k % 2 ? static_cast<Id>(k) : kNoId);
     EXPECT_EQ(q.distance, brute) << k;

@@ -598,7 +598,18 @@ TEST(Adapt3d, InterfaceMeetingOneWallRefIsRemeshed) {
   EXPECT_GE(outline, 32u);
   EXPECT_LT(longest, 0.1 * 1.6);
   EXPECT_TRUE(r.report.notes.empty());
-  EXPECT_TRUE(r.mesh.edges.empty());  // no ref changes along the outer boundary: no Edges
+  // No ref changes along the outer boundary, but the cube's 12 Edges (refs 1..12, now inside
+  // the one wall ref) come back whole with their refs (QA hunt 6 G2: they were dropped).
+  std::map<int, double> edge_length;
+  for (std::size_t e = 0; e < r.mesh.num_edges(); ++e) {
+    const Id p = r.mesh.edges[2 * e], q = r.mesh.edges[2 * e + 1];
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k)
+      d2 += std::pow(r.mesh.coords[3 * p + k] - r.mesh.coords[3 * q + k], 2);
+    edge_length[r.mesh.edge_ref[e]] += std::sqrt(d2);
+  }
+  EXPECT_EQ(edge_length.size(), 12u);
+  for (const auto& [ref, l] : edge_length) EXPECT_NEAR(l, 1.0, 1e-12) << "edge ref " << ref;
   // Every boundary vertex still on the cube's surface.
   for (std::size_t f = 0; f < r.mesh.num_triangles(); ++f) {
     if (r.mesh.tri_ref[f] != 1) continue;

@@ -165,4 +165,23 @@ TEST(SurfaceMetric, RejectsBadOptions) {
   EXPECT_THROW(geometric_surface_metric(m, o), InputError);
 }
 
+// The restriction to a plane of M = diag(1, 4, 100): normal to z it is diag(1, 4) (largest 4,
+// whatever n's length); normal to (1, 0, 1) the plane holds y (4) and (1, 0, −1)/√2 ((1 + 100)/2
+// = 50.5, no cross term), so 50.5. tangent_metric keeps the block and puts its largest across.
+TEST(SurfaceMetric, RestrictionToAPlane) {
+  const SymMat3 m = SymMat3::diagonal(Vec3{{1.0, 4.0, 100.0}});
+  EXPECT_NEAR(largest_in_plane(m, Vec3{{0.0, 0.0, 2.0}}), 4.0, 1e-12);
+  EXPECT_NEAR(largest_in_plane(m, Vec3{{1.0, 0.0, 1.0}}), 50.5, 1e-12);
+  const SymMat3 t = tangent_metric(m, Vec3{{0.0, 0.0, 3.0}});
+  const SymMat3 want = SymMat3::diagonal(Vec3{{1.0, 4.0, 4.0}});
+  for (int k = 0; k < 6; ++k) EXPECT_NEAR(t.c[k], want.c[k], 1e-12) << k;
+  const Vec3 n = normalize(Vec3{{1.0, 0.0, 1.0}}),
+             u{{1.0 / std::sqrt(2.0), 0.0, -1.0 / std::sqrt(2.0)}};
+  const SymMat3 tt = tangent_metric(m, n);
+  EXPECT_NEAR(quadratic(tt, u), 50.5, 1e-12);  // in the plane: m's
+  EXPECT_NEAR(quadratic(tt, Vec3{{0.0, 1.0, 0.0}}), 4.0, 1e-12);
+  EXPECT_NEAR(quadratic(tt, n), 50.5, 1e-12);  // across: the finest along it
+  EXPECT_NEAR(bilinear(tt, n, u), 0.0, 1e-12);
+}
+
 }  // namespace

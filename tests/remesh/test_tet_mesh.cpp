@@ -53,7 +53,7 @@ TEST(TetMesh, RoundTripsTheUnitCube) {
   EXPECT_EQ(m.num_live_tets(), 162u);
   EXPECT_EQ(m.num_live_vertices(), 64u);
   EXPECT_NEAR(volume(m), 1.0, 1e-14);
-  const Mesh back = to_mesh(m, {});
+  const Mesh back = to_mesh(m);
   EXPECT_TRUE(check_mesh(back).valid());
   EXPECT_EQ(back.coords, cube.coords);
   EXPECT_EQ(back.tets, cube.tets);
@@ -83,7 +83,7 @@ TEST(TetMesh, KeepsMoreDistinctFaceRefsThanItsOneByteTable) {
     }
     return out;
   };
-  EXPECT_EQ(refs_of(to_mesh(m, {})), refs_of(cube));
+  EXPECT_EQ(refs_of(to_mesh(m)), refs_of(cube));
   // Splitting every boundary edge of the mesh moves the refs (overflow ones too) to the halves.
   std::vector<std::pair<Id, Id>> edges;
   for (std::size_t f = 0; f < cube.num_triangles(); ++f)
@@ -91,7 +91,7 @@ TEST(TetMesh, KeepsMoreDistinctFaceRefsThanItsOneByteTable) {
       edges.emplace_back(cube.triangles[3 * f + k], cube.triangles[3 * f + (k + 1) % 3]);
   EXPECT_GT(split_at_midpoints(m, edges), 300);
   EXPECT_EQ(check_tet_mesh(m), "");
-  const Mesh back = to_mesh(m, {});
+  const Mesh back = to_mesh(m);
   EXPECT_EQ(back.num_triangles(), 4 * cube.num_triangles());
   std::map<int, int> count;
   for (const int r : back.tri_ref) ++count[r];
@@ -195,7 +195,7 @@ TEST(TetMesh, RenumberTailKeepsTheMesh) {
     }
     return out;
   };
-  const Mesh a = to_mesh(before, {}), b = to_mesh(m, {});
+  const Mesh a = to_mesh(before), b = to_mesh(m);
   EXPECT_EQ(corners(b, b.tets, 4, {}), corners(a, a.tets, 4, {}));
   EXPECT_EQ(corners(b, b.triangles, 3, b.tri_ref), corners(a, a.triangles, 3, a.tri_ref));
   EXPECT_EQ(m.vertex_capacity(), before.num_live_vertices());

@@ -86,7 +86,7 @@ TEST(TetOps, SplitBoundaryEdgeSplitsItsFacesWithTheirRefs) {
   nv.kind = VertexKind::kRidge;
   ASSERT_EQ(split_edge(m, 0, 1, nv, 0.0, &x), Outcome::kApplied);
   EXPECT_EQ(check_tet_mesh(m), "");
-  const Mesh out = to_mesh(m, {});
+  const Mesh out = to_mesh(m);
   EXPECT_TRUE(check_mesh(out).valid());
   EXPECT_EQ(out.num_triangles(), 12u + 2u);
   int on_x = 0;
