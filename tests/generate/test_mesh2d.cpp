@@ -185,7 +185,7 @@ TEST(Mesh2d, SizesFarBeyondTheDomainGiveItsCoarsestMesh) {
   // --hsiz 1e100 on the lake of Geneva (40 across): its metric 1e-200 has a determinant that
   // underflows, and the unit lattice refused it as "not positive definite", blaming the domain.
   // The size is clamped to 1e10 times the domain: the coarsest mesh, as from --hsiz 1e12.
-  const Mesh full = read_mesh(std::string(RIEMESH_SHARED_DATA) + "/2d/lac-leman.mesh");
+  const Mesh full = read_mesh(RIEMESH_SHARED_DATA "/2d/lac-leman.mesh");
   const Mesh b = extract_boundary2d(full);
   std::size_t coarsest = 0;
   for (const double h : {1e12, 1e100, 1e150}) {

@@ -94,7 +94,7 @@ TEST(Adapt2dBoundary, SpikesLeaveNoFlatTriangles) {
   // bulges beyond the triangle's apex (with or without -nr), or, with -nr, the tips smoothed
   // into blobs. Triangles of quality 4e-10 to 8e-10 came out, valid by check, exit 0 (QA hunt
   // 5 F12); now at least 2e-3.
-  const Mesh star = read_medit(std::string(RIEMESH_TEST_DATA) + "/star20.mesh");
+  const Mesh star = read_medit(RIEMESH_TEST_DATA "/star20.mesh");
   Mesh2dOptions mo;
   mo.adapt.hgrad = 0.0;
   Mesh in = mesh_domain2d(star, mo).mesh;
