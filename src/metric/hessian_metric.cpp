@@ -14,18 +14,13 @@
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "metric/complexity.hpp"
 #include "metric/intersection.hpp"
 #include "metric/metric.hpp"
 
 namespace riemesh {
 namespace {
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 template <int D>
 const std::vector<Id>& elements(const Mesh& mesh) {
@@ -207,26 +202,34 @@ bool storable_size(double size) {
 }  // namespace
 
 void HessianMetricOptions::validate() const {
-  if (!(norm >= 1.0)) throw InputError("--norm must be a number >= 1 or inf, got " + num(norm));
+  if (!(norm >= 1.0))
+    throw InputError("--norm must be a number >= 1 or inf, got " + format_g(norm));
   // (Out of these ranges the metric's coefficients under- or overflow: complexity 1e-300 printed
   // "complexity: -nan" and wrote a file that riemesh then refused.)
   if (!(complexity == 0.0 || (complexity >= 1e-6 && complexity <= 1e15)))
-    throw InputError("--complexity must be a number from 1e-6 to 1e15, got " + num(complexity));
+    throw InputError("--complexity must be a number from 1e-6 to 1e15, got " +
+                     format_g(complexity));
   if (!(tolerance == 0.0 || (tolerance >= 1e-150 && tolerance <= 1e150)))
-    throw InputError("--tolerance must be a number from 1e-150 to 1e150, got " + num(tolerance));
+    throw InputError("--tolerance must be a number from 1e-150 to 1e150, got " +
+                     format_g(tolerance));
   if (complexity > 0.0 && tolerance > 0.0)
     throw InputError("--complexity and --tolerance contradict: give one of them");
   if (complexity == 0.0 && tolerance == 0.0)
     throw InputError("no target: give --complexity N (Lp metric) or --tolerance E (L∞ metric)");
   if (tolerance > 0.0 && std::isfinite(norm))
-    throw InputError("--tolerance gives the L∞ metric c|H|/E: use it with --norm inf, or give "
-                     "--complexity N for the L" + num(norm) + " metric");
+    throw InputError(
+        "--tolerance gives the L∞ metric c|H|/E: use it with --norm inf, or give "
+        "--complexity N for the L" +
+        format_g(norm) + " metric");
   if (!(hmin == 0.0 || storable_size(hmin)))
-    throw InputError("--hmin must be 0 or a finite size from 1e-150 to 1e150, got " + num(hmin));
+    throw InputError("--hmin must be 0 or a finite size from 1e-150 to 1e150, got " +
+                     format_g(hmin));
   if (!(hmax == std::numeric_limits<double>::infinity() || storable_size(hmax)))
-    throw InputError("--hmax must be a size from 1e-150 to 1e150, got " + num(hmax));
-  if (hmin > hmax) throw InputError("--hmin " + num(hmin) + " is larger than --hmax " + num(hmax));
-  if (!(aniso_max >= 1.0)) throw InputError("--aniso-max must be a ratio >= 1, got " + num(aniso_max));
+    throw InputError("--hmax must be a size from 1e-150 to 1e150, got " + format_g(hmax));
+  if (hmin > hmax)
+    throw InputError("--hmin " + format_g(hmin) + " is larger than --hmax " + format_g(hmax));
+  if (!(aniso_max >= 1.0))
+    throw InputError("--aniso-max must be a ratio >= 1, got " + format_g(aniso_max));
 }
 
 template <int D>

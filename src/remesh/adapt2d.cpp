@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "core/huge_pages.hpp"
 #include "mesh/adjacency.hpp"
 #include "mesh/distance.hpp"
@@ -63,12 +64,6 @@ constexpr double kPoorBall = 0.55;
 // Rounds of the relocations after the passes (each stops the loop when it moved nothing).
 // Same variants, with 0.55: one round 0.450, two 0.462, three 0.455 (one variant at 0.27).
 constexpr int kRelocationRounds = 2;
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 /// True when the vertex numbering already follows the space closely enough for the caches: the
 /// triangles spanning more than 4096 vertex ids plus those starting more than 4096 ids away from
@@ -484,16 +479,17 @@ void Adapt2dOptions::validate() const {
     return h > 0.0 && std::isnormal(1.0 / (h * h)) && std::isfinite(h * h);
   };
   if (!(hmin == 0.0 || storable(hmin)))
-    throw InputError("--hmin must be 0 or a finite size from 1e-150 to 1e150, got " + num(hmin));
+    throw InputError("--hmin must be 0 or a finite size from 1e-150 to 1e150, got " +
+                     format_g(hmin));
   if (!(hmax == std::numeric_limits<double>::infinity() || storable(hmax)))
-    throw InputError("--hmax must be a size from 1e-150 to 1e150, got " + num(hmax));
+    throw InputError("--hmax must be a size from 1e-150 to 1e150, got " + format_g(hmax));
   if (hmin > 0.0 && hmax < hmin)
-    throw InputError("--hmin " + num(hmin) + " is larger than --hmax " + num(hmax));
+    throw InputError("--hmin " + format_g(hmin) + " is larger than --hmax " + format_g(hmax));
   if (!(hgrad == 0.0 || (hgrad > 1.0 && std::isfinite(hgrad))))
-    throw InputError("--hgrad must be 0 (off) or a ratio > 1, got " + num(hgrad));
+    throw InputError("--hgrad must be 0 (off) or a ratio > 1, got " + format_g(hgrad));
   if (!(hausd >= 0.0) || !std::isfinite(hausd)) throw InputError("--hausd must be a distance >= 0");
   if (!(angle_deg >= 0.0 && angle_deg <= 180.0))
-    throw InputError("--angle must be in [0, 180] degrees, got " + num(angle_deg));
+    throw InputError("--angle must be in [0, 180] degrees, got " + format_g(angle_deg));
   if (max_passes < 1 || max_passes > 1000) throw InputError("--passes must be in 1..1000");
 }
 
@@ -510,8 +506,8 @@ void require_hausd_above_roundoff(const Mesh& input, double hausd) {
   if (!(hausd > 0.0)) return;  // 0: no bound
   const double diag = bounding_box_diagonal(input);
   if (hausd >= kSmallestHausd * diag) return;
-  throw InputError("--hausd " + num(hausd) + " as given is below " + num(kSmallestHausd) +
-                   " of the domain's size (bounding-box diagonal " + num(diag) +
+  throw InputError("--hausd " + format_g(hausd) + " as given is below " + format_g(kSmallestHausd) +
+                   " of the domain's size (bounding-box diagonal " + format_g(diag) +
                    "): give 0 for no bound, or a larger distance");
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "mesh/fixtures.hpp"
 #include "metric/hessian_metric.hpp"
 #include "remesh/adapt2d.hpp"
@@ -69,16 +70,11 @@ void LoopOptions::validate() const {
   if (!(fit_from >= 0.0)) throw InputError("loop: fit_from must be >= 0");
   // Checked with the rest, before anything is printed (the header came out first), and a fit
   // range holding fewer than two complexities refused (its slopes printed "nan").
-  const auto num = [](double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", x);
-    return std::string(text);
-  };
   if (!(hgrad == 0.0 || (hgrad > 1.0 && std::isfinite(hgrad))))
-    throw InputError("--hgrad must be 0 (off) or a ratio > 1, got " + num(hgrad));
+    throw InputError("--hgrad must be 0 (off) or a ratio > 1, got " + format_g(hgrad));
   if (fit_from > 0.0 && std::count_if(complexities.begin(), complexities.end(),
                                       [this](double n) { return n >= fit_from; }) < 2)
-    throw InputError("--fit-from " + num(fit_from) +
+    throw InputError("--fit-from " + format_g(fit_from) +
                      " leaves fewer than two complexities to fit a slope to");
   if (start_cells < 2 || start_cells > 1000)
     throw InputError("loop: start_cells must be in 2..1000, got " + std::to_string(start_cells));

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "core/format.hpp"
 #include "core/vec.hpp"
 #include "remesh/adapt2d.hpp"
 
@@ -39,18 +40,13 @@ inline double length_badness(double l) { return l > 1.0 ? l : 1.0 / l; }
 /// "an edge stays too long (metric length L) near (x, y[, z]): ..." for the worst edge left.
 template <int D>
 std::string stall_message(double length, const Vec<D>& midpoint) {
-  auto num = [](double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return std::string(buf);
-  };
   std::string s = length > 1.0 ? "an edge stays too long" : "an edge stays too short";
   s += " (metric length ";
-  s += num(length);
+  s += format_g(length);
   s += ") near (";
   for (int i = 0; i < D; ++i) {
     if (i > 0) s += ", ";
-    s += num(midpoint[i]);
+    s += format_g(midpoint[i]);
   }
   s += "): the operators' checks refuse to change it further";
   return s;

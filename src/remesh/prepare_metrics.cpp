@@ -10,6 +10,7 @@
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "core/huge_pages.hpp"
 #include "core/spd.hpp"
 #include "mesh/check.hpp"
@@ -19,12 +20,6 @@
 
 namespace riemesh {
 namespace {
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // Unit-mesh vertex count per unit of complexity: (2/√3) in 2D, √2 in 3D (regular simplices).
 template <int D>
@@ -61,17 +56,18 @@ void require_reachable_complexity(const Mesh& in, std::span<const SymMat<D>> m, 
   for (std::size_t v = 1; v < m.size(); ++v)
     if (!(det(m[v]) <= det(m[finest]))) finest = v;
   std::string where = "(";
-  for (int i = 0; i < D; ++i) where += (i > 0 ? ", " : "") + num(in.coords[D * finest + i]);
+  for (int i = 0; i < D; ++i) where += (i > 0 ? ", " : "") + format_g(in.coords[D * finest + i]);
   // Its size from the determinant, or (overflowing: --hsiz 1e-100) the largest eigenvalue.
   const double d = det(m[finest]);
   const double size =
       std::isfinite(d) ? std::pow(d, -0.5 / D) : 1.0 / std::sqrt(eigen(m[finest]).values[D - 1]);
   throw InputError(
       "the metric asks for " +
-      (std::isfinite(vertices) ? "about " + num(vertices) : std::string("an unbounded number of")) +
+      (std::isfinite(vertices) ? "about " + format_g(vertices)
+                               : std::string("an unbounded number of")) +
       " vertices, more than " +
-      (max_vertices < ids ? num(max_vertices) : std::string("the 2^31 - 1 ids hold")) +
-      "; finest size " + (size > 0.0 ? num(size) : std::string("~0 (determinant overflows)")) +
+      (max_vertices < ids ? format_g(max_vertices) : std::string("the 2^31 - 1 ids hold")) +
+      "; finest size " + (size > 0.0 ? format_g(size) : std::string("~0 (determinant overflows)")) +
       " near " + where + "): ask for coarser sizes, or bound them with --hmin");
 }
 
@@ -104,18 +100,18 @@ std::vector<SymMat<D>> prepare_metrics(const Mesh& in, const Adjacency& adj,
     }
   }
   if (below_hmin > 0) {
-    std::string note = "the metric asks for sizes below --hmin " + num(o.hmin) + " at ";
+    std::string note = "the metric asks for sizes below --hmin " + format_g(o.hmin) + " at ";
     note += std::to_string(below_hmin);
     note += " vertices, e.g. near (";
     for (int i = 0; i < D; ++i) {
       if (i > 0) note += ", ";
-      note += num(in.coords[D * first_below + i]);
+      note += format_g(in.coords[D * first_below + i]);
     }
     note += "): clipped to --hmin";
     report.notes.push_back(note);
   }
   if (above_hmax > 0)
-    report.notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
+    report.notes.push_back("sizes above --hmax " + format_g(o.hmax) + " clipped at " +
                            std::to_string(above_hmax) + " vertices");
   require_reachable_complexity<D>(in, out, D == 2 ? kMostVertices2d : kMostVertices3d);
   if (o.hgrad > 0.0) {

@@ -10,6 +10,7 @@
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "core/spd.hpp"
 #include "mesh/distance.hpp"
 #include "remesh/surface_adapt_detail.hpp"
@@ -92,12 +93,6 @@ constexpr double kBadQuality = 0.3;
 /// Largest number of consecutive split (or collapse) passes in one cycle.
 constexpr int kInnerPasses = 8;
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 /// A user metric (a volume solver's, say) measured along the surface: the remesher measures
 /// edges, all tangent to the surface, so only its restriction to the tangent plane matters (as in
 /// mmgs); the full tensor's smallest size could be the one across the surface (a boundary layer:
@@ -158,9 +153,9 @@ std::vector<SymMat3> vertex_metrics(const Mesh& input, const Adjacency& adj,
   if (o.hsiz > 0.0) {
     m.hmax = m.hmax > 0.0 ? std::min(m.hmax, o.hsiz) : o.hsiz;
     if (o.hmax > 0.0 && o.hsiz > o.hmax)
-      notes.push_back("sizes above --hmax " + num(o.hmax) + " clipped at " +
-                      std::to_string(input.num_vertices()) + " vertices (--hsiz " + num(o.hsiz) +
-                      ")");
+      notes.push_back("sizes above --hmax " + format_g(o.hmax) + " clipped at " +
+                      std::to_string(input.num_vertices()) + " vertices (--hsiz " +
+                      format_g(o.hsiz) + ")");
   }
   const bool hsiz_below = o.hmin > 0.0 && o.hsiz > 0.0 && o.hsiz < o.hmin;
   if (hsiz_below) m.hmax = o.hmin;
@@ -180,10 +175,11 @@ std::vector<SymMat3> vertex_metrics(const Mesh& input, const Adjacency& adj,
       metric[v] = project_spd(metric[v], 0.0, hi);
     }
     if (below > 0)
-      notes.push_back("the metric asks for sizes below --hmin " + num(o.hmin) + " at " +
+      notes.push_back("the metric asks for sizes below --hmin " + format_g(o.hmin) + " at " +
                       std::to_string(below) + " vertices, e.g. near (" +
-                      num(input.coords[3 * first]) + ", " + num(input.coords[3 * first + 1]) +
-                      ", " + num(input.coords[3 * first + 2]) + "): clipped to --hmin");
+                      format_g(input.coords[3 * first]) + ", " +
+                      format_g(input.coords[3 * first + 1]) + ", " +
+                      format_g(input.coords[3 * first + 2]) + "): clipped to --hmin");
   }
   if (!o.metric.empty()) {  // measured along the surface (QA hunt 6 G7)
     for (std::size_t v = 0; v < metric.size(); ++v)

@@ -9,6 +9,7 @@
 
 #include "core/eigen.hpp"
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "mesh/distance.hpp"
 #include "metric/geometric.hpp"
 #include "metric/intersection.hpp"
@@ -53,22 +54,17 @@ void principal_sizes(const SymMat3& m, double& smallest, double& largest) {
 void SurfaceMetricOptions::validate() const {
   // Named by the options of `riemesh metric geometric` and `adapt`, with the value (they said
   // "hmin must be <= hmax", and a negative --hgrad passed as "no gradation").
-  const auto num = [](double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", x);
-    return std::string(text);
-  };
   if (!(hausd > 0.0) || !std::isfinite(hausd))
-    throw InputError("--hausd must be a distance > 0, got " + num(hausd));
+    throw InputError("--hausd must be a distance > 0, got " + format_g(hausd));
   if (hmin > 0.0 && hmax > 0.0 && hmin > hmax)
-    throw InputError("--hmin " + num(hmin) + " is larger than --hmax " + num(hmax));
+    throw InputError("--hmin " + format_g(hmin) + " is larger than --hmax " + format_g(hmax));
   if (!std::isfinite(hmin) || !std::isfinite(hmax) || hmin < 0.0 || hmax < 0.0)
     throw InputError("--hmin and --hmax must be finite sizes >= 0 (0: the default), got " +
-                     num(hmin) + " and " + num(hmax));
+                     format_g(hmin) + " and " + format_g(hmax));
   if (!(hgrad == 0.0 || (hgrad > 1.0 && std::isfinite(hgrad))))
-    throw InputError("--hgrad must be 0 (off) or a ratio > 1, got " + num(hgrad));
+    throw InputError("--hgrad must be 0 (off) or a ratio > 1, got " + format_g(hgrad));
   if (!(beta_fraction >= 0.0 && beta_fraction <= 1.0))
-    throw InputError("--beta must be in [0, 1], got " + num(beta_fraction));
+    throw InputError("--beta must be in [0, 1], got " + format_g(beta_fraction));
 }
 
 namespace {
